@@ -1,0 +1,3 @@
+cooperage_framework_part(core SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/error.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/log.cpp)

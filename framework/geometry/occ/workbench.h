@@ -1,0 +1,100 @@
+// The OpenCASCADE backend's public face: a set of named shapes that journal
+// operations create and modify, and the conversion of the result into a
+// kernel-independent geom::Model. No OCCT type appears in this header; the
+// implementation (workbench.cpp and friends in this folder) is the only
+// place in Cooperage that includes OCCT headers.
+#pragma once
+
+#include "framework/geometry/model.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cooperage::occ {
+
+using geom::Vec3;
+
+struct BuildOptions {
+  /// Fragment all solids so that touching volumes share one Surface and
+  /// every shared curve exists once (the conformal-assembly step).
+  bool imprint_merge = true;
+};
+
+/// Named shapes plus the modelling operations of the journal. Every method
+/// throws cooperage::MeshingError naming the shape and the reason on failure
+/// (GeometryError for kernel failures, InvalidInput for bad arguments,
+/// FileNotFound / ParseError for imports). Names are unique; creating an
+/// existing name is an error.
+class Workbench {
+ public:
+  Workbench();
+  ~Workbench();
+  Workbench(const Workbench&) = delete;
+  Workbench& operator=(const Workbench&) = delete;
+
+  /// STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep); the file's length
+  /// unit is kept (no conversion to mm). `heal` runs shape healing for small
+  /// tolerance defects.
+  void import_file(const std::string& name, const std::string& path, bool heal = true);
+
+  void brick(const std::string& name, const Vec3& origin, const Vec3& size);
+  void cylinder(const std::string& name, const Vec3& base, const Vec3& axis, double radius,
+                double height);
+  void cone(const std::string& name, const Vec3& base, const Vec3& axis, double radius1,
+            double radius2, double height);
+  void sphere(const std::string& name, const Vec3& center, double radius);
+  /// Planar polygon profile (implicitly closed) with optional polygon holes,
+  /// extruded along `direction` (its length is the extrusion distance).
+  void prism(const std::string& name, const std::vector<Vec3>& profile,
+             const std::vector<std::vector<Vec3>>& holes, const Vec3& direction);
+  /// Planar polygon profile revolved about the axis through `origin` along
+  /// `axis` by `angle_deg` degrees (360 for a full revolution).
+  void revolve(const std::string& name, const std::vector<Vec3>& profile, const Vec3& origin,
+               const Vec3& axis, double angle_deg);
+  /// B-spline surface interpolating a grid of points (grid[i][j], at least
+  /// 2 x 2, rows of equal length). thickness == 0 keeps it a single free face;
+  /// otherwise the face is extruded by `thickness` along its mean normal into
+  /// a solid (negative: the other way).
+  void bspline_patch(const std::string& name, const std::vector<std::vector<Vec3>>& grid,
+                     double thickness);
+
+  /// name = inputs[0] ∪ inputs[1] ∪ ...; inputs are consumed (removed).
+  void fuse(const std::string& name, const std::vector<std::string>& inputs);
+  /// name = inputs[0] − inputs[1] − ...; inputs are consumed.
+  void cut(const std::string& name, const std::vector<std::string>& inputs);
+  /// name = inputs[0] ∩ inputs[1] ∩ ...; inputs are consumed.
+  void common(const std::string& name, const std::vector<std::string>& inputs);
+  /// Split `shape` into the pieces on either side of a plane (the pieces
+  /// stay one named shape holding several solids).
+  void webcut(const std::string& shape, const Vec3& origin, const Vec3& normal);
+
+  void translate(const std::string& shape, const Vec3& by);
+  void rotate(const std::string& shape, const Vec3& origin, const Vec3& axis, double angle_deg);
+  void scale(const std::string& shape, const Vec3& origin, double factor);
+
+  /// Names of the current shapes, in creation order.
+  std::vector<std::string> names() const;
+  bool has(const std::string& name) const;
+
+  /// Writes the named shapes (all when empty) to a STEP or BREP file.
+  void write(const std::string& path, const std::vector<std::string>& shapes = {}) const;
+
+  /// The model of all current shapes: solids in creation order (then their
+  /// order inside each shape), imprinted and merged when asked. The same
+  /// operations always give the same ids.
+  geom::Model build_model(const BuildOptions& options = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Reads a CAD file into a model in one step (import + build_model).
+geom::Model load_model(const std::string& path, const BuildOptions& options = {});
+
+/// Silences OCCT's console output (banners, messenger printers); called by
+/// every entry point of this backend, harmless to call again.
+void silence_kernel_output();
+
+}  // namespace cooperage::occ

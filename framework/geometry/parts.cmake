@@ -1,0 +1,3 @@
+cooperage_framework_part(geometry SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/types.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/model.cpp)

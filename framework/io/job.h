@@ -1,0 +1,156 @@
+// A typed journal: everything a `cooperage run` needs, read from XML by
+// read_journal() (journal_reader.h). Plain data; no behaviour.
+// The format is documented in docs/journal.md and docs/cooperage-journal.xsd.
+#pragma once
+
+#include "framework/geometry/types.h"
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace cooperage::io {
+
+using geom::Vec3;
+
+/// Where a journal element came from, for error messages.
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  std::string element;  ///< XML element name
+};
+
+// ---- geometry operations, executed in journal order -----------------------
+
+/// Import a CAD file (.step/.stp, .iges/.igs, .brep) as shape `name`.
+struct ImportOp { std::string name; std::string file; bool heal = true; };
+/// Axis-aligned box from `origin` with edge lengths `size`.
+struct BrickOp { std::string name; Vec3 origin = Vec3::Zero(); Vec3 size = Vec3::Ones(); };
+struct CylinderOp {
+  std::string name; Vec3 base = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
+  double radius = 1; double height = 1;
+};
+struct ConeOp {
+  std::string name; Vec3 base = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
+  double radius1 = 1; double radius2 = 0; double height = 1;
+};
+struct SphereOp { std::string name; Vec3 center = Vec3::Zero(); double radius = 1; };
+/// A planar polygon (closed implicitly), e.g. a profile or a hole.
+using Polygon = std::vector<Vec3>;
+/// Planar profile (with optional hole profiles) extruded along `direction`.
+struct PrismOp { std::string name; Polygon profile; std::vector<Polygon> holes; Vec3 direction; };
+/// Planar profile revolved about the axis through `origin` along `axis` by `angle` degrees.
+struct RevolveOp {
+  std::string name; Polygon profile; Vec3 origin = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
+  double angle = 360;
+};
+enum class BooleanKind { Fuse, Cut, Common };
+/// `name` = inputs[0] op inputs[1] op ...; the inputs are consumed.
+struct BooleanOp { std::string name; BooleanKind kind = BooleanKind::Fuse; std::vector<std::string> inputs; };
+struct TranslateOp { std::string shape; Vec3 by = Vec3::Zero(); };
+/// Rotation about the axis through `origin` along `axis` by `angle` degrees.
+struct RotateOp { std::string shape; Vec3 origin = Vec3::Zero(); Vec3 axis = Vec3::UnitZ(); double angle = 0; };
+struct ScaleOp { std::string shape; Vec3 origin = Vec3::Zero(); double factor = 1; };
+/// Split a shape by the plane through `origin` with normal `normal` (webcut).
+struct WebcutOp { std::string shape; Vec3 origin = Vec3::Zero(); Vec3 normal = Vec3::UnitZ(); };
+
+using GeometryOp = std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, PrismOp,
+                                RevolveOp, BooleanOp, TranslateOp, RotateOp, ScaleOp, WebcutOp>;
+
+struct GeometryStep {
+  GeometryOp op;
+  SourceLocation where;
+};
+
+// ---- meshing settings ------------------------------------------------------
+
+enum class Firmness { Default, Soft, Hard };
+enum class BiasKind { None, Geometric, Dual };
+
+/// Sizing and scheme settings for one entity (or the global default when
+/// id == 0 in MeshSettings::global).
+struct SizeSetting {
+  std::optional<double> size;          ///< target element size
+  std::optional<int> intervals;        ///< interval count (curves)
+  Firmness firmness = Firmness::Default;
+};
+
+struct CurveSetting {
+  int id = 0;
+  SizeSetting sizing;
+  BiasKind bias = BiasKind::None;
+  std::optional<double> bias_ratio;        ///< growth ratio between neighbours
+  std::optional<double> bias_first_size;   ///< first element size (instead of ratio)
+  bool reverse_bias = false;               ///< bias from the end vertex
+  SourceLocation where;
+};
+
+enum class ElementKind { Hex, Wedge, Mixed };
+
+struct SurfaceSetting {
+  int id = 0;
+  SizeSetting sizing;
+  std::string scheme = "auto";   ///< "auto", "map", "submap", "pave", "tri"
+  SourceLocation where;
+};
+
+struct VolumeSetting {
+  int id = 0;
+  SizeSetting sizing;
+  std::string scheme = "auto";   ///< "auto", "map", "cooper"
+  ElementKind elements = ElementKind::Hex;
+  std::vector<int> sources;      ///< sweep source surface hints
+  std::vector<int> targets;      ///< sweep target surface hints
+  std::optional<Vec3> direction; ///< sweep direction hint
+  SourceLocation where;
+};
+
+enum class VertexType { End, Side, Corner, Reversal };
+/// A hard vertex classification on a surface (submap).
+struct VertexTypeSetting {
+  int surface = 0;
+  int vertex = 0;
+  VertexType type = VertexType::End;
+  SourceLocation where;
+};
+
+struct MeshSettings {
+  std::optional<double> size;      ///< global element size
+  int threads = 0;                 ///< 0: all cores
+  std::vector<CurveSetting> curves;
+  std::vector<SurfaceSetting> surfaces;
+  std::vector<VolumeSetting> volumes;
+  std::vector<VertexTypeSetting> vertex_types;
+  SourceLocation where;
+};
+
+// ---- quality and export ----------------------------------------------------
+
+/// A threshold on a metric. Elements worse than `limit` are counted; with
+/// action Fail the run fails.
+struct QualityCheck {
+  std::string metric;    ///< "scaled_jacobian", "skew", ...
+  std::optional<double> min;
+  std::optional<double> max;
+  enum class Action { Warn, Fail } action = Action::Warn;
+  SourceLocation where;
+};
+
+struct ExportSetting {
+  std::string file;  ///< the extension decides the format: .exo .msh .vtu .inp
+  SourceLocation where;
+};
+
+/// A whole journal.
+struct Job {
+  std::string file;                      ///< the journal path ("" when built in code)
+  std::string base_dir;                  ///< relative paths inside are resolved against it
+  std::vector<GeometryStep> geometry;
+  bool imprint_merge = true;             ///< fragment touching solids into a conformal model
+  std::optional<MeshSettings> mesh;
+  std::vector<QualityCheck> quality;
+  std::vector<ExportSetting> exports;
+};
+
+}  // namespace cooperage::io

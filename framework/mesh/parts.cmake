@@ -1,0 +1,2 @@
+cooperage_framework_part(mesh SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_db.cpp)

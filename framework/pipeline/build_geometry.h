@@ -1,0 +1,25 @@
+// Executes a journal's geometry operations on the CAD backend and returns the
+// model (first stage of the data flow in DESIGN.md).
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/io/job.h"
+
+#include <string>
+
+namespace cooperage::pipeline {
+
+/// Runs job.geometry in order, then builds the model (imprinted and merged
+/// unless job.imprint_merge is false). Relative import paths are resolved
+/// against job.base_dir. Throws MeshingError naming the journal line of the
+/// failing operation.
+geom::Model build_geometry(const io::Job& job);
+
+/// Reads a model from a CAD file (.step/.stp/.iges/.igs/.brep) or a journal
+/// (.xml, geometry only).
+geom::Model load_any(const std::string& path, bool imprint_merge = true);
+
+/// Resolves a path written in a journal against the journal's directory.
+std::string resolve_path(const std::string& base_dir, const std::string& path);
+
+}  // namespace cooperage::pipeline

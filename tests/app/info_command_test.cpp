@@ -1,0 +1,111 @@
+// `cooperage info` end to end: the real binary on real files.
+#include "run_command.h"
+
+#include "framework/geometry/occ/workbench.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+namespace cooperage {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_command;
+
+const std::string kCli = COOPERAGE_CLI;
+const std::string kSource = COOPERAGE_SOURCE_DIR;
+
+class InfoCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cooperage-info-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // A fused boss-on-cylinder written as STEP.
+  std::string boss_step() const {
+    occ::Workbench bench;
+    bench.cylinder("body", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
+    bench.cylinder("boss", {0, 0, 3}, {0, 0, 1}, 1.0, 1.5);
+    bench.fuse("part", {"body", "boss"});
+    const std::string file = path("boss.step");
+    bench.write(file);
+    return file;
+  }
+
+  fs::path dir_;
+};
+
+size_t count_lines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+TEST_F(InfoCommand, FusedBossStepHasOneVolumeAndTypedSurfaces) {
+  const auto r = run_command(kCli + " info " + boss_step());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 volumes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("volume 1"), std::string::npos);
+  EXPECT_NE(r.out.find(": cylinder, area"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(": plane, area"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err, "");  // nothing from the CAD kernel either
+}
+
+TEST_F(InfoCommand, JsonIsValidAndComplete) {
+  const std::string json = path("info.json");
+  const auto r = run_command(kCli + " info --json " + boss_step() + " >" + json);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // An independent JSON parser checks the document and its counts.
+  const auto check = run_command(
+      std::string(COOPERAGE_DEBIAN_PYTHON) +
+      " -c \"import json,sys; d=json.load(open('" + json +
+      "')); print(len(d['volumes']), len(d['surfaces']) > 0, d['volumes'][0]['volume'] > 0)\"");
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(check.out, "1 True True\n");
+}
+
+TEST_F(InfoCommand, JournalExampleDescribesItsGeometry) {
+  const auto r = run_command(kCli + " info " + kSource + "/examples/two_bricks.xml");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 volumes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("volumes 1 2"), std::string::npos) << "a shared surface: " << r.out;
+}
+
+TEST_F(InfoCommand, MissingFileIsOneLineAndExitCode2) {
+  const auto r = run_command(kCli + " info " + path("nope.step"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("nope.step"), std::string::npos) << r.err;
+}
+
+TEST_F(InfoCommand, CorruptStepIsOneLineAndExitCode2) {
+  const std::string good = boss_step();
+  const auto size = fs::file_size(good);
+  fs::resize_file(good, size / 2);
+  const auto r = run_command(kCli + " info " + good);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("boss.step"), std::string::npos) << r.err;
+}
+
+TEST_F(InfoCommand, MalformedJournalNamesFileAndLine) {
+  const std::string bad = path("bad.xml");
+  std::ofstream(bad) << "<cooperage version=\"1\">\n  <geometry>\n    <brick name=\"b\"\n";
+  const auto r = run_command(kCli + " info " + bad);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count_lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("bad.xml"), std::string::npos) << r.err;
+}
+
+TEST_F(InfoCommand, UnknownOptionIsAnError) {
+  const auto r = run_command(kCli + " info --frobnicate x.step");
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace cooperage
