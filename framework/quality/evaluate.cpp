@@ -1,0 +1,165 @@
+#include "framework/quality/evaluate.h"
+
+#include <string>
+
+#include "framework/core/error.h"
+#include "framework/quality/hex_metrics.h"
+#include "framework/quality/quad_metrics.h"
+#include "framework/quality/tri_metrics.h"
+#include "framework/quality/wedge_metrics.h"
+
+namespace cooperage::quality {
+
+namespace {
+
+using Eigen::Vector3d;
+
+template <std::size_t N>
+std::array<Vector3d, N> gather(const Vector3d* nodes) {
+  std::array<Vector3d, N> a;
+  for (std::size_t i = 0; i < N; ++i) a[i] = nodes[i];
+  return a;
+}
+
+[[noreturn]] void invalid(const std::string& message) {
+  throw MeshingError(ErrorCode::InvalidInput, "quality: " + message);
+}
+
+double hex_metric(Metric m, const HexNodes& p, double avg) {
+  switch (m) {
+    case Metric::ScaledJacobian: return hex_scaled_jacobian(p);
+    case Metric::Jacobian: return hex_jacobian(p);
+    case Metric::Skew: return hex_skew(p);
+    case Metric::Taper: return hex_taper(p);
+    case Metric::AspectFrobenius: return hex_max_aspect_frobenius(p);
+    case Metric::EdgeRatio: return hex_edge_ratio(p);
+    case Metric::Shape: return hex_shape(p);
+    case Metric::RelativeSize: return hex_relative_size(p, avg);
+  }
+  return 0.0;
+}
+
+double wedge_metric(Metric m, const WedgeNodes& p) {
+  switch (m) {
+    case Metric::ScaledJacobian: return wedge_scaled_jacobian(p);
+    case Metric::Jacobian: return wedge_jacobian(p);
+    case Metric::AspectFrobenius: return wedge_max_aspect_frobenius(p);
+    case Metric::EdgeRatio: return wedge_edge_ratio(p);
+    case Metric::Shape: return wedge_shape(p);
+    default: return 0.0;  // unreachable: checked by is_defined
+  }
+}
+
+double quad_metric(Metric m, const QuadNodes& p, const Vector3d* n, double avg) {
+  switch (m) {
+    case Metric::ScaledJacobian: return n ? quad_scaled_jacobian(p, *n) : quad_scaled_jacobian(p);
+    case Metric::Jacobian: return n ? quad_jacobian(p, *n) : quad_jacobian(p);
+    case Metric::Skew: return quad_skew(p);
+    case Metric::Taper: return quad_taper(p);
+    case Metric::AspectFrobenius: return quad_max_aspect_frobenius(p);
+    case Metric::EdgeRatio: return quad_edge_ratio(p);
+    case Metric::Shape: return n ? quad_shape(p, *n) : quad_shape(p);
+    case Metric::RelativeSize: return quad_relative_size(p, avg);
+  }
+  return 0.0;
+}
+
+double tri_metric(Metric m, const TriNodes& p, const Vector3d* n, double avg) {
+  switch (m) {
+    case Metric::ScaledJacobian: return n ? tri_scaled_jacobian(p, *n) : tri_scaled_jacobian(p);
+    case Metric::Jacobian: return n ? tri_jacobian(p, *n) : tri_jacobian(p);
+    case Metric::AspectFrobenius: return tri_aspect_frobenius(p);
+    case Metric::EdgeRatio: return tri_edge_ratio(p);
+    case Metric::Shape: return n ? tri_shape(p, *n) : tri_shape(p);
+    case Metric::RelativeSize: return tri_relative_size(p, avg);
+    default: return 0.0;  // unreachable: checked by is_defined
+  }
+}
+
+}  // namespace
+
+double evaluate_element(Metric metric, ElementType type, const Vector3d* nodes,
+                        const Vector3d* normal, double average_size) {
+  if (!is_defined(metric, type)) {
+    invalid(std::string(to_string(metric)) + " is not defined for " + std::string(to_string(type)) +
+            " elements");
+  }
+  switch (type) {
+    case ElementType::Hex: return hex_metric(metric, gather<8>(nodes), average_size);
+    case ElementType::Wedge: return wedge_metric(metric, gather<6>(nodes));
+    case ElementType::Quad: return quad_metric(metric, gather<4>(nodes), normal, average_size);
+    case ElementType::Tri: return tri_metric(metric, gather<3>(nodes), normal, average_size);
+  }
+  return 0.0;
+}
+
+double element_size(ElementType type, const Vector3d* nodes) {
+  switch (type) {
+    case ElementType::Hex: return hex_size(gather<8>(nodes));
+    case ElementType::Quad: return quad_size(gather<4>(nodes));
+    case ElementType::Tri: return tri_size(gather<3>(nodes));
+    case ElementType::Wedge: return 0.0;
+  }
+  return 0.0;
+}
+
+std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<Vector3d>& coords,
+                             const int* connectivity, std::size_t count, int stride,
+                             const EvaluateOptions& options) {
+  if (!is_defined(metric, type)) {
+    invalid(std::string(to_string(metric)) + " is not defined for " + std::string(to_string(type)) +
+            " elements");
+  }
+  const int n = node_count(type);
+  if (stride < n) {
+    invalid("connectivity stride " + std::to_string(stride) + " is smaller than the " +
+            std::to_string(n) + " nodes of a " + std::string(to_string(type)));
+  }
+  if (count > 0 && connectivity == nullptr) invalid("connectivity is null");
+  if (options.normals && options.normals->size() != count) {
+    invalid("normals has " + std::to_string(options.normals->size()) + " entries for " +
+            std::to_string(count) + " elements");
+  }
+
+  // Gather every element's nodes once (validates indices).
+  std::vector<Vector3d> nodes(count * static_cast<std::size_t>(n));
+  for (std::size_t e = 0; e < count; ++e) {
+    for (int i = 0; i < n; ++i) {
+      const int id = connectivity[e * static_cast<std::size_t>(stride) + i];
+      if (id < 0 || static_cast<std::size_t>(id) >= coords.size()) {
+        invalid("element " + std::to_string(e) + " node " + std::to_string(i) + ": index " +
+                std::to_string(id) + " out of range [0, " + std::to_string(coords.size()) + ")");
+      }
+      nodes[e * n + i] = coords[id];
+    }
+  }
+
+  double average = 0.0;
+  if (metric == Metric::RelativeSize) {
+    if (options.average_size) {
+      average = *options.average_size;
+    } else if (count > 0) {
+      double sum = 0.0;  // sequential sum: deterministic
+      for (std::size_t e = 0; e < count; ++e) sum += element_size(type, &nodes[e * n]);
+      average = sum / static_cast<double>(count);
+    }
+  }
+
+  std::vector<double> values(count);
+  for (std::size_t e = 0; e < count; ++e) {
+    const Vector3d* normal = options.normals ? &(*options.normals)[e] : nullptr;
+    values[e] = evaluate_element(metric, type, &nodes[e * n], normal, average);
+  }
+  return values;
+}
+
+std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<Vector3d>& coords,
+                             const std::vector<std::array<int, 8>>& connectivity,
+                             const EvaluateOptions& options) {
+  std::vector<int> flat;
+  flat.reserve(connectivity.size() * 8);
+  for (const auto& row : connectivity) flat.insert(flat.end(), row.begin(), row.end());
+  return evaluate(metric, type, coords, flat.data(), connectivity.size(), 8, options);
+}
+
+}  // namespace cooperage::quality
