@@ -1,0 +1,163 @@
+// The <mesh> section of a journal: global size and per-entity settings.
+#include "framework/io/journal_xml.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+
+namespace cooperage::io::detail {
+
+namespace {
+
+const std::vector<std::string> kMeshElements = {"curve", "surface", "volume", "vertex_type"};
+
+/// Remembers the line of the first setting per key and rejects a second one.
+template <class Key>
+class FirstLine {
+ public:
+  void claim(const Element& e, const Key& key, const std::string& what) {
+    auto [it, inserted] = lines_.emplace(key, e.line());
+    if (!inserted)
+      e.fail(what + " is already set at line " + std::to_string(it->second) +
+             "; give each entity one <" + e.name() + "> element");
+  }
+
+ private:
+  std::map<Key, int> lines_;
+};
+
+SizeSetting read_sizing(const Element& e, bool with_intervals) {
+  SizeSetting s;
+  s.size = e.number("size", NumberKind::Positive);
+  if (with_intervals) {
+    s.intervals = e.integer("intervals", 1);
+    if (s.size && s.intervals) e.fail("give \"size\" or \"intervals\", not both");
+    if (auto f = e.choice("firmness", {"default", "soft", "hard"})) {
+      if (!s.size && !s.intervals)
+        e.fail_at("firmness", "attribute \"firmness\" needs \"size\" or \"intervals\"");
+      s.firmness = static_cast<Firmness>(*f);
+    }
+  }
+  return s;
+}
+
+CurveSetting read_curve(const Element& e) {
+  e.allow_attributes(
+      {"id", "size", "intervals", "firmness", "bias", "ratio", "first_size", "reverse"});
+  e.expect_empty();
+  CurveSetting c;
+  c.id = e.required_integer("id", 1);
+  c.sizing = read_sizing(e, true);
+  c.bias = static_cast<BiasKind>(e.choice("bias", {"none", "geometric", "dual"}).value_or(0));
+  c.bias_ratio = e.number("ratio", NumberKind::Positive);
+  c.bias_first_size = e.number("first_size", NumberKind::Positive);
+  const auto reverse = e.boolean("reverse");
+  c.reverse_bias = reverse.value_or(false);
+  if (c.bias == BiasKind::None) {
+    for (const char* a : {"ratio", "first_size", "reverse"})
+      if (e.has(a))
+        e.fail_at(a, "attribute \"" + std::string(a) +
+                         "\" needs bias=\"geometric\" or bias=\"dual\"");
+  } else {
+    if (c.bias_ratio.has_value() == c.bias_first_size.has_value())
+      e.fail("a biased curve needs exactly one of \"ratio\" and \"first_size\"");
+    if (c.bias == BiasKind::Dual && reverse)
+      e.fail_at("reverse", "attribute \"reverse\" has no meaning with bias=\"dual\"");
+  }
+  if (!c.sizing.size && !c.sizing.intervals && c.bias == BiasKind::None)
+    e.fail("sets nothing; give size, intervals or bias");
+  c.where = e.where();
+  return c;
+}
+
+SurfaceSetting read_surface(const Element& e) {
+  e.allow_attributes({"id", "size", "scheme"});
+  e.expect_empty();
+  SurfaceSetting s;
+  s.id = e.required_integer("id", 1);
+  s.sizing = read_sizing(e, false);
+  static const char* const kSchemes[] = {"auto", "map", "submap", "pave", "tri"};
+  if (auto i = e.choice("scheme", {"auto", "map", "submap", "pave", "tri"})) s.scheme = kSchemes[*i];
+  if (!s.sizing.size && !e.has("scheme")) e.fail("sets nothing; give size or scheme");
+  s.where = e.where();
+  return s;
+}
+
+VolumeSetting read_volume(const Element& e) {
+  e.allow_attributes({"id", "size", "scheme", "elements", "sources", "targets", "direction"});
+  e.expect_empty();
+  VolumeSetting v;
+  v.id = e.required_integer("id", 1);
+  v.sizing = read_sizing(e, false);
+  static const char* const kSchemes[] = {"auto", "map", "cooper"};
+  if (auto i = e.choice("scheme", {"auto", "map", "cooper"})) v.scheme = kSchemes[*i];
+  v.elements = static_cast<ElementKind>(e.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
+  if (e.has("sources")) v.sources = e.ids("sources");
+  if (e.has("targets")) v.targets = e.ids("targets");
+  v.direction = e.vector("direction", VectorKind::NonZero);
+  if (v.scheme == "map") {
+    for (const char* a : {"sources", "targets", "direction"})
+      if (e.has(a))
+        e.fail_at(a, "attribute \"" + std::string(a) +
+                         "\" is a sweep hint; it needs scheme=\"cooper\" or \"auto\"");
+    if (v.elements != ElementKind::Hex)
+      e.fail_at("elements", "scheme=\"map\" makes hexahedra only; use elements=\"hex\"");
+  }
+  for (int id : v.sources)
+    if (std::find(v.targets.begin(), v.targets.end(), id) != v.targets.end())
+      e.fail("surface " + std::to_string(id) + " is both a source and a target");
+  if (!v.sizing.size && !e.has("scheme") && !e.has("elements") && v.sources.empty() &&
+      v.targets.empty() && !v.direction)
+    e.fail("sets nothing; give size, scheme, elements or sweep hints");
+  v.where = e.where();
+  return v;
+}
+
+VertexTypeSetting read_vertex_type(const Element& e) {
+  e.allow_attributes({"surface", "vertex", "type"});
+  e.expect_empty();
+  VertexTypeSetting t;
+  t.surface = e.required_integer("surface", 1);
+  t.vertex = e.required_integer("vertex", 1);
+  e.required("type");
+  t.type = static_cast<VertexType>(*e.choice("type", {"end", "side", "corner", "reversal"}));
+  t.where = e.where();
+  return t;
+}
+
+}  // namespace
+
+MeshSettings read_mesh(const Element& mesh) {
+  mesh.allow_attributes({"size", "threads"});
+  MeshSettings m;
+  m.size = mesh.number("size", NumberKind::Positive);
+  m.threads = mesh.integer("threads", 0).value_or(0);
+  m.where = mesh.where();
+  FirstLine<int> curves, surfaces, volumes;
+  FirstLine<std::pair<int, int>> vertices;
+  for (const Element& e : mesh.children()) {
+    const std::string tag = e.name();
+    if (tag == "curve") {
+      m.curves.push_back(read_curve(e));
+      curves.claim(e, m.curves.back().id, "curve " + std::to_string(m.curves.back().id));
+    } else if (tag == "surface") {
+      m.surfaces.push_back(read_surface(e));
+      surfaces.claim(e, m.surfaces.back().id, "surface " + std::to_string(m.surfaces.back().id));
+    } else if (tag == "volume") {
+      m.volumes.push_back(read_volume(e));
+      volumes.claim(e, m.volumes.back().id, "volume " + std::to_string(m.volumes.back().id));
+    } else if (tag == "vertex_type") {
+      const auto& t = m.vertex_types.emplace_back(read_vertex_type(e));
+      vertices.claim(e, {t.surface, t.vertex},
+                     "the type of vertex " + std::to_string(t.vertex) + " on surface " +
+                         std::to_string(t.surface));
+    } else {
+      e.fail("unknown element in <mesh>" + suggestion(tag, kMeshElements, "<", ">") +
+             "; allowed: " + list(kMeshElements, "<", ">"));
+    }
+  }
+  return m;
+}
+
+}  // namespace cooperage::io::detail

@@ -1,0 +1,8 @@
+# The XML journal reader (docs/journal.md): journal -> io::Job.
+cooperage_framework_part(io_journal
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/journal_reader.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/journal_geometry.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/journal_mesh.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/journal_xml.cpp
+  PRIVATE_DEPS tinyxml2::tinyxml2)

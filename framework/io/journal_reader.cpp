@@ -1,0 +1,172 @@
+// The journal reader: the document, the <cooperage> root and its sections in
+// order (<geometry>, <mesh>?, <quality>*, <export>*). The sections live in
+// journal_geometry.cpp and journal_mesh.cpp; attribute parsing in journal_xml.cpp.
+#include "framework/io/journal_reader.h"
+
+#include "framework/core/error.h"
+#include "framework/io/journal_xml.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <iterator>
+#include <utility>
+
+namespace cooperage::io {
+
+namespace {
+
+using detail::Element;
+
+const std::vector<std::string> kRootElements = {"geometry", "mesh", "quality", "export"};
+const std::vector<std::string> kMetrics = {"scaled_jacobian", "jacobian",         "skew",
+                                           "taper",           "aspect_frobenius", "edge_ratio",
+                                           "shape"};
+const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".inp"};
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+QualityCheck read_quality(const Element& e) {
+  e.allow_attributes({"metric", "min", "max", "action"});
+  e.expect_empty();
+  QualityCheck q;
+  e.required("metric");
+  q.metric = kMetrics[*e.choice("metric", {"scaled_jacobian", "jacobian", "skew", "taper",
+                                           "aspect_frobenius", "edge_ratio", "shape"})];
+  q.min = e.number("min", detail::NumberKind::Any);
+  q.max = e.number("max", detail::NumberKind::Any);
+  if (!q.min && !q.max) e.fail("needs \"min\", \"max\" or both");
+  if (q.min && q.max && *q.min > *q.max)
+    e.fail("\"min\" (" + *e.text("min") + ") is greater than \"max\" (" + *e.text("max") + ")");
+  if (e.choice("action", {"warn", "fail"}).value_or(0) == 1) q.action = QualityCheck::Action::Fail;
+  q.where = e.where();
+  return q;
+}
+
+ExportSetting read_export(const Element& e) {
+  e.allow_attributes({"file"});
+  e.expect_empty();
+  ExportSetting x{e.required("file"), e.where()};
+  if (std::none_of(kExportExtensions.begin(), kExportExtensions.end(),
+                   [&](const std::string& ext) { return ends_with(x.file, ext); }))
+    e.fail_at("file", "attribute \"file\" must end in one of " +
+                          detail::list(kExportExtensions) + " (the extension picks the format), got \"" +
+                          x.file + "\"");
+  return x;
+}
+
+void read_root(const Element& root, Job& job) {
+  if (std::string(root.name()) != "cooperage")
+    root.fail("the root element must be <cooperage version=\"1\">");
+  // xmlns* and xsi:* let editors find docs/cooperage-journal.xsd.
+  const auto version = root.text("version");
+  if (!version) root.fail("missing required attribute \"version\" (use version=\"1\")");
+  if (*version != "1")
+    root.fail_at("version", "unsupported version \"" + *version + "\"; this release reads version=\"1\"");
+
+  std::map<std::string, int> seen;  // section -> line of its first occurrence
+  std::string last;                 // the last section read
+  for (const Element& e : root.children()) {
+    const std::string tag = e.name();
+    const auto rank = std::find(kRootElements.begin(), kRootElements.end(), tag);
+    if (rank == kRootElements.end())
+      e.fail("unknown element in <cooperage>" + detail::suggestion(tag, kRootElements, "<", ">") +
+             "; allowed, in this order: <geometry>, <mesh>?, <quality>*, <export>*");
+    if ((tag == "geometry" || tag == "mesh") && seen.count(tag))
+      e.fail("appears twice; the first is at line " + std::to_string(seen[tag]));
+    if (!last.empty() && rank < std::find(kRootElements.begin(), kRootElements.end(), last))
+      e.fail("must come before <" + last + "> (line " + std::to_string(seen[last]) +
+             "); the order is <geometry>, <mesh>?, <quality>*, <export>*");
+    if (tag != "geometry" && !seen.count("geometry"))
+      e.fail("comes before <geometry>; a journal starts with <geometry>");
+    seen.emplace(tag, e.line());
+    last = tag;
+    if (tag == "geometry") {
+      detail::read_geometry(e, job);
+    } else if (tag == "mesh") {
+      job.mesh = detail::read_mesh(e);
+    } else if (tag == "quality") {
+      QualityCheck q = read_quality(e);
+      for (const auto& other : job.quality)
+        if (other.metric == q.metric && other.action == q.action)
+          e.fail("metric \"" + q.metric + "\" with this action is already checked at line " +
+                 std::to_string(other.where.line));
+      job.quality.push_back(std::move(q));
+    } else {
+      ExportSetting x = read_export(e);
+      for (const auto& other : job.exports)
+        if (other.file == x.file)
+          e.fail("file \"" + x.file + "\" is already exported at line " +
+                 std::to_string(other.where.line));
+      job.exports.push_back(std::move(x));
+    }
+  }
+  if (!seen.count("geometry")) root.fail("needs a <geometry> element");
+}
+
+/// Root attributes: version, plus namespace declarations and xsi:* hints.
+void check_root_attributes(const tinyxml2::XMLElement* root, const Element& e) {
+  for (auto* a = root->FirstAttribute(); a; a = a->Next()) {
+    const std::string name = a->Name();
+    if (name == "version" || name == "xmlns" || name.rfind("xmlns:", 0) == 0 ||
+        name.rfind("xsi:", 0) == 0)
+      continue;
+    e.fail_at(a->Name(), "unknown attribute \"" + name + "\"" +
+                             detail::suggestion(name, {"version"}, "\"", "\"") +
+                             "; allowed: version (and xmlns/xsi declarations)");
+  }
+}
+
+}  // namespace
+
+Job parse_journal(const std::string& xml_text, const std::string& file_name_for_messages,
+                  const std::string& base_dir) {
+  const std::string& file = file_name_for_messages;
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml_text.data(), xml_text.size()) != tinyxml2::XML_SUCCESS) {
+    // ErrorStr() is "Error=NAME ErrorID=.. Line number=N: detail"; keep NAME and detail.
+    std::string detail = doc.ErrorStr();
+    const size_t colon = detail.find(": ", detail.find("Line number="));
+    detail = colon == std::string::npos ? std::string() : ": " + detail.substr(colon + 2);
+    std::string hint;
+    if (doc.ErrorID() == tinyxml2::XML_ERROR_MISMATCHED_ELEMENT)
+      hint = " (an element opened here is not closed, or closed by the wrong tag)";
+    throw MeshingError(ErrorCode::ParseError, detail::at(file, doc.ErrorLineNum()) +
+                                                  "malformed XML, " + doc.ErrorName() + detail +
+                                                  hint);
+  }
+  const tinyxml2::XMLElement* root = doc.RootElement();
+  if (!root)
+    throw MeshingError(ErrorCode::ParseError,
+                       detail::at(file, 1) + "the journal has no root element");
+  Job job;
+  job.file = file;
+  job.base_dir = base_dir;
+  const Element root_element(root, file);
+  if (std::string(root->Name()) == "cooperage") check_root_attributes(root, root_element);
+  read_root(root_element, job);
+  return job;
+}
+
+Job read_journal(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw MeshingError(ErrorCode::FileNotFound, "journal \"" + path + "\" does not exist");
+  if (fs::is_directory(path, ec))
+    throw MeshingError(ErrorCode::FileNotFound, "journal \"" + path + "\" is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MeshingError(ErrorCode::FileNotFound, "cannot open journal \"" + path + "\"");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw MeshingError(ErrorCode::FileNotFound, "cannot read journal \"" + path + "\"");
+  fs::path dir = fs::absolute(path, ec).lexically_normal().parent_path();
+  if (ec) dir = fs::path(path).parent_path();
+  return parse_journal(text, path, dir.string());
+}
+
+}  // namespace cooperage::io
