@@ -1,39 +1,102 @@
 // The `cooperage` command line: parse arguments, call the library, print.
-// Exit codes: 0 success, 2 bad input (file, journal, geometry), 3 internal error.
+// Exit codes: 0 success, 1 a quality check failed, 2 bad input (file,
+// journal, geometry, no applicable scheme), 3 internal error.
 #include "model_report.h"
+#include "progress.h"
+#include "run_report.h"
 
 #include "framework/core/error.h"
 #include "framework/core/log.h"
+#include "framework/geometry/occ/workbench.h"
+#include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <string>
 
 namespace {
 
+using namespace cooperage;
+
+constexpr int kExitQualityFailed = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 3;
 
 int run_info(const std::string& file, bool json, bool no_imprint) {
-  const cooperage::geom::Model model = cooperage::pipeline::load_any(file, !no_imprint);
+  const geom::Model model = pipeline::load_any(file, !no_imprint);
   if (json) {
-    cooperage::app::write_model_json(model, file, std::cout);
+    app::write_model_json(model, file, std::cout);
   } else {
-    cooperage::app::write_model_text(model, file, std::cout);
+    app::write_model_text(model, file, std::cout);
   }
   return 0;
+}
+
+int finish_run(const io::Job& job, int threads, bool quiet) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  app::Progress progress(!quiet);
+  pipeline::MeshOptions options;
+  options.threads = threads;
+  options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
+    progress.update(stage, done, total);
+  };
+  const pipeline::RunResult result = pipeline::run_job(job, registry, options);
+  progress.finish();
+  app::write_run_report(result, std::cout);
+  return result.quality.failed() ? kExitQualityFailed : 0;
+}
+
+int run_journal(const std::string& file, int threads, bool quiet) {
+  return finish_run(io::read_journal(file), threads, quiet);
+}
+
+// `cooperage mesh MODEL --size S -o OUT`: a journal built on the fly.
+int run_mesh(const std::string& model, double size, int dim, const std::string& output,
+             bool no_imprint, int threads, bool quiet) {
+  if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
+  io::Job job;
+  job.file = model;
+  io::ImportOp import;
+  import.name = std::filesystem::path(model).stem().string();
+  import.file = model;
+  job.geometry.push_back({import, {model, 0, "import"}});
+  job.imprint_merge = !no_imprint;
+  job.mesh = io::MeshSettings{};
+  job.mesh->size = size;
+  job.exports.push_back({output, {"command line", 0, "-o"}});
+  if (dim == 2) {
+    scheme::Registry registry;
+    register_builtin_schemes(registry);
+    app::Progress progress(!quiet);
+    pipeline::MeshOptions options;
+    options.dim = 2;
+    options.threads = threads;
+    options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
+      progress.update(stage, done, total);
+    };
+    const pipeline::RunResult result = pipeline::run_job(job, registry, options);
+    progress.finish();
+    app::write_run_report(result, std::cout);
+    return result.quality.failed() ? kExitQualityFailed : 0;
+  }
+  return finish_run(job, threads, quiet);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  occ::silence_kernel_output();
   CLI::App app{"Cooperage: all-hexahedral meshing of CAD solids by sweeping (the cooper tool)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "cooperage 0.1.0");
   bool verbose = false;
-  app.add_flag("-v,--verbose", verbose, "Print progress and diagnostics on stderr");
+  app.add_flag("-v,--verbose", verbose, "Print diagnostics on stderr");
 
   std::string info_file;
   bool info_json = false;
@@ -46,6 +109,30 @@ int main(int argc, char** argv) {
   info->add_flag("--no-imprint", info_no_imprint,
                  "Keep touching solids separate (no imprint and merge)");
 
+  std::string run_file;
+  int threads = 0;
+  bool quiet = false;
+  CLI::App* run = app.add_subcommand("run", "Run a journal: geometry, meshing, quality, exports");
+  run->add_option("JOURNAL", run_file, "The journal (.xml)")->required();
+  run->add_option("--threads", threads, "Worker threads (0: all cores; same output for any)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_flag("-q,--quiet", quiet, "No progress output");
+
+  std::string mesh_file, mesh_output;
+  double mesh_size = 0;
+  int mesh_dim = 3;
+  bool mesh_no_imprint = false;
+  CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
+  mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
+  mesh->add_option("--size", mesh_size, "Element size, in the model's length unit")->required();
+  mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
+      ->check(CLI::IsMember({2, 3}));
+  mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
+  mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
+  mesh->add_option("--threads", threads, "Worker threads (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  mesh->add_flag("-q,--quiet", quiet, "No progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -53,17 +140,20 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitBadInput;
   }
 
-  cooperage::log::set_threshold(verbose ? cooperage::log::Level::Info
-                                        : cooperage::log::Level::Warning);
-  cooperage::log::set_sink([](cooperage::log::Level level, const std::string& line) {
-    std::cerr << (level >= cooperage::log::Level::Warning ? "cooperage: " : "") << line << '\n';
+  log::set_threshold(verbose ? log::Level::Info : log::Level::Warning);
+  log::set_sink([](log::Level level, const std::string& line) {
+    std::cerr << (level >= log::Level::Warning ? "cooperage: " : "") << line << '\n';
   });
 
   try {
     if (*info) return run_info(info_file, info_json, info_no_imprint);
-  } catch (const cooperage::MeshingError& e) {
+    if (*run) return run_journal(run_file, threads, quiet);
+    if (*mesh) {
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, threads, quiet);
+    }
+  } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';
-    return e.code() == cooperage::ErrorCode::Internal ? kExitInternal : kExitBadInput;
+    return e.code() == ErrorCode::Internal ? kExitInternal : kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "cooperage: internal error: " << e.what() << '\n';
     return kExitInternal;

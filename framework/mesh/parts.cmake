@@ -1,2 +1,3 @@
 cooperage_framework_part(mesh SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/mesh_db.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/mesh_db.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/curve_spacing.cpp)

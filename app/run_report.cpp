@@ -1,0 +1,50 @@
+#include "run_report.h"
+
+#include <cstdio>
+#include <map>
+
+namespace cooperage::app {
+namespace {
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+}  // namespace
+
+void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
+  std::map<std::pair<int, int>, double> seconds;
+  std::map<std::pair<int, int>, std::string> schemes;
+  for (const auto& t : result.mesh.timings) {
+    seconds[{t.dim, t.id}] = t.seconds;
+    schemes[{t.dim, t.id}] = t.scheme;
+  }
+  char line[256];
+  std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %9s\n", "entity", "scheme",
+                "type", "elements", "min SJ", "mean SJ", "time [s]");
+  out << line;
+  for (const auto& b : result.quality.blocks) {
+    const auto* sj = b.find("scaled_jacobian");
+    const std::string entity = (b.dim == 3 ? "volume " : "surface ") + std::to_string(b.id);
+    std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10zu %8.4f %8.4f %9.3f\n", entity.c_str(),
+                  schemes[{b.dim, b.id}].c_str(), std::string(quality::to_string(b.type)).c_str(),
+                  b.count, sj ? sj->min : 0.0, sj ? sj->mean : 0.0, seconds[{b.dim, b.id}]);
+    out << line;
+  }
+  out << "nodes " << result.mesh.mesh.node_count() << ", hexes " << result.mesh.mesh.hex_count()
+      << ", wedges " << result.mesh.mesh.wedge_count() << ", quads "
+      << result.mesh.mesh.quad_count() << ", triangles " << result.mesh.mesh.tri_count() << "\n";
+  for (const auto& c : result.quality.checks) {
+    out << "quality " << c.check.metric;
+    if (c.check.min) out << " >= " << fmt("%g", *c.check.min);
+    if (c.check.max) out << " <= " << fmt("%g", *c.check.max);
+    out << ": " << c.violations << " elements outside"
+        << (c.failed ? " -- FAILED" : (c.violations ? " (warning)" : ", ok")) << "\n";
+  }
+  for (const auto& f : result.written) out << "wrote " << f << "\n";
+  if (result.exports_skipped) out << "exports skipped: a quality check failed\n";
+}
+
+}  // namespace cooperage::app

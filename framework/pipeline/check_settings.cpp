@@ -1,0 +1,56 @@
+#include "framework/pipeline/check_settings.h"
+
+#include "framework/core/error.h"
+
+namespace cooperage::pipeline {
+namespace {
+
+std::string at(const io::SourceLocation& where) {
+  return where.file + ":" + std::to_string(where.line) + ": <" + where.element + ">: ";
+}
+
+void check_id(const io::SourceLocation& where, const char* kind, int id, size_t count) {
+  if (id < 1 || static_cast<size_t>(id) > count) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       at(where) + "the model has no " + kind + " " + std::to_string(id) +
+                           " (it has " + std::to_string(count) + "; see `cooperage info`)");
+  }
+}
+
+}  // namespace
+
+void check_settings(const geom::Model& model, const io::MeshSettings& settings) {
+  for (const auto& c : settings.curves) check_id(c.where, "curve", c.id, model.curves().size());
+  for (const auto& s : settings.surfaces) {
+    check_id(s.where, "surface", s.id, model.surfaces().size());
+    if (s.sizing.intervals) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         at(s.where) + "intervals are set on curves; use size on a surface");
+    }
+  }
+  for (const auto& v : settings.volumes) {
+    check_id(v.where, "volume", v.id, model.volumes().size());
+    if (v.sizing.intervals) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         at(v.where) + "intervals are set on curves; use size on a volume");
+    }
+    for (int s : v.sources) check_id(v.where, "surface", s, model.surfaces().size());
+    for (int s : v.targets) check_id(v.where, "surface", s, model.surfaces().size());
+    if (v.elements != io::ElementKind::Hex) {
+      throw MeshingError(ErrorCode::NotSupported,
+                         at(v.where) + "elements=\"wedge\"/\"mixed\" needs the tri scheme and "
+                                       "the cooper sweep, which are not in this release");
+    }
+    if (!v.sources.empty() || !v.targets.empty() || v.direction) {
+      throw MeshingError(ErrorCode::NotSupported,
+                         at(v.where) + "sweep hints need the cooper scheme, which is not in "
+                                       "this release");
+    }
+  }
+  for (const auto& p : settings.vertex_types) {
+    check_id(p.where, "surface", p.surface, model.surfaces().size());
+    check_id(p.where, "vertex", p.vertex, model.vertices().size());
+  }
+}
+
+}  // namespace cooperage::pipeline

@@ -1,0 +1,150 @@
+#include "framework/pipeline/mesher.h"
+
+#include "framework/core/error.h"
+#include "framework/core/log.h"
+#include "framework/io/export/write_mesh.h"
+#include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/check_settings.h"
+#include "framework/pipeline/commit_mesh.h"
+#include "framework/pipeline/interval_setup.h"
+#include "framework/pipeline/mesh_curves.h"
+#include "framework/pipeline/plan_schemes.h"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+namespace cooperage::pipeline {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct Outcome {
+  scheme::EntityMesh mesh;
+  std::optional<MeshingError> error;
+  double seconds = 0;
+};
+
+// Runs `work(id)` for every id, in parallel; results and the first error
+// (by id, not by time) are deterministic.
+template <class Work>
+std::vector<Outcome> for_each_entity(const std::vector<int>& ids, Work work) {
+  std::vector<Outcome> out(ids.size());
+  tbb::parallel_for(size_t{0}, ids.size(), [&](size_t i) {
+    const auto t0 = Clock::now();
+    try {
+      out[i].mesh = work(ids[i]);
+    } catch (const MeshingError& e) {
+      out[i].error = e;
+    } catch (const std::exception& e) {
+      out[i].error = MeshingError(ErrorCode::Internal, e.what());
+    }
+    out[i].seconds = seconds_since(t0);
+  });
+  for (const auto& o : out) {
+    if (o.error) throw *o.error;
+  }
+  return out;
+}
+
+void report(const MeshOptions& options, const std::string& stage, size_t done, size_t total) {
+  if (options.progress) options.progress(stage, done, total);
+}
+
+}  // namespace
+
+MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
+                      const scheme::Registry& registry, const MeshOptions& options) {
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.threads > 0) {
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    static_cast<size_t>(options.threads));
+  }
+  check_settings(model, settings);
+  MeshResult result;
+  report(options, "plan", 0, 1);
+  result.plan = plan_schemes(model, registry, settings, options.dim);
+  report(options, "intervals", 0, 1);
+  result.intervals =
+      intervals::solve(build_interval_problem(model, registry, result.plan, settings));
+  report(options, "curves", 0, model.curves().size());
+  mesh_curves(model, result.intervals.intervals, settings, result.mesh);
+
+  scheme::MeshParams params;
+  params.size = settings.size.value_or(1.0);
+
+  std::vector<int> surfaces;
+  for (const auto& [id, entry] : result.plan.surfaces) surfaces.push_back(id);
+  report(options, "surfaces", 0, surfaces.size());
+  const auto surface_meshes = for_each_entity(surfaces, [&](int id) {
+    const scheme::SurfaceScheme* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
+    return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
+  });
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    commit_surface(surface_meshes[i].mesh, surfaces[i], result.mesh);
+    result.timings.push_back(
+        {2, surfaces[i], result.plan.surfaces.at(surfaces[i]).scheme, surface_meshes[i].seconds});
+  }
+  report(options, "surfaces", surfaces.size(), surfaces.size());
+
+  std::vector<int> volumes;
+  for (const auto& [id, entry] : result.plan.volumes) volumes.push_back(id);
+  report(options, "volumes", 0, volumes.size());
+  const auto volume_meshes = for_each_entity(volumes, [&](int id) {
+    const scheme::VolumeScheme* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
+    return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
+  });
+  for (size_t i = 0; i < volumes.size(); ++i) {
+    commit_volume(volume_meshes[i].mesh, volumes[i], result.mesh);
+    result.timings.push_back(
+        {3, volumes[i], result.plan.volumes.at(volumes[i]).scheme, volume_meshes[i].seconds});
+  }
+  report(options, "volumes", volumes.size(), volumes.size());
+
+  // Never hand back inverted elements silently.
+  const QualityReport check = assess_quality(result.mesh, model, {});
+  for (const auto& block : check.blocks) {
+    const auto* sj = block.find("scaled_jacobian");
+    if (sj && sj->inverted > 0) {
+      throw MeshingError(ErrorCode::MeshingFailed, EntityRef{block.dim, block.id},
+                         std::to_string(sj->inverted) + " inverted " +
+                             std::string(quality::to_string(block.type)) +
+                             " elements (minimum scaled Jacobian " + std::to_string(sj->min) +
+                             ")");
+    }
+  }
+  return result;
+}
+
+RunResult run_job(const io::Job& job, const scheme::Registry& registry,
+                  const MeshOptions& options) {
+  if (!job.mesh) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       job.file + ": the journal has no <mesh> element, so there is nothing to run");
+  }
+  RunResult result{build_geometry(job), {}, {}, {}, false};
+  MeshOptions opts = options;
+  if (opts.threads == 0) opts.threads = job.mesh->threads;
+  result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
+  result.quality = assess_quality(result.mesh.mesh, result.model, job.quality);
+  if (result.quality.failed()) {
+    result.exports_skipped = !job.exports.empty();
+    return result;
+  }
+  for (const io::ExportSetting& e : job.exports) {
+    const std::string path = resolve_path(job.base_dir, e.file);
+    report(options, "export " + e.file, 0, 1);
+    io::write_mesh(path, result.mesh.mesh, result.model);
+    result.written.push_back(path);
+  }
+  return result;
+}
+
+}  // namespace cooperage::pipeline

@@ -1,0 +1,59 @@
+// The meshing pipeline (DESIGN.md "Data flow"): plan schemes -> assign
+// intervals -> mesh curves -> surfaces -> volumes -> quality -> exports.
+// Every stage is a function of the previous stage's value.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/intervals/solve.h"
+#include "framework/io/job.h"
+#include "framework/mesh/mesh_db.h"
+#include "framework/pipeline/quality_report.h"
+#include "framework/pipeline/scheme_plan.h"
+#include "framework/scheme/registry.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cooperage::pipeline {
+
+struct MeshOptions {
+  int dim = 3;      ///< 3: volumes (and their surfaces); 2: surfaces only
+  int threads = 0;  ///< 0: all cores; the result does not depend on it
+  /// Called as work advances: stage name, items done, items in the stage.
+  std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
+};
+
+struct EntityTiming {
+  int dim = 3;
+  int id = 0;
+  std::string scheme;
+  double seconds = 0.0;
+};
+
+struct MeshResult {
+  SchemePlan plan;
+  intervals::IntervalSolution intervals;
+  mesh::MeshDB mesh;
+  std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
+};
+
+/// Meshes a model. Throws MeshingError naming the entity on any failure,
+/// including inverted volume elements (never returned silently).
+MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
+                      const scheme::Registry& registry, const MeshOptions& options = {});
+
+struct RunResult {
+  geom::Model model;
+  MeshResult mesh;
+  QualityReport quality;
+  std::vector<std::string> written;  ///< export files written
+  bool exports_skipped = false;      ///< a failing quality check stopped them
+};
+
+/// A whole journal: geometry, meshing, quality checks, exports (written only
+/// when no check with action="fail" fails; each file is written atomically).
+RunResult run_job(const io::Job& job, const scheme::Registry& registry,
+                  const MeshOptions& options = {});
+
+}  // namespace cooperage::pipeline

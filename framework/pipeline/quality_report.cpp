@@ -1,0 +1,125 @@
+#include "framework/pipeline/quality_report.h"
+
+#include "framework/core/error.h"
+#include "framework/quality/evaluate.h"
+
+#include <array>
+
+namespace cooperage::pipeline {
+namespace {
+
+using quality::ElementType;
+using quality::Metric;
+
+template <size_t N>
+std::vector<std::array<int, 8>> widen(const std::vector<std::array<int, N>>& elements) {
+  std::vector<std::array<int, 8>> rows(elements.size());
+  for (size_t e = 0; e < elements.size(); ++e) {
+    rows[e].fill(0);
+    for (size_t i = 0; i < N; ++i) rows[e][i] = elements[e][i];
+  }
+  return rows;
+}
+
+std::vector<Metric> metrics_for(ElementType type, const std::vector<io::QualityCheck>& checks) {
+  std::vector<Metric> metrics{Metric::ScaledJacobian};
+  for (const auto& c : checks) {
+    const auto m = quality::metric_from_string(c.metric);
+    if (!m) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         c.where.file + ":" + std::to_string(c.where.line) +
+                             ": <quality>: unknown metric \"" + c.metric + "\"");
+    }
+    bool seen = false;
+    for (Metric k : metrics) seen = seen || k == *m;
+    if (!seen && quality::is_defined(*m, type)) metrics.push_back(*m);
+  }
+  return metrics;
+}
+
+// Normal of the surface at each element's centroid (for signed 2D metrics).
+template <size_t N>
+std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& s,
+                                               const std::vector<std::array<int, N>>& elements) {
+  std::vector<Eigen::Vector3d> normals;
+  normals.reserve(elements.size());
+  for (const auto& e : elements) {
+    geom::Vec3 c = geom::Vec3::Zero();
+    for (int n : e) c += db.node(n);
+    normals.push_back(s.geometry->project(c / static_cast<double>(N)).normal);
+  }
+  return normals;
+}
+
+void add_block(QualityReport& report, const mesh::MeshDB& db, int dim, int id, ElementType type,
+               const std::vector<std::array<int, 8>>& rows,
+               const std::vector<Eigen::Vector3d>* normals,
+               const std::vector<io::QualityCheck>& checks) {
+  if (rows.empty()) return;
+  BlockReport block{dim, id, type, rows.size(), {}};
+  quality::EvaluateOptions options;
+  options.normals = normals;
+  for (Metric m : metrics_for(type, checks)) {
+    const auto values = quality::evaluate(m, type, db.coords(), rows, options);
+    block.metrics.push_back(quality::summarize(m, values));
+    // Each check counts against its own thresholds (one metric may be
+    // checked twice, e.g. warn below 0.5 and fail below 0.2).
+    for (size_t c = 0; c < checks.size(); ++c) {
+      if (quality::metric_from_string(checks[c].metric) != m) continue;
+      const auto s = quality::summarize(m, values, checks[c].min, checks[c].max);
+      report.checks[c].violations += s.below_threshold;
+    }
+  }
+  report.blocks.push_back(std::move(block));
+}
+
+}  // namespace
+
+const quality::MetricSummary* BlockReport::find(const std::string& metric) const {
+  for (const auto& m : metrics) {
+    if (m.metric == metric) return &m;
+  }
+  return nullptr;
+}
+
+bool QualityReport::failed() const {
+  for (const auto& c : checks) {
+    if (c.failed) return true;
+  }
+  return false;
+}
+
+std::size_t QualityReport::inverted() const {
+  std::size_t n = 0;
+  for (const auto& b : blocks) {
+    if (const auto* sj = b.find("scaled_jacobian")) n += sj->inverted;
+  }
+  return n;
+}
+
+QualityReport assess_quality(const mesh::MeshDB& db, const geom::Model& model,
+                             const std::vector<io::QualityCheck>& checks) {
+  QualityReport report;
+  for (const auto& c : checks) report.checks.push_back({c, 0, false});
+  const bool volumes = db.hex_count() + db.wedge_count() > 0;
+  if (volumes) {
+    for (const auto& [id, v] : db.volumes()) {
+      add_block(report, db, 3, id, ElementType::Hex, widen(v.hexes), nullptr, checks);
+      add_block(report, db, 3, id, ElementType::Wedge, widen(v.wedges), nullptr, checks);
+    }
+  } else {
+    for (const auto& [id, s] : db.surfaces()) {
+      const geom::Surface& surface = model.surface(id);
+      const auto qn = reference_normals(db, surface, s.quads);
+      const auto tn = reference_normals(db, surface, s.tris);
+      add_block(report, db, 2, id, ElementType::Quad, widen(s.quads), &qn, checks);
+      add_block(report, db, 2, id, ElementType::Tri, widen(s.tris), &tn, checks);
+    }
+  }
+  for (auto& c : report.checks) {
+    c.failed = c.violations > 0 && c.check.action == io::QualityCheck::Action::Fail;
+  }
+  return report;
+}
+
+}  // namespace cooperage::pipeline

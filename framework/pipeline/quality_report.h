@@ -1,0 +1,45 @@
+// The quality report of a run: per element block (volume x element type, or
+// surface x element type for surface meshes) the scaled Jacobian and every
+// metric the journal checks, and the outcome of each check.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/io/job.h"
+#include "framework/mesh/mesh_db.h"
+#include "framework/quality/metric.h"
+#include "framework/quality/summary.h"
+
+#include <vector>
+
+namespace cooperage::pipeline {
+
+struct BlockReport {
+  int dim = 3;  ///< 3: a volume's block, 2: a surface's
+  int id = 0;
+  quality::ElementType type = quality::ElementType::Hex;
+  std::size_t count = 0;
+  std::vector<quality::MetricSummary> metrics;  ///< scaled_jacobian first
+
+  const quality::MetricSummary* find(const std::string& metric) const;
+};
+
+struct CheckOutcome {
+  io::QualityCheck check;
+  std::size_t violations = 0;   ///< elements outside the thresholds, all blocks
+  bool failed = false;          ///< violations with action Fail
+};
+
+struct QualityReport {
+  std::vector<BlockReport> blocks;
+  std::vector<CheckOutcome> checks;
+  bool failed() const;
+  std::size_t inverted() const;  ///< elements with scaled Jacobian <= 0
+};
+
+/// Volume blocks when the mesh has volume elements, otherwise surface blocks
+/// (scaled Jacobian signed against the surface normal). Unknown metric names
+/// in checks give MeshingError(InvalidInput) naming the journal line.
+QualityReport assess_quality(const mesh::MeshDB& db, const geom::Model& model,
+                             const std::vector<io::QualityCheck>& checks);
+
+}  // namespace cooperage::pipeline

@@ -1,0 +1,3 @@
+cooperage_framework_part(scheme SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/registry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vertex_angles.cpp)

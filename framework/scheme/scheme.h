@@ -1,0 +1,88 @@
+// The scheme interfaces (DESIGN.md "Core types"): every surface and volume
+// scheme answers applicable() a priori (from topology and angles, never by
+// meshing), states its interval constraints, and meshes.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/intervals/interval_problem.h"
+#include "framework/mesh/mesh_db.h"
+#include "framework/scheme/applicability.h"
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cooperage::scheme {
+
+/// Settings a scheme may read while meshing.
+struct MeshParams {
+  double size = 1.0;  ///< target element size [model units]
+};
+
+/// A surface as a scheme sees it. `mesh` holds the meshed curves of its loops
+/// during mesh(); it is null during applicable() and constrain().
+struct SurfaceView {
+  const geom::Model& model;
+  int surface_id = 0;
+  const mesh::MeshDB* mesh = nullptr;
+
+  const geom::Surface& surface() const { return model.surface(surface_id); }
+};
+
+/// A volume as a scheme sees it; `mesh` holds its meshed surfaces during mesh().
+struct VolumeView {
+  const geom::Model& model;
+  int volume_id = 0;
+  const mesh::MeshDB* mesh = nullptr;
+
+  const geom::Volume& volume() const { return model.volume(volume_id); }
+};
+
+/// New elements for one entity, in local node numbering. Local node k is the
+/// existing MeshDB node `global[k]` when that is >= 0, or a new node at
+/// `coords[k]` owned by the entity when it is -1.
+struct EntityMesh {
+  std::vector<int> global;
+  std::vector<geom::Vec3> coords;
+  std::vector<mesh::Quad> quads;
+  std::vector<mesh::Tri> tris;
+  std::vector<mesh::Hex> hexes;
+  std::vector<mesh::Wedge> wedges;
+
+  /// Adds a local node; returns its local index.
+  int add(const geom::Vec3& x, int global_node = -1) {
+    global.push_back(global_node);
+    coords.push_back(x);
+    return static_cast<int>(coords.size()) - 1;
+  }
+};
+
+class SurfaceScheme {
+ public:
+  virtual ~SurfaceScheme() = default;
+  virtual std::string_view name() const = 0;
+  /// A priori: can this scheme mesh the surface? Never meshes.
+  virtual Applicability applicable(const SurfaceView& view) const = 0;
+  /// Adds the constraints this scheme needs on the surface's curve intervals.
+  virtual void constrain(const SurfaceView& view, intervals::IntervalProblem& problem) const = 0;
+  /// Meshes the surface; its curves are meshed in view.mesh. Throws MeshingError.
+  virtual EntityMesh mesh(const SurfaceView& view, const MeshParams& params) const = 0;
+};
+
+/// Which surface scheme a volume scheme needs on each of its surfaces.
+using SurfaceRoles = std::map<int, std::string>;
+
+class VolumeScheme {
+ public:
+  virtual ~VolumeScheme() = default;
+  virtual std::string_view name() const = 0;
+  virtual Applicability applicable(const VolumeView& view) const = 0;
+  virtual void constrain(const VolumeView& view, intervals::IntervalProblem& problem) const = 0;
+  /// The surface schemes this volume scheme imposes, e.g. {side: submap}.
+  virtual SurfaceRoles roles(const VolumeView& view) const = 0;
+  /// Meshes the volume; its surfaces are meshed in view.mesh. Throws MeshingError.
+  virtual EntityMesh mesh(const VolumeView& view, const MeshParams& params) const = 0;
+};
+
+}  // namespace cooperage::scheme

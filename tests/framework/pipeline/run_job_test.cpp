@@ -1,0 +1,122 @@
+// A journal run end to end: geometry, meshing, quality checks, exports read
+// back by the Exodus library itself.
+#include "framework/core/error.h"
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+
+#include <exodusII.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace cooperage::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RunJob : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cooperage-run-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    register_builtin_schemes(registry_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  io::Job journal(const std::string& body) {
+    const fs::path file = dir_ / "job.xml";
+    std::ofstream(file) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
+    return io::read_journal(file.string());
+  }
+
+  fs::path dir_;
+  scheme::Registry registry_;
+};
+
+const char* kTwoBricks = R"(  <geometry>
+    <brick name="a" origin="0 0 0" size="1 1 1"/>
+    <brick name="b" origin="1 0 0" size="1 1 1"/>
+  </geometry>
+  <mesh size="0.25"/>
+)";
+
+TEST_F(RunJob, TwoMergedBricksExodusHasTwoBlocksAndOneSideSetPerSurface) {
+  io::Job job = journal(std::string(kTwoBricks) + "  <export file=\"out.exo\"/>\n");
+  const RunResult r = run_job(job, registry_);
+  ASSERT_EQ(r.written.size(), 1u);
+  const std::string file = (dir_ / "out.exo").string();
+  ASSERT_TRUE(fs::exists(file));
+
+  int cpu = 8, io_ws = 0;
+  float version = 0;
+  const int exo = ex_open(file.c_str(), EX_READ, &cpu, &io_ws, &version);
+  ASSERT_GE(exo, 0);
+  char title[MAX_LINE_LENGTH + 1];
+  int dim = 0, nodes = 0, elems = 0, blocks = 0, node_sets = 0, side_sets = 0;
+  ASSERT_EQ(ex_get_init(exo, title, &dim, &nodes, &elems, &blocks, &node_sets, &side_sets), 0);
+  EXPECT_EQ(dim, 3);
+  EXPECT_EQ(nodes, 9 * 5 * 5);  // shared face nodes exist once
+  EXPECT_EQ(elems, 128);
+  EXPECT_EQ(blocks, 2);
+  EXPECT_EQ(side_sets, static_cast<int>(r.model.surfaces().size()));
+  std::vector<int> ids(static_cast<size_t>(side_sets));
+  ASSERT_EQ(ex_get_side_set_ids(exo, ids.data()), 0);
+  for (int id : ids) {
+    int sides = 0, df = 0;
+    ASSERT_EQ(ex_get_side_set_param(exo, id, &sides, &df), 0);
+    EXPECT_EQ(sides, 16) << "side set " << id;  // every face of a unit cube at 0.25
+  }
+  ex_close(exo);
+}
+
+TEST_F(RunJob, FailingQualityCheckSkipsExports) {
+  io::Job job = journal(std::string(kTwoBricks) +
+                        "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"fail\"/>\n"
+                        "  <export file=\"out.vtu\"/>\n");
+  const RunResult r = run_job(job, registry_);
+  EXPECT_TRUE(r.quality.failed());
+  EXPECT_TRUE(r.exports_skipped);
+  EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
+}
+
+TEST_F(RunJob, WarningCheckCountsButWrites) {
+  io::Job job = journal(std::string(kTwoBricks) +
+                        "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"warn\"/>\n"
+                        "  <export file=\"out.vtu\"/>\n");
+  const RunResult r = run_job(job, registry_);
+  EXPECT_FALSE(r.quality.failed());
+  ASSERT_EQ(r.quality.checks.size(), 1u);
+  EXPECT_EQ(r.quality.checks[0].violations, 128u);
+  EXPECT_TRUE(fs::exists(dir_ / "out.vtu"));
+}
+
+TEST_F(RunJob, ConflictingHardIntervalsAreReportedWithTheirCurves) {
+  // Curves 1 and 3 of a brick face are opposite sides of a map face: pinning
+  // them to different counts cannot be satisfied.
+  io::Job job = journal(R"(  <geometry><brick name="a" origin="0 0 0" size="1 1 1"/></geometry>
+  <mesh size="0.25">
+    <curve id="1" intervals="3" firmness="hard"/>
+    <curve id="3" intervals="5" firmness="hard"/>
+  </mesh>
+  <export file="never.exo"/>
+)");
+  try {
+    run_job(job, registry_);
+    FAIL() << "infeasible intervals were accepted";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Infeasible) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1"), std::string::npos);
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "never.exo"));
+}
+
+TEST_F(RunJob, JournalWithoutMeshIsAnError) {
+  io::Job job = journal("  <geometry><brick name=\"a\" origin=\"0 0 0\" size=\"1 1 1\"/></geometry>\n");
+  EXPECT_THROW(run_job(job, registry_), MeshingError);
+}
+
+}  // namespace
+}  // namespace cooperage::pipeline
