@@ -77,7 +77,8 @@ class Workbench {
   std::vector<std::string> names() const;
   bool has(const std::string& name) const;
 
-  /// Writes the named shapes (all when empty) to a STEP or BREP file.
+  /// Writes the named shapes (all when empty) to a STEP, IGES or BREP file,
+  /// chosen by the extension, in the unit of the imported files (mm if none).
   void write(const std::string& path, const std::vector<std::string>& shapes = {}) const;
 
   /// The model of all current shapes: solids in creation order (then their
@@ -85,8 +86,10 @@ class Workbench {
   /// operations always give the same ids.
   geom::Model build_model(const BuildOptions& options = {}) const;
 
- private:
+  /// Opaque state (defined in detail.h, used by the backend's own files).
   struct Impl;
+
+ private:
   std::unique_ptr<Impl> impl_;
 };
 

@@ -1,0 +1,97 @@
+// Internal to the OpenCASCADE backend: the shape store behind Workbench, the
+// conversions between Cooperage and OCCT value types, and the guard that turns
+// every kernel exception into a MeshingError. Included only by the .cpp files
+// of this folder (it names OCCT types).
+#pragma once
+
+#include "framework/core/error.h"
+#include "framework/geometry/occ/workbench.h"
+
+#include <Standard_Failure.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include <exception>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cooperage::occ {
+
+using geom::Vec2;
+
+struct NamedShape {
+  std::string name;
+  TopoDS_Shape shape;
+};
+
+struct Workbench::Impl {
+  std::vector<NamedShape> shapes;  ///< creation order
+  /// Length unit of the imported files in metres (0: none imported yet).
+  double unit_in_metres = 0.0;
+  /// OCCT name of that unit ("MM", "INCH", ...), used when writing STEP.
+  std::string unit_name = "MM";
+
+  NamedShape* find(const std::string& name);
+  const NamedShape* find(const std::string& name) const;
+  /// The shape called name; throws InvalidInput naming it when unknown.
+  const TopoDS_Shape& get(const std::string& name) const;
+  /// Throws InvalidInput when name is empty or already used.
+  void check_new_name(const std::string& name) const;
+  void add(const std::string& name, const TopoDS_Shape& shape);
+  void remove(const std::string& name);
+};
+
+namespace detail {
+
+inline gp_Pnt to_pnt(const Vec3& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
+inline gp_Vec to_vec(const Vec3& p) { return gp_Vec(p.x(), p.y(), p.z()); }
+inline Vec3 to_vec3(const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); }
+inline Vec3 to_vec3(const gp_Vec& p) { return Vec3(p.X(), p.Y(), p.Z()); }
+inline Vec3 to_vec3(const gp_Dir& p) { return Vec3(p.X(), p.Y(), p.Z()); }
+
+/// A number for messages: shortest round-trip form ("-1", "0.25").
+std::string num(double value);
+
+[[noreturn]] inline void invalid(const std::string& shape, const std::string& why) {
+  throw MeshingError(ErrorCode::InvalidInput, "shape '" + shape + "': " + why);
+}
+
+/// Unit direction of a non-zero vector; throws InvalidInput naming the shape.
+gp_Dir checked_dir(const std::string& shape, const Vec3& v, const char* what);
+
+/// Runs f, converting OCCT and standard exceptions into MeshingError(code)
+/// prefixed by `context`; MeshingErrors pass through unchanged.
+template <class F>
+auto guarded(ErrorCode code, const std::string& context, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const MeshingError&) {
+    throw;
+  } catch (const Standard_Failure& e) {
+    const char* msg = e.GetMessageString();
+    throw MeshingError(code, context + ": OpenCASCADE " + e.DynamicType()->Name() +
+                                 (msg && *msg ? std::string(": ") + msg : std::string()));
+  } catch (const std::exception& e) {
+    throw MeshingError(code, context + ": " + e.what());
+  } catch (...) {
+    throw MeshingError(code, context + ": unknown kernel failure");
+  }
+}
+
+/// True when the shape holds at least one sub-shape of the given type.
+bool contains_solid(const TopoDS_Shape& shape);
+
+/// Evaluator factories (curve_geometry.cpp, surface_geometry.cpp).
+std::shared_ptr<const geom::CurveGeometry> make_curve_geometry(const TopoDS_Edge& edge);
+/// `face` oriented as in the surface's first volume: its topological normal
+/// is the natural normal.
+std::shared_ptr<const geom::SurfaceGeometry> make_surface_geometry(const TopoDS_Face& face);
+
+}  // namespace detail
+}  // namespace cooperage::occ

@@ -1,0 +1,74 @@
+// Workbench::write: the named shapes to a STEP, IGES or BREP file, written to a
+// temporary name and renamed so a failure never leaves a half file.
+#include "framework/geometry/occ/detail.h"
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace cooperage::occ {
+
+void Workbench::write(const std::string& path, const std::vector<std::string>& shapes) const {
+  silence_kernel_output();
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool step = ext == ".step" || ext == ".stp";
+  const bool iges = ext == ".iges" || ext == ".igs";
+  const bool brep = ext == ".brep" || ext == ".brp";
+  if (!step && !iges && !brep)
+    throw MeshingError(ErrorCode::InvalidInput,
+                       path + ": cannot write '" + ext +
+                           "' files (use .step, .stp, .iges, .igs or .brep)");
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  if (shapes.empty()) {
+    for (const auto& s : impl_->shapes) builder.Add(all, s.shape);
+  } else {
+    for (const auto& name : shapes) builder.Add(all, impl_->get(name));
+  }
+  const std::string tmp = path + ".tmp";
+  detail::guarded(ErrorCode::GeometryError, path, [&] {
+    bool ok = false;
+    if (step) {
+      STEPControl_Writer writer;
+      Interface_Static::SetCVal("xstep.cascade.unit", impl_->unit_name.c_str());
+      Interface_Static::SetCVal("write.step.unit", impl_->unit_name.c_str());
+      ok = writer.Transfer(all, STEPControl_AsIs) == IFSelect_RetDone &&
+           writer.Write(tmp.c_str()) == IFSelect_RetDone;
+      Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+      Interface_Static::SetCVal("write.step.unit", "MM");
+    } else if (iges) {
+      IGESControl_Controller::Init();
+      IGESControl_Writer writer(impl_->unit_name.c_str(), /*modecr=*/1);  // 1: B-rep solids
+      ok = writer.AddShape(all);
+      writer.ComputeModel();
+      ok = ok && writer.Write(tmp.c_str());
+    } else {
+      ok = BRepTools::Write(all, tmp.c_str());
+    }
+    std::error_code ec;
+    if (!ok) {
+      std::filesystem::remove(tmp, ec);
+      throw MeshingError(ErrorCode::GeometryError, path + ": the kernel could not write the file");
+    }
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+      std::filesystem::remove(tmp, ec);
+      throw MeshingError(ErrorCode::GeometryError, path + ": cannot rename the written file");
+    }
+    return 0;
+  });
+}
+
+}  // namespace cooperage::occ
