@@ -1,0 +1,262 @@
+#include "framework/io/export/export_common.h"
+
+#include "framework/quality/hex_metrics.h"
+#include "framework/quality/quad_metrics.h"
+#include "framework/quality/tri_metrics.h"
+#include "framework/quality/wedge_metrics.h"
+
+#include "framework/core/error.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <unistd.h>
+
+namespace cooperage::io::detail {
+namespace {
+
+using geom::Vec3;
+
+template <size_t N>
+void check_nodes(const std::array<int, N>& e, int n_nodes, EntityRef where, const char* kind,
+                 size_t index) {
+  for (int v : e) {
+    if (v < 0 || v >= n_nodes) {
+      throw MeshingError(ErrorCode::InvalidInput, where,
+                         std::string(kind) + " " + std::to_string(index) + " references node " +
+                             std::to_string(v) + " (the mesh has " + std::to_string(n_nodes) +
+                             " nodes)");
+    }
+  }
+}
+
+template <class T>
+void check_all(const std::vector<T>& elems, int n_nodes, EntityRef where, const char* kind) {
+  for (size_t i = 0; i < elems.size(); ++i) check_nodes(elems[i], n_nodes, where, kind, i);
+}
+
+}  // namespace
+
+void validate_mesh(const mesh::MeshDB& db, const geom::Model& model) {
+  const int n = static_cast<int>(db.node_count());
+  const int n_surfaces = static_cast<int>(model.surfaces().size());
+  const int n_volumes = static_cast<int>(model.volumes().size());
+  for (const auto& [id, s] : db.surfaces()) {
+    if (id < 1 || id > n_surfaces) {
+      throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(id),
+                         "is meshed but not in the model (" + std::to_string(n_surfaces) +
+                             " surfaces)");
+    }
+    check_all(s.quads, n, EntityRef::surface(id), "quad");
+    check_all(s.tris, n, EntityRef::surface(id), "triangle");
+  }
+  for (const auto& [id, v] : db.volumes()) {
+    if (id < 1 || id > n_volumes) {
+      throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
+                         "is meshed but not in the model (" + std::to_string(n_volumes) +
+                             " volumes)");
+    }
+    check_all(v.hexes, n, EntityRef::volume(id), "hex");
+    check_all(v.wedges, n, EntityRef::volume(id), "wedge");
+  }
+  bool any = false;
+  for (const auto& [id, s] : db.surfaces()) any = any || s.size() > 0;
+  for (const auto& [id, v] : db.volumes()) any = any || v.size() > 0;
+  if (!any) throw MeshingError(ErrorCode::InvalidInput, "the mesh has no elements to export");
+  for (int i = 0; i < n; ++i) {
+    if (!db.node(i).allFinite()) {
+      throw MeshingError(ErrorCode::InvalidInput, "node " + std::to_string(i) +
+                                                      " has a non-finite coordinate");
+    }
+  }
+}
+
+bool has_volume_elements(const mesh::MeshDB& db) {
+  for (const auto& [id, v] : db.volumes()) {
+    if (v.size() > 0) return true;
+  }
+  return false;
+}
+
+std::string temp_path_for(const std::string& path) {
+  return path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+}
+
+void remove_temp_file(const std::string& tmp) noexcept { std::remove(tmp.c_str()); }
+
+void commit_temp_file(const std::string& tmp, const std::string& path) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    remove_temp_file(tmp);
+    throw MeshingError(ErrorCode::FileNotFound,
+                       "cannot rename '" + tmp + "' to '" + path + "'");
+  }
+}
+
+void write_text_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write) {
+  const std::string tmp = temp_path_for(path);
+  try {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw MeshingError(ErrorCode::FileNotFound, "cannot create '" + tmp +
+                                                      "' (does the directory exist?)");
+    }
+    write(out);
+    out.flush();
+    if (!out) throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + tmp + "'");
+    out.close();
+    if (out.fail()) throw MeshingError(ErrorCode::FileNotFound, "cannot close '" + tmp + "'");
+  } catch (...) {
+    remove_temp_file(tmp);
+    throw;
+  }
+  commit_temp_file(tmp, path);
+}
+
+// ---- faces -------------------------------------------------------------------
+
+FaceFinder::Key FaceFinder::key_of(const int* nodes, int n) {
+  Key k{-1, -1, -1, -1};
+  // Insertion sort of at most 4 values (std::sort trips -Warray-bounds here).
+  for (int i = 0; i < n; ++i) {
+    int j = i;
+    for (; j > 0 && k[static_cast<size_t>(j - 1)] > nodes[i]; --j) {
+      k[static_cast<size_t>(j)] = k[static_cast<size_t>(j - 1)];
+    }
+    k[static_cast<size_t>(j)] = nodes[i];
+  }
+  return k;
+}
+
+FaceFinder::FaceFinder(const mesh::VolumeMeshData& vol, const FaceTable& hex_faces,
+                       const FaceTable& wedge_faces) {
+  auto add = [this](const int* elem, const FaceTable& table, bool wedge, int index) {
+    for (size_t s = 0; s < table.size(); ++s) {
+      int nodes[4];
+      const int n = static_cast<int>(table[s].size());
+      for (int i = 0; i < n; ++i) nodes[i] = elem[table[s][static_cast<size_t>(i)]];
+      // emplace keeps the first element with this face (an interior face is
+      // shared by two elements of the volume; boundary faces are unique).
+      faces_.emplace(key_of(nodes, n), FaceHit{wedge, index, static_cast<int>(s)});
+    }
+  };
+  for (size_t i = 0; i < vol.hexes.size(); ++i)
+    add(vol.hexes[i].data(), hex_faces, false, static_cast<int>(i));
+  for (size_t i = 0; i < vol.wedges.size(); ++i)
+    add(vol.wedges[i].data(), wedge_faces, true, static_cast<int>(i));
+}
+
+FaceHit FaceFinder::find(const int* nodes, int n) const {
+  auto it = faces_.find(key_of(nodes, n));
+  return it == faces_.end() ? FaceHit{} : it->second;
+}
+
+const FaceTable& exodus_hex_sides() {
+  static const FaceTable t{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                           {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  return t;
+}
+const FaceTable& exodus_wedge_sides() {
+  static const FaceTable t{{0, 1, 4, 3}, {1, 2, 5, 4}, {0, 3, 5, 2}, {0, 2, 1}, {3, 4, 5}};
+  return t;
+}
+const FaceTable& abaqus_hex_faces() {
+  static const FaceTable t{{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1},
+                           {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
+  return t;
+}
+const FaceTable& abaqus_wedge_faces() {
+  static const FaceTable t{{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
+  return t;
+}
+
+std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
+                                                  const geom::Model& model,
+                                                  const FaceTable& hex_faces,
+                                                  const FaceTable& wedge_faces) {
+  std::map<int, FaceFinder> finders;
+  std::map<int, std::vector<FaceHit>> result;
+  for (const auto& [sid, s] : db.surfaces()) {
+    const auto& vols = model.surface(sid).volumes;
+    if (vols.empty() || s.size() == 0) continue;
+    const int vid = vols.front();
+    if (!db.volume_meshed(vid) || db.volume(vid).size() == 0) continue;
+    auto it = finders.find(vid);
+    if (it == finders.end()) {
+      it = finders.emplace(vid, FaceFinder(db.volume(vid), hex_faces, wedge_faces)).first;
+    }
+    std::vector<FaceHit>& hits = result[sid];
+    hits.reserve(s.size());
+    auto look = [&](const int* nodes, int n, const char* kind, size_t i) {
+      FaceHit h = it->second.find(nodes, n);
+      if (h.element < 0) {
+        throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(sid),
+                           std::string(kind) + " " + std::to_string(i) +
+                               " is not a face of any element of volume " +
+                               std::to_string(vid) + " (non-conformal mesh)");
+      }
+      hits.push_back(h);
+    };
+    for (size_t i = 0; i < s.quads.size(); ++i) look(s.quads[i].data(), 4, "quad", i);
+    for (size_t i = 0; i < s.tris.size(); ++i) look(s.tris[i].data(), 3, "triangle", i);
+  }
+  return result;
+}
+
+std::vector<int> surface_node_set(const mesh::SurfaceMeshData& s) {
+  std::vector<int> nodes;
+  nodes.reserve(s.quads.size() * 4 + s.tris.size() * 3);
+  for (const auto& q : s.quads) nodes.insert(nodes.end(), q.begin(), q.end());
+  for (const auto& t : s.tris) nodes.insert(nodes.end(), t.begin(), t.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+// ---- scaled Jacobian (framework/quality, Verdict definitions) --------------
+
+namespace {
+template <size_t N>
+std::array<Vec3, N> gather(const std::array<int, N>& e, const std::vector<Vec3>& x) {
+  std::array<Vec3, N> p;
+  for (size_t i = 0; i < N; ++i) p[i] = x[static_cast<size_t>(e[i])];
+  return p;
+}
+}  // namespace
+
+double scaled_jacobian(const mesh::Hex& h, const std::vector<Vec3>& x) {
+  return quality::hex_scaled_jacobian(gather(h, x));
+}
+double scaled_jacobian(const mesh::Wedge& w, const std::vector<Vec3>& x) {
+  return quality::wedge_scaled_jacobian(gather(w, x));
+}
+double scaled_jacobian(const mesh::Quad& q, const std::vector<Vec3>& x) {
+  return quality::quad_scaled_jacobian(gather(q, x));
+}
+double scaled_jacobian(const mesh::Tri& t, const std::vector<Vec3>& x) {
+  return quality::tri_scaled_jacobian(gather(t, x));
+}
+
+std::string volume_label(const geom::Model& model, int volume_id) {
+  auto clean = [](const std::string& name) {
+    std::string s = name;
+    for (char& c : s) {
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) c = '_';
+    }
+    return s;
+  };
+  const std::string own = clean(model.volume(volume_id).name);
+  const std::string fallback = "V" + std::to_string(volume_id);
+  if (own.empty() || !std::isalpha(static_cast<unsigned char>(own[0]))) return fallback;
+  for (const auto& v : model.volumes()) {
+    if (v.id != volume_id && clean(v.name) == own) return fallback;
+  }
+  return own;
+}
+
+}  // namespace cooperage::io::detail

@@ -1,0 +1,32 @@
+// Abaqus input file (.inp) export.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/io/export/export_options.h"
+#include "framework/mesh/mesh_db.h"
+
+#include <string>
+
+namespace cooperage::io {
+
+/// Writes an Abaqus .inp mesh: *HEADING (options.title), *NODE (ids =
+/// 0-based index + 1), then per volume in ascending id
+/// "*ELEMENT, TYPE=C3D8, ELSET=<label>" and/or "TYPE=C3D6" (label =
+/// volume_label(): volume name or "V<id>"); element ids 1.. in that order
+/// (as in the Exodus file). A volume with both hexes and wedges gets element
+/// sets <label>_C3D8 and <label>_C3D6 and "*ELSET, ELSET=<label>" naming both.
+/// MeshDB hex/wedge node orders equal C3D8/C3D6 orders.
+/// Per meshed surface: "*NSET, NSET=surface_<id>" (its nodes); for volume
+/// meshes "*ELSET, ELSET=surface_<id>_S<k>" with the first-volume elements
+/// whose face S<k> carries a surface element, and
+/// "*SURFACE, TYPE=ELEMENT, NAME=surface_<id>" listing those sets with their
+/// face labels (C3D8: S1 = 1-2-3-4, S2 = 5-8-7-6, S3 = 1-5-6-2,
+/// S4 = 2-6-7-3, S5 = 3-7-8-4, S6 = 4-8-5-1; C3D6: S1 = 1-2-3, S2 = 4-6-5,
+/// S3 = 1-4-5-2, S4 = 2-5-6-3, S5 = 3-6-4-1).
+/// Surface-only meshes: "*ELEMENT, TYPE=S4" / "TYPE=S3" with
+/// ELSET=surface_<id> per surface, plus the node sets.
+/// Written atomically (see write_mesh()).
+void write_inp(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
+               const ExportOptions& options = {});
+
+}  // namespace cooperage::io

@@ -1,0 +1,10 @@
+# Mesh exporters: Exodus II (libexodusII), Gmsh 4.1, VTK .vtu, Abaqus .inp.
+cooperage_framework_part(io_export
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/export_common.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/exodus_writer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/msh_writer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/vtu_writer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/inp_writer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/write_mesh.cpp
+  PRIVATE_DEPS cooperage_exodus)
