@@ -1,5 +1,7 @@
 #include "framework/scheme/vertex_angles.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 
 namespace cooperage::scheme {
