@@ -3,6 +3,7 @@
 // journal, geometry, no applicable scheme), 3 internal error.
 #include "model_report.h"
 #include "progress.h"
+#include "quality_command.h"
 #include "run_report.h"
 
 #include "framework/core/error.h"
@@ -133,6 +134,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   mesh->add_flag("-q,--quiet", quiet, "No progress output");
 
+  std::string quality_file;
+  bool quality_json = false;
+  CLI::App* quality = app.add_subcommand(
+      "quality", "Report the element quality of a mesh file, block by block");
+  quality->add_option("FILE", quality_file, "A mesh file (.exo .e .g .msh .vtu)")->required();
+  quality->add_flag("--json", quality_json, "Print one JSON object instead of text");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -148,6 +156,7 @@ int main(int argc, char** argv) {
   try {
     if (*info) return run_info(info_file, info_json, info_no_imprint);
     if (*run) return run_journal(run_file, threads, quiet);
+    if (*quality) return app::run_quality(quality_file, quality_json, std::cout);
     if (*mesh) {
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, threads, quiet);
     }

@@ -2,6 +2,8 @@
 // geometry: counts, volumes, conformity, transformation invariance.
 #include "support/mesh_checks.h"
 
+#include "framework/core/error.h"
+
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
