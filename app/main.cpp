@@ -38,11 +38,14 @@ int run_info(const std::string& file, bool json, bool no_imprint) {
   return 0;
 }
 
-int finish_run(const io::Job& job, int threads, bool quiet) {
+int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
   scheme::Registry registry;
-  register_builtin_schemes(registry);
+  BuiltinOptions builtin;
+  if (job.mesh) builtin.vertex_types = job.mesh->vertex_types;
+  register_builtin_schemes(registry, builtin);
   app::Progress progress(!quiet);
   pipeline::MeshOptions options;
+  options.dim = dim;
   options.threads = threads;
   options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
     progress.update(stage, done, total);
@@ -54,7 +57,7 @@ int finish_run(const io::Job& job, int threads, bool quiet) {
 }
 
 int run_journal(const std::string& file, int threads, bool quiet) {
-  return finish_run(io::read_journal(file), threads, quiet);
+  return finish_run(io::read_journal(file), 3, threads, quiet);
 }
 
 // `cooperage mesh MODEL --size S -o OUT`: a journal built on the fly.
@@ -71,22 +74,7 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   job.mesh = io::MeshSettings{};
   job.mesh->size = size;
   job.exports.push_back({output, {"command line", 0, "-o"}});
-  if (dim == 2) {
-    scheme::Registry registry;
-    register_builtin_schemes(registry);
-    app::Progress progress(!quiet);
-    pipeline::MeshOptions options;
-    options.dim = 2;
-    options.threads = threads;
-    options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
-      progress.update(stage, done, total);
-    };
-    const pipeline::RunResult result = pipeline::run_job(job, registry, options);
-    progress.finish();
-    app::write_run_report(result, std::cout);
-    return result.quality.failed() ? kExitQualityFailed : 0;
-  }
-  return finish_run(job, threads, quiet);
+  return finish_run(job, dim, threads, quiet);
 }
 
 }  // namespace

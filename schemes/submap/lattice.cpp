@@ -1,0 +1,189 @@
+#include "schemes/submap/lattice.h"
+
+#include <algorithm>
+#include <climits>
+
+#include "schemes/submap/directions.h"
+
+namespace cooperage::submap {
+namespace {
+
+std::string at(const LatticePoint& p) {
+  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ")";
+}
+
+}  // namespace
+
+std::vector<LatticePoint> walk_loop(const std::vector<int>& directions,
+                                    const std::vector<int>& intervals, LatticePoint start,
+                                    LatticePoint* closure) {
+  std::vector<LatticePoint> points;
+  LatticePoint p = start;
+  for (size_t u = 0; u < directions.size(); ++u) {
+    const auto step = direction_step(directions[u]);
+    for (int s = 0; s < intervals[u]; ++s) {
+      points.push_back(p);
+      p[0] += step[0];
+      p[1] += step[1];
+    }
+  }
+  if (closure) *closure = p;
+  return points;
+}
+
+LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
+  LatticeFill out;
+  int imin = INT_MAX, jmin = INT_MAX, imax = INT_MIN, jmax = INT_MIN;
+  for (const auto& loop : loops) {
+    for (const auto& b : loop) {
+      imin = std::min(imin, b.ij[0]);
+      imax = std::max(imax, b.ij[0]);
+      jmin = std::min(jmin, b.ij[1]);
+      jmax = std::max(jmax, b.ij[1]);
+    }
+  }
+  if (imin == INT_MAX || imax - imin < 1 || jmax - jmin < 1) {
+    out.why = "the lattice boundary encloses no cell";
+    return out;
+  }
+  const int ni = imax - imin + 1, nj = jmax - jmin + 1;
+  std::vector<int> grid(static_cast<size_t>(ni) * static_cast<size_t>(nj), -1);
+  auto gat = [&](int i, int j) -> int& {
+    return grid[static_cast<size_t>(i - imin) * static_cast<size_t>(nj) +
+                static_cast<size_t>(j - jmin)];
+  };
+  auto inside_box = [&](int i, int j) { return i >= imin && i <= imax && j >= jmin && j <= jmax; };
+
+  // Boundary points; rows of vertical boundary edges for the winding number.
+  std::vector<std::vector<std::pair<int, int>>> row_edges(static_cast<size_t>(nj));
+  for (const auto& loop : loops) {
+    const size_t n = loop.size();
+    for (size_t k = 0; k < n; ++k) {
+      const BoundaryPoint& b = loop[k];
+      int& g = gat(b.ij[0], b.ij[1]);
+      if (g >= 0) {
+        if (out.node[static_cast<size_t>(g)] != b.node) {
+          out.why = "boundary nodes " + std::to_string(out.node[static_cast<size_t>(g)]) + " and " +
+                    std::to_string(b.node) + " fall on the same lattice point " + at(b.ij);
+          return out;
+        }
+      } else {
+        g = static_cast<int>(out.ij.size());
+        out.ij.push_back(b.ij);
+        out.node.push_back(b.node);
+        out.uv.push_back(b.uv);
+      }
+      const LatticePoint& q = loop[(k + 1) % n].ij;
+      const int di = q[0] - b.ij[0], dj = q[1] - b.ij[1];
+      if (std::abs(di) + std::abs(dj) != 1) {
+        out.why = "boundary points " + at(b.ij) + " and " + at(q) + " are not lattice neighbours";
+        return out;
+      }
+      if (dj != 0) {
+        const int row = std::min(b.ij[1], q[1]) - jmin;
+        row_edges[static_cast<size_t>(row)].push_back({b.ij[0], dj});
+      }
+    }
+  }
+
+  // Winding number of every cell (i + 1/2, j + 1/2): upward edges to its right count +1.
+  const int ci = ni - 1, cj = nj - 1;
+  std::vector<signed char> cell_in(static_cast<size_t>(ci) * static_cast<size_t>(cj), 0);
+  auto cat = [&](int i, int j) -> signed char& {
+    return cell_in[static_cast<size_t>(i - imin) * static_cast<size_t>(cj) +
+                   static_cast<size_t>(j - jmin)];
+  };
+  for (int j = jmin; j < jmax; ++j) {
+    std::vector<int> wn_at(static_cast<size_t>(ni) + 1, 0);
+    for (const auto& [x, sign] : row_edges[static_cast<size_t>(j - jmin)]) {
+      wn_at[static_cast<size_t>(x - imin)] += sign;
+    }
+    int wn = 0;
+    for (int i = imax - 1; i >= imin; --i) {
+      wn += wn_at[static_cast<size_t>(i + 1 - imin)];
+      if (wn != 0 && wn != 1) {
+        out.why = "the lattice boundary overlaps itself (winding number " + std::to_string(wn) +
+                  " at cell " + at({i, j}) + ")";
+        return out;
+      }
+      cat(i, j) = static_cast<signed char>(wn);
+    }
+  }
+  auto cell_inside = [&](int i, int j) {
+    return i >= imin && i < imax && j >= jmin && j < jmax && cat(i, j) == 1;
+  };
+
+  // Interior points: not on the boundary, the cells around them inside.
+  const size_t boundary_count = out.ij.size();
+  for (int i = imin + 1; i < imax; ++i) {
+    for (int j = jmin + 1; j < jmax; ++j) {
+      if (gat(i, j) >= 0) continue;
+      const int around = cell_inside(i, j) + cell_inside(i - 1, j) + cell_inside(i, j - 1) +
+                         cell_inside(i - 1, j - 1);
+      if (around == 0) continue;
+      if (around != 4) {
+        out.why = "lattice point " + at({i, j}) + " is off the boundary but not inside the region";
+        return out;
+      }
+      gat(i, j) = static_cast<int>(out.ij.size());
+      out.ij.push_back({i, j});
+      out.node.push_back(-1);
+      out.uv.push_back(Vec2::Zero());
+    }
+  }
+
+  // Blend row and column interpolations for every interior point.
+  auto is_interior = [&](int i, int j) {
+    if (!inside_box(i, j)) return false;
+    const int g = gat(i, j);
+    return g >= 0 && static_cast<size_t>(g) >= boundary_count;
+  };
+  for (size_t p = boundary_count; p < out.ij.size(); ++p) {
+    const int i = out.ij[p][0], j = out.ij[p][1];
+    double wsum = 0.0;
+    Vec2 acc = Vec2::Zero();
+    for (int axis = 0; axis < 2; ++axis) {
+      int hit[2] = {0, 0};
+      for (int side = 0; side < 2; ++side) {
+        const int step = side == 0 ? -1 : 1;
+        int a = axis == 0 ? i : j;
+        do {
+          a += step;
+        } while (axis == 0 ? is_interior(a, j) : is_interior(i, a));
+        const int bi = axis == 0 ? a : i, bj = axis == 0 ? j : a;
+        if (!inside_box(bi, bj) || gat(bi, bj) < 0) {
+          out.why =
+              "lattice point " + at({i, j}) + " sees no boundary point towards " + at({bi, bj});
+          return out;
+        }
+        hit[side] = a;
+      }
+      const int self = axis == 0 ? i : j;
+      const Vec2& lo = out.uv[static_cast<size_t>(axis == 0 ? gat(hit[0], j) : gat(i, hit[0]))];
+      const Vec2& hi = out.uv[static_cast<size_t>(axis == 0 ? gat(hit[1], j) : gat(i, hit[1]))];
+      const double s = static_cast<double>(self - hit[0]) / static_cast<double>(hit[1] - hit[0]);
+      const double w = 1.0 / std::min(self - hit[0], hit[1] - self);
+      acc += w * ((1.0 - s) * lo + s * hi);
+      wsum += w;
+    }
+    out.uv[p] = acc / wsum;
+  }
+
+  for (int i = imin; i < imax; ++i) {
+    for (int j = jmin; j < jmax; ++j) {
+      if (!cell_inside(i, j)) continue;
+      const std::array<int, 4> c = {gat(i, j), gat(i + 1, j), gat(i + 1, j + 1), gat(i, j + 1)};
+      for (int v : c) {
+        if (v < 0) {
+          out.why = "cell " + at({i, j}) + " is inside but a corner has no point";
+          return out;
+        }
+      }
+      out.cells.push_back(c);
+    }
+  }
+  out.ok = true;
+  return out;
+}
+
+}  // namespace cooperage::submap

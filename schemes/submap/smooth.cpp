@@ -1,0 +1,74 @@
+#include "schemes/submap/smooth.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <set>
+
+namespace cooperage::submap {
+
+double quad_scaled_jacobian(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& normals) {
+  double q = 1.0;
+  for (size_t k = 0; k < 4; ++k) {
+    const Vec3 a = p[(k + 1) % 4] - p[k];
+    const Vec3 b = p[(k + 3) % 4] - p[k];
+    const double la = a.norm(), lb = b.norm();
+    if (la <= 0.0 || lb <= 0.0) return -1.0;
+    q = std::min(q, a.cross(b).dot(normals[k]) / (la * lb));
+  }
+  return q;
+}
+
+void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::vector<bool>& fixed,
+                  const std::vector<mesh::Quad>& quads, const Projector& project,
+                  const SmoothOptions& options) {
+  const size_t n = x.size();
+  std::vector<std::set<int>> neighbours(n);
+  std::vector<std::vector<int>> incident(n);
+  for (size_t q = 0; q < quads.size(); ++q) {
+    for (size_t k = 0; k < 4; ++k) {
+      const int a = quads[q][k], b = quads[q][(k + 1) % 4];
+      neighbours[static_cast<size_t>(a)].insert(b);
+      neighbours[static_cast<size_t>(b)].insert(a);
+      incident[static_cast<size_t>(a)].push_back(static_cast<int>(q));
+    }
+  }
+  auto quality = [&](int q) {
+    std::array<Vec3, 4> p, nn;
+    for (size_t k = 0; k < 4; ++k) {
+      p[k] = x[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
+      nn[k] = normals[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
+    }
+    return quad_scaled_jacobian(p, nn);
+  };
+  for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+    for (size_t v = 0; v < n; ++v) {
+      if (fixed[v] || neighbours[v].empty()) continue;
+      // Length-weighted Laplacian: long edges pull harder, evening out sizes.
+      Vec3 acc = Vec3::Zero();
+      double wsum = 0.0;
+      for (int u : neighbours[v]) {
+        const double w = (x[static_cast<size_t>(u)] - x[v]).norm();
+        acc += w * x[static_cast<size_t>(u)];
+        wsum += w;
+      }
+      if (wsum <= 0.0) continue;
+      std::vector<double> before;
+      for (int q : incident[v]) before.push_back(quality(q));
+      const Vec3 old_x = x[v], old_n = normals[v];
+      const geom::SurfaceProjection pr = project(acc / wsum);
+      x[v] = pr.point;
+      normals[v] = pr.normal;
+      bool accept = true;
+      for (size_t k = 0; k < incident[v].size() && accept; ++k) {
+        const double after = quality(incident[v][k]);
+        if (after < options.min_quality && after < before[k]) accept = false;
+      }
+      if (!accept) {
+        x[v] = old_x;
+        normals[v] = old_n;
+      }
+    }
+  }
+}
+
+}  // namespace cooperage::submap

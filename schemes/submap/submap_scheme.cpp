@@ -1,0 +1,244 @@
+#include "schemes/submap/submap_scheme.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "framework/core/error.h"
+#include "schemes/submap/directions.h"
+#include "schemes/submap/lattice.h"
+#include "schemes/submap/submap_plan.h"
+#include "schemes/submap/uv_chart.h"
+
+namespace cooperage::submap {
+namespace {
+
+[[noreturn]] void fail(int surface_id, const std::string& message) {
+  throw MeshingError(ErrorCode::MeshingFailed, EntityRef::surface(surface_id), message);
+}
+
+// Boundary nodes of one loop in walk order (each use's chain without its
+// last node), with their lattice points and continuous surface parameters.
+struct LoopNodes {
+  std::vector<BoundaryPoint> points;
+  LatticePoint closure{0, 0};
+};
+
+LoopNodes walk_nodes(const mesh::MeshDB& db, int sid, size_t loop_index, const LoopPlan& lp,
+                     const UvChart& chart) {
+  LoopNodes out;
+  std::vector<int> nodes, counts;
+  int previous_last = -1;
+  for (size_t u = 0; u < lp.uses.size(); ++u) {
+    const int curve = lp.uses[u].curve;
+    if (!db.curve_meshed(curve)) fail(sid, "curve " + std::to_string(curve) + " is not meshed");
+    std::vector<int> chain = db.curve_nodes(curve);
+    if (chain.size() < 2) fail(sid, "curve " + std::to_string(curve) + " has no intervals");
+    if (lp.uses[u].sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
+    if (previous_last >= 0 && chain.front() != previous_last) {
+      fail(sid, "curve " + std::to_string(curve) + " does not continue the node chain of loop " +
+                    std::to_string(loop_index));
+    }
+    previous_last = chain.back();
+    nodes.insert(nodes.end(), chain.begin(), chain.end() - 1);
+    counts.push_back(static_cast<int>(chain.size()) - 1);
+  }
+  if (!nodes.empty() && previous_last != nodes.front()) {
+    fail(sid, "loop " + std::to_string(loop_index) + " does not close in the curve mesh");
+  }
+  const auto ij = walk_loop(lp.directions, counts, {0, 0}, &out.closure);
+  Vec2 prev = Vec2::Zero();
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    const Vec3& x = db.node(nodes[k]);
+    prev = k == 0 ? chart.uv(x) : chart.uv_near(x, prev);
+    out.points.push_back({ij[k], nodes[k], prev});
+  }
+  return out;
+}
+
+// Least-squares affine map from surface parameters to lattice coordinates,
+// fitted on the outer loop; used to place holes.
+Eigen::Matrix<double, 3, 2> fit_uv_to_lattice(const std::vector<BoundaryPoint>& pts) {
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(pts.size()), 3);
+  Eigen::MatrixXd B(static_cast<Eigen::Index>(pts.size()), 2);
+  for (size_t k = 0; k < pts.size(); ++k) {
+    const auto r = static_cast<Eigen::Index>(k);
+    A(r, 0) = pts[k].uv.x();
+    A(r, 1) = pts[k].uv.y();
+    A(r, 2) = 1.0;
+    B(r, 0) = pts[k].ij[0];
+    B(r, 1) = pts[k].ij[1];
+  }
+  return A.colPivHouseholderQr().solve(B);
+}
+
+std::string balance_text(const std::vector<BoundaryPoint>& pts, const LatticePoint& closure) {
+  return "its intervals do not balance (the lattice walk ends " +
+         std::to_string(closure[0] - pts.front().ij[0]) + ", " +
+         std::to_string(closure[1] - pts.front().ij[1]) + " away from its start)";
+}
+
+}  // namespace
+
+scheme::Applicability SurfaceSubmap::applicable(const scheme::SurfaceView& view) const {
+  const SubmapPlan plan = plan_submap(view.model, view.surface_id, pins_, options_.classify);
+  if (!plan.ok) return scheme::Applicability::no(plan.why);
+  return scheme::Applicability::yes(plan.score, plan.why);
+}
+
+void SurfaceSubmap::constrain(const scheme::SurfaceView& view,
+                              intervals::IntervalProblem& problem) const {
+  const SubmapPlan plan = plan_submap(view.model, view.surface_id, pins_, options_.classify);
+  add_submap_constraints(view.surface_id, plan, problem);
+}
+
+scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
+                                       const scheme::MeshParams& /*params*/) const {
+  const int sid = view.surface_id;
+  if (!view.mesh) fail(sid, "submap needs the meshed curves");
+  const mesh::MeshDB& db = *view.mesh;
+  const SubmapPlan plan = plan_submap(view.model, sid, pins_, options_.classify);
+  if (!plan.ok) fail(sid, "not submappable: " + plan.why);
+  const geom::SurfaceGeometry& geometry = *view.surface().geometry;
+  const UvChart chart(geometry);
+
+  // 1. Lattice coordinates of every boundary node by the cumulative walk.
+  std::vector<LoopNodes> loops;
+  for (size_t l = 0; l < plan.loops.size(); ++l) {
+    loops.push_back(walk_nodes(db, sid, l, plan.loops[l], chart));
+    const LoopNodes& ln = loops.back();
+    if (ln.closure != ln.points.front().ij) {
+      fail(sid, (l == 0 ? std::string("outer loop: ") : "hole loop " + std::to_string(l) + ": ") +
+                    balance_text(ln.points, ln.closure));
+    }
+  }
+
+  // 2. Holes: shift their parameters next to the outer loop's (periodic
+  // surfaces), then place them at the integer offset nearest to where the
+  // outer loop's affine uv -> (i, j) fit puts them, among the offsets that
+  // give a valid lattice region.
+  std::vector<std::vector<BoundaryPoint>> placed{loops.front().points};
+  if (loops.size() > 1) {
+    const auto& outer = loops.front().points;
+    Vec2 lo = outer.front().uv, hi = outer.front().uv;
+    LatticePoint bmin = outer.front().ij, bmax = outer.front().ij;
+    for (const auto& b : outer) {
+      lo = lo.cwiseMin(b.uv);
+      hi = hi.cwiseMax(b.uv);
+      for (int a = 0; a < 2; ++a) {
+        bmin[static_cast<size_t>(a)] =
+            std::min(bmin[static_cast<size_t>(a)], b.ij[static_cast<size_t>(a)]);
+        bmax[static_cast<size_t>(a)] =
+            std::max(bmax[static_cast<size_t>(a)], b.ij[static_cast<size_t>(a)]);
+      }
+    }
+    const Eigen::Matrix<double, 3, 2> fit = fit_uv_to_lattice(outer);
+    for (size_t l = 1; l < loops.size(); ++l) {
+      std::vector<BoundaryPoint> hole = loops[l].points;
+      const Vec2 shift = chart.shift_near(hole.front().uv, 0.5 * (lo + hi)) - hole.front().uv;
+      Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
+      LatticePoint hmin = hole.front().ij, hmax = hole.front().ij;
+      for (auto& b : hole) {
+        b.uv += shift;
+        const Eigen::RowVector3d row(b.uv.x(), b.uv.y(), 1.0);
+        const Eigen::RowVector2d ij = row * fit;
+        predicted += Eigen::Vector2d(ij(0) - b.ij[0], ij(1) - b.ij[1]);
+        for (size_t a = 0; a < 2; ++a) {
+          hmin[a] = std::min(hmin[a], b.ij[a]);
+          hmax[a] = std::max(hmax[a], b.ij[a]);
+        }
+      }
+      predicted /= static_cast<double>(hole.size());
+      // Candidate offsets keep the hole strictly inside the outer lattice box.
+      std::vector<std::pair<double, LatticePoint>> candidates;
+      for (int oi = bmin[0] + 1 - hmin[0]; oi <= bmax[0] - 1 - hmax[0]; ++oi) {
+        for (int oj = bmin[1] + 1 - hmin[1]; oj <= bmax[1] - 1 - hmax[1]; ++oj) {
+          const double d = std::hypot(oi - predicted.x(), oj - predicted.y());
+          candidates.push_back({d, {oi, oj}});
+        }
+      }
+      std::sort(candidates.begin(), candidates.end());
+      constexpr size_t kMaxTries = 64;
+      bool done = false;
+      for (size_t c = 0; c < candidates.size() && c < kMaxTries && !done; ++c) {
+        std::vector<BoundaryPoint> moved = hole;
+        for (auto& b : moved) {
+          b.ij[0] += candidates[c].second[0];
+          b.ij[1] += candidates[c].second[1];
+        }
+        placed.push_back(moved);
+        if (fill_lattice(placed).ok) {
+          done = true;
+        } else {
+          placed.pop_back();
+        }
+      }
+      if (!done) {
+        fail(sid, "hole loop " + std::to_string(l) +
+                      " does not fit inside the outer loop's lattice with these intervals");
+      }
+    }
+  }
+
+  // 3. Fill the lattice in surface parameters.
+  const LatticeFill fill = fill_lattice(placed);
+  if (!fill.ok) fail(sid, "the submap lattice is not a valid region: " + fill.why);
+
+  // 4. Nodes: boundary points are the curve nodes (once, even at seams);
+  // interior points go onto the surface.
+  scheme::EntityMesh out;
+  std::vector<Vec3> normals;
+  std::vector<bool> fixed;
+  std::unordered_map<int, int> local_of_global;
+  std::vector<int> local_of_point(fill.ij.size(), -1);
+  for (size_t p = 0; p < fill.ij.size(); ++p) {
+    const int g = fill.node[p];
+    if (g >= 0) {
+      auto it = local_of_global.find(g);
+      if (it != local_of_global.end()) {
+        local_of_point[p] = it->second;
+        continue;
+      }
+      const int local = out.add(db.node(g), g);
+      local_of_global.emplace(g, local);
+      local_of_point[p] = local;
+      normals.push_back(geometry.project(db.node(g)).normal);
+      fixed.push_back(true);
+    } else {
+      const geom::SurfaceProjection pr = geometry.project(geometry.point(fill.uv[p]));
+      local_of_point[p] = out.add(pr.point);
+      normals.push_back(pr.normal);
+      fixed.push_back(false);
+    }
+  }
+  out.quads.reserve(fill.cells.size());
+  for (const auto& c : fill.cells) {
+    out.quads.push_back(
+        {local_of_point[static_cast<size_t>(c[0])], local_of_point[static_cast<size_t>(c[1])],
+         local_of_point[static_cast<size_t>(c[2])], local_of_point[static_cast<size_t>(c[3])]});
+  }
+
+  // 5. Guarded smoothing, then the inversion check: never silent.
+  smooth_quads(
+      out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
+      options_.smooth);
+  for (size_t q = 0; q < out.quads.size(); ++q) {
+    std::array<Vec3, 4> p, n;
+    for (size_t k = 0; k < 4; ++k) {
+      p[k] = out.coords[static_cast<size_t>(out.quads[q][k])];
+      n[k] = normals[static_cast<size_t>(out.quads[q][k])];
+    }
+    if (quad_scaled_jacobian(p, n) <= 0.0) {
+      fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(q) +
+                    "); the interval counts do not fit the face's shape");
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<scheme::SurfaceScheme> make_submap(std::vector<io::VertexTypeSetting> pins) {
+  return std::make_unique<SurfaceSubmap>(std::move(pins));
+}
+
+}  // namespace cooperage::submap
