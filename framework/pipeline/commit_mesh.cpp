@@ -19,7 +19,9 @@ std::vector<int> globalise(const scheme::EntityMesh& local, mesh::NodeOwner owne
       throw MeshingError(ErrorCode::Internal, EntityRef{owner.dim, owner.id},
                          "scheme referenced an unknown node");
     }
-    map[k] = g >= 0 ? g : db.add_node(local.coords[k], owner);
+    const mesh::NodeOwner own =
+        k < local.owners.size() && local.owners[k].dim >= 0 ? local.owners[k] : owner;
+    map[k] = g >= 0 ? g : db.add_node(local.coords[k], own);
   }
   return map;
 }
@@ -56,6 +58,12 @@ void commit_volume(const scheme::EntityMesh& local, int volume_id, mesh::MeshDB&
   mesh::VolumeMeshData& v = db.mutable_volume(volume_id);
   v.hexes = remap(local.hexes, map, EntityRef::volume(volume_id));
   v.wedges = remap(local.wedges, map, EntityRef::volume(volume_id));
+  for (const auto& [sid, quads] : local.surface_quads) {
+    db.mutable_surface(sid).quads = remap(quads, map, EntityRef::surface(sid));
+  }
+  for (const auto& [sid, tris] : local.surface_tris) {
+    db.mutable_surface(sid).tris = remap(tris, map, EntityRef::surface(sid));
+  }
 }
 
 }  // namespace cooperage::pipeline

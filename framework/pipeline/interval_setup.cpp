@@ -85,6 +85,7 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
     }
   }
   for (const auto& [id, entry] : plan.surfaces) {
+    if (entry.scheme == scheme::kMeshedByVolume) continue;  // its volume scheme constrains it
     registry.surface_scheme(entry.scheme)->constrain(scheme::SurfaceView{model, id, nullptr}, problem);
   }
   for (const auto& [id, entry] : plan.volumes) {

@@ -81,7 +81,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   params.size = settings.size.value_or(1.0);
 
   std::vector<int> surfaces;
-  for (const auto& [id, entry] : result.plan.surfaces) surfaces.push_back(id);
+  for (const auto& [id, entry] : result.plan.surfaces) {
+    if (entry.scheme != scheme::kMeshedByVolume) surfaces.push_back(id);
+  }
   report(options, "surfaces", 0, surfaces.size());
   const auto surface_meshes = for_each_entity(surfaces, [&](int id) {
     const scheme::SurfaceScheme* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);

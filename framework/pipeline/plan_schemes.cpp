@@ -82,6 +82,14 @@ SchemePlan plan_schemes(const geom::Model& model, const scheme::Registry& regist
     const scheme::SurfaceView view{model, surface.id, nullptr};
     const io::SurfaceSetting* pin = find_setting(settings.surfaces, surface.id);
     auto planned = plan.surfaces.find(surface.id);
+    if (planned != plan.surfaces.end() && planned->second.scheme == scheme::kMeshedByVolume) {
+      if (pin && pin->scheme != "auto") {
+        throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(surface.id),
+                           "pinned to " + pin->scheme + " at " + pin_place(pin->where) +
+                               " but it is meshed by its volume (" + planned->second.reason + ")");
+      }
+      continue;
+    }
     if (pin && pin->scheme != "auto") {
       const scheme::SurfaceScheme* s = registry.surface_scheme(pin->scheme);
       if (!s) {

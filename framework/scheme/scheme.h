@@ -41,19 +41,35 @@ struct VolumeView {
 
 /// New elements for one entity, in local node numbering. Local node k is the
 /// existing MeshDB node `global[k]` when that is >= 0, or a new node at
-/// `coords[k]` owned by the entity when it is -1.
+/// `coords[k]` when it is -1, owned by `owners[k]` if given, else by the
+/// entity being meshed.
 struct EntityMesh {
   std::vector<int> global;
   std::vector<geom::Vec3> coords;
+  std::vector<mesh::NodeOwner> owners;  ///< empty, or one per local node
   std::vector<mesh::Quad> quads;
   std::vector<mesh::Tri> tris;
   std::vector<mesh::Hex> hexes;
   std::vector<mesh::Wedge> wedges;
+  /// Volume schemes only: the elements of surfaces the volume scheme meshes
+  /// itself (role kMeshedByVolume, e.g. cooper's target caps), oriented with
+  /// each surface's natural normal.
+  std::map<int, std::vector<mesh::Quad>> surface_quads;
+  std::map<int, std::vector<mesh::Tri>> surface_tris;
 
   /// Adds a local node; returns its local index.
   int add(const geom::Vec3& x, int global_node = -1) {
     global.push_back(global_node);
     coords.push_back(x);
+    if (!owners.empty()) owners.push_back({});
+    return static_cast<int>(coords.size()) - 1;
+  }
+  /// Adds a new node with an explicit owner (e.g. a node on a target cap).
+  int add_owned(const geom::Vec3& x, mesh::NodeOwner owner) {
+    if (owners.size() != coords.size()) owners.resize(coords.size());
+    global.push_back(-1);
+    coords.push_back(x);
+    owners.push_back(owner);
     return static_cast<int>(coords.size()) - 1;
   }
 };
@@ -72,6 +88,8 @@ class SurfaceScheme {
 
 /// Which surface scheme a volume scheme needs on each of its surfaces.
 using SurfaceRoles = std::map<int, std::string>;
+/// The role of a surface the volume scheme meshes itself, inside mesh().
+inline constexpr const char* kMeshedByVolume = "(volume)";
 
 class VolumeScheme {
  public:
