@@ -1,0 +1,139 @@
+// `cooperage run`, `cooperage mesh` and `cooperage quality` end to end: the
+// real binary, exit codes, files written or not.
+#include "run_command.h"
+
+#include "framework/geometry/occ/workbench.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+namespace cooperage {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_command;
+
+const std::string kCli = COOPERAGE_CLI;
+const std::string kSource = COOPERAGE_SOURCE_DIR;
+
+class RunCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("cooperage-run-cli-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string journal(const std::string& name, const std::string& body) const {
+    std::ofstream(path(name)) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
+    return path(name);
+  }
+  fs::path dir_;
+};
+
+size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+TEST_F(RunCommand, BracketExampleWritesExodusAndVtuAndPrintsTheTable) {
+  fs::copy_file(kSource + "/examples/bracket.xml", path("bracket.xml"));
+  const auto r = run_command(kCli + " run --quiet " + path("bracket.xml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("volume 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("min SJ"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(path("bracket.exo")));
+  EXPECT_TRUE(fs::exists(path("bracket.vtu")));
+  EXPECT_EQ(r.err, "");  // --quiet
+  // The written file's quality, read back by `cooperage quality`.
+  const auto q = run_command(kCli + " quality " + path("bracket.exo"));
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_NE(q.out.find("576 elements in 3 blocks"), std::string::npos) << q.out;
+}
+
+TEST_F(RunCommand, ProgressGoesToStderrWithoutQuiet) {
+  fs::copy_file(kSource + "/examples/two_bricks.xml", path("two_bricks.xml"));
+  const auto r = run_command(kCli + " run " + path("two_bricks.xml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("volumes"), std::string::npos) << r.err;
+}
+
+TEST_F(RunCommand, FailingQualityCheckExitsOneAndWritesNothing) {
+  const std::string job = journal("bad_quality.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  <mesh size="0.5"/>
+  <quality metric="skew" max="-1" action="fail"/>
+  <export file="out.exo"/>
+)");
+  const auto r = run_command(kCli + " run -q " + job);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("FAILED"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("out.exo")));
+}
+
+TEST_F(RunCommand, UnmeshableVolumeIsOneClearLineAndNoFile) {
+  const std::string job = journal("sphere.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
+  <mesh size="0.2"/>
+  <export file="sphere.exo"/>
+)");
+  const auto r = run_command(kCli + " run -q " + job);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("volume 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no scheme applies"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("sphere.exo")));
+}
+
+TEST_F(RunCommand, UnknownIdInTheJournalNamesTheLine) {
+  const std::string job = journal("bad_id.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  <mesh size="0.5">
+    <curve id="99" intervals="3"/>
+  </mesh>
+)");
+  const auto r = run_command(kCli + " run -q " + job);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad_id.xml:4"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no curve 99"), std::string::npos) << r.err;
+}
+
+TEST_F(RunCommand, MissingJournalIsExitCode2) {
+  const auto r = run_command(kCli + " run " + path("nope.xml"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+}
+
+TEST_F(RunCommand, MeshCommandMeshesAStepFileWithOnlyASize) {
+  occ::Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 1, 1});
+  bench.brick("b", {1, 0, 0}, {1, 1, 1});
+  bench.write(path("pair.step"));
+  const auto r = run_command(kCli + " mesh " + path("pair.step") + " --size 0.25 -q -o " +
+                             path("pair.msh"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("pair.msh")));
+  const auto q = run_command(kCli + " quality " + path("pair.msh"));
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  // .msh carries the surface quads too: 2 x 64 hexes + 11 surfaces x 16 quads.
+  EXPECT_NE(q.out.find("304 elements"), std::string::npos) << q.out;
+}
+
+TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
+  occ::Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 2, 3});
+  bench.write(path("box.step"));
+  const auto r = run_command(kCli + " mesh " + path("box.step") + " --size 0.5 --dim 2 -q -o " +
+                             path("box.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto q = run_command(kCli + " quality " + path("box.vtu"));
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  // 2 (2x4 + 2x6 + 4x6) = 88 quads, no hexes.
+  EXPECT_NE(q.out.find("88 elements"), std::string::npos) << q.out;
+  EXPECT_EQ(q.out.find("hex"), std::string::npos) << q.out;
+}
+
+TEST_F(RunCommand, MeshCommandRejectsANonPositiveSize) {
+  const auto r = run_command(kCli + " mesh x.step --size -1 -o y.exo");
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace cooperage
