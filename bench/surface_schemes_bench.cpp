@@ -1,0 +1,53 @@
+// Surface schemes on the same faces: map vs submap on a rectangle, submap on
+// a comb at three sizes. Reports quads per second (the scheme's mesh() alone;
+// curves are meshed before timing) and peak memory.
+#include "bench_models.h"
+#include "peak_memory.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace cooperage;
+
+void run_surface_scheme(benchmark::State& state, const geom::Model& model, int surface,
+                        const char* scheme_name, double size) {
+  const scheme::SurfaceScheme* s = bench::builtin_registry().surface_scheme(scheme_name);
+  const mesh::MeshDB db = bench::curves_for_surface(model, *s, surface, size);
+  const scheme::SurfaceView view{model, surface, &db};
+  size_t quads = 0;
+  for (auto _ : state) {
+    const scheme::EntityMesh m = s->mesh(view, {size});
+    quads = m.quads.size();
+    benchmark::DoNotOptimize(m.coords.data());
+  }
+  state.counters["quads"] = static_cast<double>(quads);
+  state.counters["quads_per_s"] =
+      benchmark::Counter(static_cast<double>(quads), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
+}
+
+// Rectangle 10 x 10 at size 10/n: n^2 quads.
+void BM_MapRectangle(benchmark::State& state) {
+  static const geom::Model model = bench::rectangle_plate(10, 10);
+  run_surface_scheme(state, model, bench::top_surface(model), "map",
+                     10.0 / static_cast<double>(state.range(0)));
+}
+BENCHMARK(BM_MapRectangle)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void BM_SubmapRectangle(benchmark::State& state) {
+  static const geom::Model model = bench::rectangle_plate(10, 10);
+  run_surface_scheme(state, model, bench::top_surface(model), "submap",
+                     10.0 / static_cast<double>(state.range(0)));
+}
+BENCHMARK(BM_SubmapRectangle)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// A comb with 5 teeth (area 24) at sizes 1/4, 1/16, 1/64 of a unit.
+void BM_SubmapComb(benchmark::State& state) {
+  static const geom::Model model = bench::comb_prism(5);
+  run_surface_scheme(state, model, bench::top_surface(model), "submap",
+                     1.0 / static_cast<double>(state.range(0)));
+}
+BENCHMARK(BM_SubmapComb)->Arg(4)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
+
+}  // namespace
