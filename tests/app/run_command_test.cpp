@@ -51,6 +51,32 @@ TEST_F(RunCommand, BracketExampleWritesExodusAndVtuAndPrintsTheTable) {
   EXPECT_NE(q.out.find("576 elements in 3 blocks"), std::string::npos) << q.out;
 }
 
+std::string file_bytes(const std::string& path) { return testing::slurp(path); }
+
+TEST_F(RunCommand, OutputIsByteIdenticalForOneAndManyThreads) {
+  const std::string body = R"(  <geometry>
+    <brick name="corner" origin="0 0 0" size="2 2 0.5"/>
+    <brick name="arm_x" origin="2 0 0" size="4 2 0.5"/>
+    <brick name="arm_y" origin="0 2 0" size="2 3 0.5"/>
+  </geometry>
+  <mesh size="0.2"/>
+)";
+  for (const char* threads : {"1", "2", "4"}) {
+    const std::string job = journal(std::string("t") + threads + ".xml",
+                                    body + "  <export file=\"t" + threads + ".exo\"/>\n" +
+                                        "  <export file=\"t" + threads + ".msh\"/>\n" +
+                                        "  <export file=\"t" + threads + ".vtu\"/>\n");
+    const auto r = run_command(kCli + " run -q --threads " + threads + " " + job);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  for (const char* ext : {".exo", ".msh", ".vtu"}) {
+    const std::string one = file_bytes(path(std::string("t1") + ext));
+    ASSERT_FALSE(one.empty()) << ext;
+    EXPECT_EQ(one, file_bytes(path(std::string("t2") + ext))) << ext;
+    EXPECT_EQ(one, file_bytes(path(std::string("t4") + ext))) << ext;
+  }
+}
+
 TEST_F(RunCommand, ProgressGoesToStderrWithoutQuiet) {
   fs::copy_file(kSource + "/examples/two_bricks.xml", path("two_bricks.xml"));
   const auto r = run_command(kCli + " run " + path("two_bricks.xml"));
