@@ -158,7 +158,9 @@ inline void expect_valid_surface_mesh(const geom::Model& model, int surface_id,
   for (const auto& [e, count] : edge_use) {
     EXPECT_LE(count, 2);
     if (count == 1) once.insert(e);
-    if (seam_edges.count(e)) EXPECT_EQ(count, 2) << "seam edge";
+    if (seam_edges.count(e)) {
+      EXPECT_EQ(count, 2) << "seam edge";
+    }
   }
   EXPECT_EQ(once, curve_edges);
   for (const auto& x : m.coords) {
