@@ -13,6 +13,7 @@
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
 
 #include <CLI/CLI.hpp>
 
@@ -40,11 +41,10 @@ int run_info(const std::string& file, bool json, bool no_imprint) {
 
 int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
   scheme::Registry registry;
-  BuiltinOptions builtin;
-  if (job.mesh) builtin.vertex_types = job.mesh->vertex_types;
-  register_builtin_schemes(registry, builtin);
+  register_builtin_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{});
   app::Progress progress(!quiet);
   pipeline::MeshOptions options;
+  options.planner = selector::planner();
   options.dim = dim;
   options.threads = threads;
   options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {

@@ -58,9 +58,9 @@ mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceS
 }
 
 const scheme::Registry& builtin_registry() {
-  static const scheme::Registry registry = [] {
-    scheme::Registry r;
-    register_builtin_schemes(r);
+  static const scheme::Registry& registry = *[] {
+    auto* r = new scheme::Registry;  // lives for the whole run
+    register_builtin_schemes(*r);
     return r;
   }();
   return registry;

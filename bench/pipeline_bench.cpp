@@ -6,6 +6,7 @@
 
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
+#include "selector/select_schemes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -20,8 +21,7 @@ void BM_VolumeMapBrick(benchmark::State& state) {
   const geom::Model model = bench.build_model();
   io::MeshSettings settings;
   settings.size = 1.0 / static_cast<double>(state.range(0));
-  pipeline::MeshOptions options;
-  options.threads = 1;
+  const pipeline::MeshOptions options = selector::mesh_options(3, 1);
   size_t hexes = 0;
   for (auto _ : state) {
     const auto r = pipeline::mesh_model(model, settings, bench::builtin_registry(), options);

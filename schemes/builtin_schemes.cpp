@@ -1,15 +1,27 @@
 #include "schemes/builtin_schemes.h"
 
+#include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
 #include "schemes/submap/submap_scheme.h"
 
 namespace cooperage {
 
+BuiltinOptions builtin_options(const io::MeshSettings& settings) {
+  return {settings.vertex_types, settings.volumes};
+}
+
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options) {
   registry.add(map::make_surface_map());
   registry.add(submap::make_submap(options.vertex_types));
   registry.add(map::make_volume_map());
+  cooper::CooperOptions cooper_options;
+  for (const io::VolumeSetting& v : options.volumes) {
+    if (!v.sources.empty() || !v.targets.empty() || v.direction) {
+      cooper_options.hints[v.id] = {v.sources, v.targets, v.direction};
+    }
+  }
+  registry.add(cooper::make_cooper(registry, std::move(cooper_options)));
 }
 
 }  // namespace cooperage

@@ -12,9 +12,16 @@ namespace cooperage {
 struct BuiltinOptions {
   /// Hard vertex classifications for submap (journal <vertex_type>).
   std::vector<io::VertexTypeSetting> vertex_types;
+  /// Volume settings: cooper takes their sweep hints (sources, targets, direction).
+  std::vector<io::VolumeSetting> volumes;
 };
 
-/// Surface schemes, most preferred first: map, submap. Volume schemes: map.
+/// The options a journal's mesh settings give.
+BuiltinOptions builtin_options(const io::MeshSettings& settings);
+
+/// Surface schemes, most preferred first: map, submap. Volume schemes: map,
+/// then cooper (which asks the registry for submap/map/pave by name, so the
+/// registry must outlive it).
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options = {});
 
 }  // namespace cooperage

@@ -41,11 +41,6 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
                          at(v.where) + "elements=\"wedge\"/\"mixed\" needs the tri scheme and "
                                        "the cooper sweep, which are not in this release");
     }
-    if (!v.sources.empty() || !v.targets.empty() || v.direction) {
-      throw MeshingError(ErrorCode::NotSupported,
-                         at(v.where) + "sweep hints need the cooper scheme, which is not in "
-                                       "this release");
-    }
   }
   for (const auto& p : settings.vertex_types) {
     check_id(p.where, "surface", p.surface, model.surfaces().size());

@@ -9,7 +9,7 @@ namespace cooperage::pipeline {
 
 /// Throws MeshingError naming the journal line: InvalidInput for an id the
 /// model does not have, NotSupported for settings a later release carries out
-/// (wedge/mixed elements, sweep hints without a sweeping scheme).
+/// (wedge/mixed elements).
 void check_settings(const geom::Model& model, const io::MeshSettings& settings);
 
 }  // namespace cooperage::pipeline

@@ -8,7 +8,6 @@
 #include "framework/pipeline/commit_mesh.h"
 #include "framework/pipeline/interval_setup.h"
 #include "framework/pipeline/mesh_curves.h"
-#include "framework/pipeline/plan_schemes.h"
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -70,7 +69,11 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   check_settings(model, settings);
   MeshResult result;
   report(options, "plan", 0, 1);
-  result.plan = plan_schemes(model, registry, settings, options.dim);
+  if (!options.planner) {
+    throw MeshingError(ErrorCode::Internal,
+                       "MeshOptions::planner is not set (use selector::planner())");
+  }
+  result.plan = options.planner(model, registry, settings, options.dim);
   report(options, "intervals", 0, 1);
   result.intervals =
       intervals::solve(build_interval_problem(model, registry, result.plan, settings));

@@ -17,7 +17,14 @@
 
 namespace cooperage::pipeline {
 
+/// The planning stage: a scheme for every volume (dim 3) and surface. The
+/// selector provides it (selector::planner(), selector/select_schemes.h);
+/// the pipeline does not depend on the selector, so it is passed in.
+using Planner = std::function<SchemePlan(const geom::Model&, const scheme::Registry&,
+                                         const io::MeshSettings&, int dim)>;
+
 struct MeshOptions {
+  Planner planner;  ///< required: selector::planner()
   int dim = 3;      ///< 3: volumes (and their surfaces); 2: surfaces only
   int threads = 0;  ///< 0: all cores; the result does not depend on it
   /// Called as work advances: stage name, items done, items in the stage.

@@ -13,6 +13,12 @@ namespace cooperage::scheme {
 
 class Registry {
  public:
+  Registry() = default;
+  // Schemes keep pointers to their registry (cooper asks it for submap and
+  // pave), so a registry stays where it was built.
+  Registry(const Registry&) = delete;
+  Registry& operator=(const Registry&) = delete;
+
   /// Adds a scheme; throws MeshingError(InvalidInput) if the name is taken.
   void add(std::unique_ptr<SurfaceScheme> scheme);
   void add(std::unique_ptr<VolumeScheme> scheme);

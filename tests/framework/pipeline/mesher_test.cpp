@@ -7,6 +7,7 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
 
 #include <gtest/gtest.h>
 
@@ -24,11 +25,16 @@ using testing::hex_points;
 using testing::hex_scaled_jacobian;
 using testing::hex_volume;
 
-scheme::Registry builtin() {
-  scheme::Registry r;
-  register_builtin_schemes(r);
+const scheme::Registry& builtin() {
+  static const scheme::Registry& r = *[] {
+    auto* registry = new scheme::Registry;  // lives for the whole test run
+    register_builtin_schemes(*registry);
+    return registry;
+  }();
   return r;
 }
+
+const MeshOptions kOptions = selector::mesh_options();
 
 io::MeshSettings sized(double size) {
   io::MeshSettings s;
@@ -72,7 +78,7 @@ TEST(Mesher, Brick2x3x4AtHalfGivesExactCountsVolumeAndConformity) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {2, 3, 4});
   const geom::Model model = bench.build_model();
-  const MeshResult r = mesh_model(model, sized(0.5), builtin());
+  const MeshResult r = mesh_model(model, sized(0.5), builtin(), kOptions);
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "map");
   EXPECT_EQ(r.mesh.hex_count(), 4u * 6u * 8u);
   EXPECT_NEAR(total_hex_volume(r.mesh), 24.0, 1e-9);
@@ -91,7 +97,7 @@ TEST(Mesher, QuarterAnnulusExtrudedMeshesByVolumeMapWithGoodQuality) {
   bench.revolve("q", {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}}, {0, 0, 0}, {0, 0, 1}, 90);
   const geom::Model model = bench.build_model();
   ASSERT_EQ(model.surfaces().size(), 6u);
-  const MeshResult r = mesh_model(model, sized(0.2), builtin());
+  const MeshResult r = mesh_model(model, sized(0.2), builtin(), kOptions);
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "map");
   double min_sj = 1;
   for (const auto& h : r.mesh.volume(1).hexes) {
@@ -117,7 +123,7 @@ TEST(Mesher, TwoMergedBricksShareTheNodesOfTheirCommonFace) {
   bench.brick("b", {1, 0, 0}, {1, 1, 1});
   const geom::Model model = bench.build_model();
   ASSERT_EQ(model.volumes().size(), 2u);
-  const MeshResult r = mesh_model(model, sized(0.25), builtin());
+  const MeshResult r = mesh_model(model, sized(0.25), builtin(), kOptions);
   EXPECT_EQ(r.mesh.hex_count(), 2u * 64u);
   EXPECT_EQ(r.mesh.node_count(), 9u * 5u * 5u);
   EXPECT_EQ(duplicate_node_pairs(r.mesh, 1e-9), 0);
@@ -142,8 +148,8 @@ TEST(Mesher, RigidTransformGivesTheTransformedMesh) {
     return bench.build_model();
   };
   const geom::Model m0 = build(false), m1 = build(true);
-  const MeshResult r0 = mesh_model(m0, sized(0.25), builtin());
-  const MeshResult r1 = mesh_model(m1, sized(0.25), builtin());
+  const MeshResult r0 = mesh_model(m0, sized(0.25), builtin(), kOptions);
+  const MeshResult r1 = mesh_model(m1, sized(0.25), builtin(), kOptions);
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);  // same connectivity
@@ -161,7 +167,7 @@ TEST(Mesher, SphereHasNoApplicableSchemeAndSaysWhy) {
   bench.sphere("s", {0, 0, 0}, 1);
   const geom::Model model = bench.build_model();
   try {
-    mesh_model(model, sized(0.2), builtin());
+    mesh_model(model, sized(0.2), builtin(), kOptions);
     FAIL() << "a sphere was meshed";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
@@ -176,9 +182,8 @@ TEST(Mesher, SameInputSameMeshForAnyThreadCount) {
   bench.brick("b", {1, 0, 0}, {1, 1, 1});
   bench.brick("c", {0, 1, 0}, {1, 1, 1});
   const geom::Model model = bench.build_model();
-  MeshOptions one, many;
-  one.threads = 1;
-  many.threads = 4;
+  MeshOptions one = selector::mesh_options(3, 1);
+  MeshOptions many = selector::mesh_options(3, 4);
   const MeshResult a = mesh_model(model, sized(0.2), builtin(), one);
   const MeshResult b = mesh_model(model, sized(0.2), builtin(), many);
   ASSERT_EQ(a.mesh.node_count(), b.mesh.node_count());

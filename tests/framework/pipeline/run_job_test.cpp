@@ -4,6 +4,7 @@
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
 
 #include <exodusII.h>
 #include <gtest/gtest.h>
@@ -45,7 +46,7 @@ const char* kTwoBricks = R"(  <geometry>
 
 TEST_F(RunJob, TwoMergedBricksExodusHasTwoBlocksAndOneSideSetPerSurface) {
   io::Job job = journal(std::string(kTwoBricks) + "  <export file=\"out.exo\"/>\n");
-  const RunResult r = run_job(job, registry_);
+  const RunResult r = run_job(job, registry_, selector::mesh_options());
   ASSERT_EQ(r.written.size(), 1u);
   const std::string file = (dir_ / "out.exo").string();
   ASSERT_TRUE(fs::exists(file));
@@ -76,7 +77,7 @@ TEST_F(RunJob, FailingQualityCheckSkipsExports) {
   io::Job job = journal(std::string(kTwoBricks) +
                         "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"fail\"/>\n"
                         "  <export file=\"out.vtu\"/>\n");
-  const RunResult r = run_job(job, registry_);
+  const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_TRUE(r.quality.failed());
   EXPECT_TRUE(r.exports_skipped);
   EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
@@ -86,7 +87,7 @@ TEST_F(RunJob, WarningCheckCountsButWrites) {
   io::Job job = journal(std::string(kTwoBricks) +
                         "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"warn\"/>\n"
                         "  <export file=\"out.vtu\"/>\n");
-  const RunResult r = run_job(job, registry_);
+  const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_FALSE(r.quality.failed());
   ASSERT_EQ(r.quality.checks.size(), 1u);
   EXPECT_EQ(r.quality.checks[0].violations, 128u);
@@ -104,7 +105,7 @@ TEST_F(RunJob, ConflictingHardIntervalsAreReportedWithTheirCurves) {
   <export file="never.exo"/>
 )");
   try {
-    run_job(job, registry_);
+    run_job(job, registry_, selector::mesh_options());
     FAIL() << "infeasible intervals were accepted";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::Infeasible) << e.what();
@@ -115,7 +116,7 @@ TEST_F(RunJob, ConflictingHardIntervalsAreReportedWithTheirCurves) {
 
 TEST_F(RunJob, JournalWithoutMeshIsAnError) {
   io::Job job = journal("  <geometry><brick name=\"a\" origin=\"0 0 0\" size=\"1 1 1\"/></geometry>\n");
-  EXPECT_THROW(run_job(job, registry_), MeshingError);
+  EXPECT_THROW(run_job(job, registry_, selector::mesh_options()), MeshingError);
 }
 
 }  // namespace

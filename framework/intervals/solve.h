@@ -1,0 +1,73 @@
+// Global interval assignment: the integer program of an IntervalProblem,
+// split into independent components, each solved by COIN-OR CBC.
+//
+// Formulation (one mixed-integer program per connected component; curves are
+// connected when a constraint names both; ALGORITHMS.md sec. 2, Mitchell 1997,
+// 2013):
+//
+//   variables   x_c integer, min_c <= x_c <= max_c   (Hard: x_c = fixed_c)
+//               t_c >= 0 continuous, the cost of curve c (non-hard curves)
+//               m_e integer, free, one per Even constraint
+//   minimise    sum_c  w_c * t_c    w = 1 (Default), soft_weight (Soft)
+//   subject to  sum a_i x_i  <=|=|>=  b            (Linear: map, submap, ...)
+//               sum x_i - 2 m_e = 0                 (Even: pave loops)
+//               t_c >= s_k x_c + q_k  for every segment k of the cost
+//
+// The cost of curve c is h(x) = f + f^3 with Mitchell's relative deviation
+// f(x) = (x - g)/g above the goal g and (g - x)/x below it (deviation.h).
+// h is convex, so the maximum of its secants between consecutive integer
+// breakpoints (every integer within 4 of g, then 6, 8, 12, 16, ... away) is a
+// convex piecewise-linear function equal to h at the breakpoints; at the
+// optimum t_c equals it, so near the goal the integer optimum minimises
+// sum w h exactly. The cubic term makes large deviations cost more than
+// several small ones (Mitchell's min sum f^3, close to lexicographic max-min).
+// A non-hard curve with a `fixed` count aims at that count instead of g.
+//
+// A curve named by no constraint takes the better of floor/ceil of its goal
+// under h (this is round(goal) except in a sliver just below k + 1/2),
+// clamped to its bounds; a hard one takes its fixed count.
+//
+// Determinism: constraints are put into a canonical form (terms merged and
+// sorted by curve id, first coefficient positive) and sorted before the model
+// is built, CBC runs single-threaded with fixed seeds, and components are
+// solved independently in ascending order of their smallest curve id, so the
+// answer does not depend on the order in which curves or constraints were
+// added.
+//
+// Infeasibility: the component's constraints and bound items (hard counts,
+// minima > 1, maxima) are reduced by a deletion filter to an irreducible
+// infeasible subset when there are fewer than `iis_item_limit` items; the
+// error names those items and the curves they involve.
+#pragma once
+
+#include <map>
+
+#include "framework/intervals/interval_problem.h"
+
+namespace cooperage::intervals {
+
+struct SolveOptions {
+  double soft_weight = 10.0;     ///< objective weight of Soft curves (Default = 1)
+  double objective_scale = 100;  ///< multiplies the costs for CBC's tolerances
+  double max_seconds = 60.0;     ///< CBC time limit per component [s]
+  int iis_item_limit = 50;       ///< narrow infeasible components below this many items
+  double iis_check_seconds = 2;  ///< CBC time limit per narrowing check [s]; unproven keeps the item
+  int random_seed = 12345;       ///< CBC/CLP seed (fixed: deterministic)
+};
+
+struct IntervalSolution {
+  std::map<int, int> intervals;     ///< curve id -> interval count
+  std::map<int, double> deviation;  ///< curve id -> relative deviation f from its target
+  double objective = 0.0;           ///< sum of w_c * h_c(x_c) over all curves (unscaled)
+};
+
+/// Assigns an interval count to every curve of the problem.
+/// \param[in] problem curves with goals and the schemes' constraints
+/// \param[in] options weights and solver limits
+/// \return counts satisfying every constraint, minimising the cost above
+/// \throws MeshingError(InvalidInput) for a constraint naming an unknown curve;
+///         MeshingError(Infeasible) naming the curves and constraints of an
+///         infeasible component (the first one, by smallest curve id).
+IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& options = {});
+
+}  // namespace cooperage::intervals

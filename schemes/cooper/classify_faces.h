@@ -1,0 +1,60 @@
+// Volume classification (Blacker 1996, sec. 3): sort the faces of a volume
+// into side faces (jointly submappable, linking the caps) and caps, with the
+// end caps' dihedral angles below pi. Part I accepts one barrel: exactly two
+// caps, the source and the target, every other face a side linking them.
+// A priori: never meshes (asks the registry's surface schemes applicable()).
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/scheme/registry.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cooperage::cooper {
+
+/// The journal's optional sweep hints for one volume.
+struct SweepHints {
+  std::vector<int> sources;              ///< source surface ids (part I: at most one)
+  std::vector<int> targets;              ///< target surface ids (part I: at most one)
+  std::optional<geom::Vec3> direction;   ///< rough sweep direction (source to target)
+};
+
+/// A side face of the barrel and how its loop splits.
+struct SideFace {
+  int surface = 0;
+  std::vector<int> source_curves;  ///< its curves on the source cap boundary
+  std::vector<int> target_curves;  ///< its curves on the target cap boundary
+  /// Linking (sweep-direction) curves, as maximal chains between the caps,
+  /// each in loop order.
+  std::vector<std::vector<int>> linking_chains;
+};
+
+struct Classification {
+  bool ok = false;
+  std::string why;           ///< a sentence naming the volume, faces and rule
+  double score = 0.0;        ///< in [0, 1]
+  int source = 0;            ///< source cap surface
+  int target = 0;            ///< target cap surface
+  std::string source_scheme; ///< "map", "submap" or "pave"
+  std::vector<SideFace> sides;  ///< ascending surface id
+};
+
+/// Upper bound of an end cap's dihedral angle with its sides [degrees]; the
+/// paper's bound is pi, a small margin keeps tangent (180) joints out.
+inline constexpr double kMaxCapDihedral = 175.0;
+
+/// Classifies the faces of a volume for a one-barrel sweep.
+/// \param[in] model      the model
+/// \param[in] volume_id  the volume
+/// \param[in] registry   supplies "submap" (sides) and "map"/"submap"/"pave" (source cap)
+/// \param[in] hints      optional source/target/direction; obeyed or rejected with a reason
+/// The choice is deterministic and independent of the order of the faces:
+/// candidate cap pairs are ranked by (direction hint,) loops, curves, area,
+/// ids; the source is the cap with more loops, then curves, then area, then
+/// the lower id, unless only the other one has a surface scheme.
+Classification classify_faces(const geom::Model& model, int volume_id,
+                              const scheme::Registry& registry, const SweepHints& hints = {});
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,276 @@
+#include "schemes/cooper/cooper_scheme.h"
+
+#include "framework/core/error.h"
+#include "schemes/cooper/form_barrels.h"
+#include "schemes/cooper/sweep_barrel.h"
+
+#include <algorithm>
+#include <set>
+#include <unordered_map>
+
+namespace cooperage::cooper {
+namespace {
+
+std::string volume_name(int id) { return "volume " + std::to_string(id); }
+
+[[noreturn]] void fail(int volume_id, const std::string& message) {
+  throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
+}
+
+// Boundary node loops of a surface from its meshed curves, in loop order
+// (face on the left seen against the natural normal), first node not repeated.
+std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
+                                         int volume_id, int surface_id) {
+  std::vector<std::vector<int>> loops;
+  for (const auto& loop : model.surface(surface_id).loops) {
+    std::vector<int> nodes;
+    for (const auto& use : loop.uses) {
+      if (!db.curve_meshed(use.curve)) {
+        fail(volume_id, "curve " + std::to_string(use.curve) + " of surface " +
+                            std::to_string(surface_id) + " is not meshed");
+      }
+      std::vector<int> chain = db.curve_nodes(use.curve);
+      if (use.sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
+      if (!nodes.empty() && chain.front() != nodes.back()) {
+        fail(volume_id, "the loop of surface " + std::to_string(surface_id) +
+                            " is not closed at curve " + std::to_string(use.curve));
+      }
+      if (!nodes.empty()) nodes.pop_back();
+      nodes.insert(nodes.end(), chain.begin(), chain.end());
+    }
+    if (nodes.size() > 1 && nodes.front() == nodes.back()) nodes.pop_back();
+    loops.push_back(std::move(nodes));
+  }
+  return loops;
+}
+
+const mesh::SurfaceMeshData& meshed(const mesh::MeshDB& db, int volume_id, int surface_id,
+                                    const char* what) {
+  if (!db.surface_meshed(surface_id)) {
+    fail(volume_id, std::string(what) + " surface " + std::to_string(surface_id) + " is not meshed");
+  }
+  return db.surface(surface_id);
+}
+
+}  // namespace
+
+Classification CooperScheme::classify(const scheme::VolumeView& view) const {
+  const auto it = options_.hints.find(view.volume_id);
+  static const SweepHints none;
+  return classify_faces(view.model, view.volume_id, *registry_,
+                        it == options_.hints.end() ? none : it->second);
+}
+
+scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) const {
+  const Classification c = classify(view);
+  if (!c.ok) return scheme::Applicability::no(c.why);
+  return scheme::Applicability::yes(c.score, c.why);
+}
+
+void CooperScheme::constrain(const scheme::VolumeView& view,
+                             intervals::IntervalProblem& problem) const {
+  const Classification c = classify(view);
+  if (!c.ok) return;
+  const std::string tag = volume_name(view.volume_id) + " (cooper)";
+  // The target boundary is linked to the source's through every side face.
+  for (const SideFace& side : c.sides) {
+    problem.add_equal(side.source_curves, side.target_curves,
+                      tag + ": side surface " + std::to_string(side.surface) +
+                          " source boundary = target boundary");
+  }
+  // Every linking path from source to target has the same count (the layers).
+  std::set<std::vector<int>> seen;
+  std::vector<int> first;
+  for (const SideFace& side : c.sides) {
+    for (const auto& chain : side.linking_chains) {
+      std::vector<int> key = chain;
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) continue;
+      if (first.empty()) {
+        first = chain;
+        continue;
+      }
+      problem.add_equal(first, chain, tag + ": linking path of side surface " +
+                                          std::to_string(side.surface) + " = layers");
+    }
+  }
+}
+
+scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
+  const Classification c = classify(view);
+  scheme::SurfaceRoles roles;
+  if (!c.ok) return roles;
+  for (const SideFace& side : c.sides) roles[side.surface] = "submap";
+  roles[c.source] = c.source_scheme;
+  roles[c.target] = scheme::kMeshedByVolume;
+  return roles;
+}
+
+void CooperScheme::set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
+                             std::optional<geom::Vec3> direction) {
+  if (sources.empty() && targets.empty() && !direction) {
+    options_.hints.erase(volume_id);
+    return;
+  }
+  options_.hints[volume_id] = SweepHints{std::move(sources), std::move(targets), direction};
+}
+
+// cite: Blacker 1996, sec. 4 (barrel formation) and sec. 6 (meshing barrels),
+// the one-barrel case.
+scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
+                                      const scheme::MeshParams& /*params*/) const {
+  const int vid = view.volume_id;
+  const geom::Model& model = view.model;
+  if (!view.mesh) fail(vid, "cooper needs the meshed side and source surfaces");
+  const mesh::MeshDB& db = *view.mesh;
+  const Classification c = classify(view);
+  if (!c.ok) throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid), c.why);
+
+  // Barrel formation (sec. 4) from the source cap down the side meshes.
+  BarrelInput barrel_in;
+  std::string side_list;
+  for (const SideFace& side : c.sides) {
+    const mesh::SurfaceMeshData& s = meshed(db, vid, side.surface, "side");
+    if (!s.tris.empty()) {
+      fail(vid, "side surface " + std::to_string(side.surface) + " has triangles; ribs need quads");
+    }
+    barrel_in.side_quads.insert(barrel_in.side_quads.end(), s.quads.begin(), s.quads.end());
+    side_list += (side_list.empty() ? "" : ", ") + std::to_string(side.surface);
+  }
+  barrel_in.upper_loops = loop_nodes(model, db, vid, c.source);
+  std::vector<std::vector<int>> target_loops = loop_nodes(model, db, vid, c.target);
+  for (const auto& loop : target_loops) {
+    barrel_in.stop_nodes.insert(barrel_in.stop_nodes.end(), loop.begin(), loop.end());
+  }
+  const Barrel barrel = form_barrels(barrel_in);
+  if (!barrel.ok) {
+    fail(vid, "barrel formation from source surface " + std::to_string(c.source) +
+                  " along side surfaces " + side_list + " failed: " + barrel.why);
+  }
+  std::vector<int> ends;
+  for (const auto& rib : barrel.ribs) ends.push_back(rib.back());
+  std::vector<int> stops = barrel_in.stop_nodes;
+  std::sort(ends.begin(), ends.end());
+  std::sort(stops.begin(), stops.end());
+  if (!barrel.all_ribs_on_stop_nodes || ends != stops) {
+    fail(vid, "the lower cap of the barrel from source surface " + std::to_string(c.source) +
+                  " (ribs along side surfaces " + side_list +
+                  ") does not match target surface " + std::to_string(c.target) +
+                  "'s boundary; the barrel ends on several caps (many-to-one, cooper part II)");
+  }
+
+  // Local cap nodes: rib starts in rib order, then interior source nodes.
+  const mesh::SurfaceMeshData& cap = meshed(db, vid, c.source, "source");
+  SweepInput in;
+  in.layers = barrel.layers;
+  in.boundary = static_cast<int>(barrel.ribs.size());
+  std::unordered_map<int, int> local;
+  local.reserve(cap.quads.size() + cap.tris.size() + barrel.ribs.size());
+  std::vector<int> cap_global;
+  for (const auto& loop : barrel_in.upper_loops) {
+    in.loop_starts.push_back(cap_global.size());
+    for (int g : loop) {
+      local.emplace(g, static_cast<int>(cap_global.size()));
+      cap_global.push_back(g);
+    }
+  }
+  auto local_of = [&](int g) {
+    auto [it, added] = local.emplace(g, static_cast<int>(cap_global.size()));
+    if (added) cap_global.push_back(g);
+    return it->second;
+  };
+  // Source elements are oriented with the natural normal; the sweep wants
+  // them counter-clockwise about the direction into the volume.
+  const bool outward = model.sense_in(c.source, vid) == geom::Sense::Forward;
+  for (const auto& q : cap.quads) {
+    mesh::Quad l{local_of(q[0]), local_of(q[1]), local_of(q[2]), local_of(q[3])};
+    if (outward) std::swap(l[1], l[3]);
+    in.quads.push_back(l);
+  }
+  for (const auto& t : cap.tris) {
+    mesh::Tri l{local_of(t[0]), local_of(t[1]), local_of(t[2])};
+    if (outward) std::swap(l[1], l[2]);
+    in.tris.push_back(l);
+  }
+  in.cap_nodes = static_cast<int>(cap_global.size());
+  in.source.reserve(cap_global.size());
+  for (int g : cap_global) in.source.push_back(db.node(g));
+  const size_t J1 = static_cast<size_t>(in.layers) + 1;
+  in.ribs.reserve(barrel.ribs.size() * J1);
+  for (const auto& rib : barrel.ribs) {
+    for (int g : rib) in.ribs.push_back(db.node(g));
+  }
+  const auto target_geometry = model.surface(c.target).geometry;
+  in.project_target = [target_geometry](const Vec3& p) { return target_geometry->project(p).point; };
+
+  const SweepResult sweep = sweep_barrel(in);
+  if (!sweep.ok) {
+    fail(vid, "sweep from surface " + std::to_string(c.source) + " to surface " +
+                  std::to_string(c.target) + ": " + sweep.why);
+  }
+
+  // Entity mesh: rib nodes and source nodes exist; target cap interior nodes
+  // belong to the target surface; interior layer nodes to the volume.
+  scheme::EntityMesh out;
+  const size_t n = static_cast<size_t>(in.cap_nodes);
+  const size_t B = static_cast<size_t>(in.boundary);
+  const size_t J = static_cast<size_t>(in.layers);
+  std::vector<int> node(sweep.points.size());
+  out.global.reserve(sweep.points.size());
+  out.coords.reserve(sweep.points.size());
+  for (size_t j = 0; j <= J; ++j) {
+    for (size_t i = 0; i < n; ++i) {
+      const size_t p = j * n + i;
+      if (i < B) {
+        node[p] = out.add(sweep.points[p], barrel.ribs[i][j]);
+      } else if (j == 0) {
+        node[p] = out.add(sweep.points[p], cap_global[i]);
+      } else if (j == J) {
+        node[p] = out.add_owned(sweep.points[p], {2, c.target});
+      } else {
+        node[p] = out.add(sweep.points[p]);
+      }
+    }
+  }
+  out.hexes.reserve(sweep.hexes.size());
+  for (const auto& h : sweep.hexes) {
+    mesh::Hex e;
+    for (size_t k = 0; k < 8; ++k) e[k] = node[static_cast<size_t>(h[k])];
+    out.hexes.push_back(e);
+  }
+  out.wedges.reserve(sweep.wedges.size());
+  for (const auto& w : sweep.wedges) {
+    mesh::Wedge e;
+    for (size_t k = 0; k < 6; ++k) e[k] = node[static_cast<size_t>(w[k])];
+    out.wedges.push_back(e);
+  }
+  // Target cap: the hexes' top faces are counter-clockwise about the outward
+  // normal there; store them with the target's natural normal.
+  const bool target_outward = model.sense_in(c.target, vid) == geom::Sense::Forward;
+  const size_t top = J * n;
+  auto& tq = out.surface_quads[c.target];
+  tq.reserve(in.quads.size());
+  for (const auto& q : in.quads) {
+    mesh::Quad f;
+    for (size_t k = 0; k < 4; ++k) f[k] = node[top + static_cast<size_t>(q[k])];
+    if (!target_outward) std::swap(f[1], f[3]);
+    tq.push_back(f);
+  }
+  if (!in.tris.empty()) {
+    auto& tt = out.surface_tris[c.target];
+    for (const auto& t : in.tris) {
+      mesh::Tri f;
+      for (size_t k = 0; k < 3; ++k) f[k] = node[top + static_cast<size_t>(t[k])];
+      if (!target_outward) std::swap(f[1], f[2]);
+      tt.push_back(f);
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry,
+                                                  CooperOptions options) {
+  return std::make_unique<CooperScheme>(registry, std::move(options));
+}
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,63 @@
+// The volume scheme "cooper" (Blacker 1996), part I: every single-barrel
+// volume (the one-to-one sweep, any number of holes) meshes automatically
+// from an element size. Sides are submapped, the source cap is meshed by
+// map / submap / pave, the target cap is meshed here (kMeshedByVolume).
+#pragma once
+
+#include "framework/scheme/registry.h"
+#include "framework/scheme/scheme.h"
+#include "schemes/cooper/classify_faces.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace cooperage::cooper {
+
+struct CooperOptions {
+  /// Journal hints per volume id (sources, targets, direction).
+  std::map<int, SweepHints> hints;
+};
+
+class CooperScheme final : public scheme::VolumeScheme {
+ public:
+  /// Keeps `registry` (it must outlive the scheme) to ask "submap", "map"
+  /// and "pave" for their applicable() on sides and caps.
+  explicit CooperScheme(const scheme::Registry& registry, CooperOptions options = {})
+      : registry_(&registry), options_(std::move(options)) {}
+
+  std::string_view name() const override { return "cooper"; }
+  /// classify_faces(): a one-barrel volume (two caps, submappable sides,
+  /// convex end caps, a source cap scheme). Never meshes.
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override;
+  /// Per side: source-boundary sum == target-boundary sum; every linking
+  /// chain of the volume the same count (Blacker 1996, sec. 3-4).
+  void constrain(const scheme::VolumeView& view,
+                 intervals::IntervalProblem& problem) const override;
+  /// Sides -> "submap" (always, one code path), source -> its scheme,
+  /// target -> scheme::kMeshedByVolume. Empty when not applicable.
+  scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
+  /// Barrel formation, projection, elements. Throws MeshingError
+  /// (MeshingFailed) naming the volume: ribs that do not end on the target
+  /// boundary (many-to-one, part II), or elements that stay inverted.
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::MeshParams& params) const override;
+
+  /// Sets (or, with all lists empty and no direction, clears) the hints of a volume.
+  void set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
+                 std::optional<geom::Vec3> direction = std::nullopt);
+  const CooperOptions& options() const { return options_; }
+
+ private:
+  Classification classify(const scheme::VolumeView& view) const;
+
+  const scheme::Registry* registry_;
+  CooperOptions options_;
+};
+
+/// The scheme; register it after the volume map.
+std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry,
+                                                  CooperOptions options = {});
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,132 @@
+// Interior barrel nodes (Blacker 1996, sec. 6.1 projection of the cap mesh,
+// sec. 6.2 the two-sided blend); ALGORITHMS.md sec. 3.
+#include "schemes/cooper/sweep_barrel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cooperage::cooper {
+namespace {
+
+// Residuals r_k = layer_k - map(from_k) of a least-squares map on the loop
+// nodes; returns max |r_k|.
+double residuals(const AffineMap& map, const Vec3* from, const Vec3* layer, std::size_t B,
+                 std::vector<Vec3>& r) {
+  r.resize(B);
+  double worst = 0;
+  for (std::size_t k = 0; k < B; ++k) {
+    r[k] = layer[k] - map.apply(from[k]);
+    worst = std::max(worst, r[k].norm());
+  }
+  return worst;
+}
+
+// Inverse-distance (Shepard, power 3) interpolation of loop residuals at a
+// source cap node: the non-affine part of the loops' motion (a hole that does
+// not shrink with the outer loop, a local bulge) carried to the interior.
+Vec3 interpolate_residual(const Vec3& x, const std::vector<Vec3>& source, std::size_t B,
+                          const std::vector<Vec3>& r) {
+  Vec3 sum = Vec3::Zero();
+  double wsum = 0;
+  for (std::size_t k = 0; k < B; ++k) {
+    const double d2 = (x - source[k]).squaredNorm();
+    const double w = 1.0 / (d2 * std::sqrt(d2) + 1e-300);
+    sum += w * r[k];
+    wsum += w;
+  }
+  return sum / wsum;
+}
+
+}  // namespace
+
+bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
+  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
+  const std::size_t B = static_cast<std::size_t>(in.boundary);
+  const std::size_t J = static_cast<std::size_t>(in.layers);
+  points.assign(n * (J + 1), Vec3::Zero());
+
+  // Layer-major rings (contiguous per layer for the least-squares sums).
+  std::vector<Vec3> ring(B * (J + 1));
+  for (std::size_t r = 0; r < B; ++r) {
+    for (std::size_t j = 0; j <= J; ++j) ring[j * B + r] = in.ribs[r * (J + 1) + j];
+  }
+  for (std::size_t j = 0; j <= J; ++j) {
+    std::copy(ring.begin() + static_cast<long>(j * B), ring.begin() + static_cast<long>((j + 1) * B),
+              points.begin() + static_cast<long>(j * n));
+  }
+  std::copy(in.source.begin() + static_cast<long>(B), in.source.end(),
+            points.begin() + static_cast<long>(B));
+  if (n == B) return true;  // no interior cap nodes
+
+  // s_j: mean arc-length fraction along the ribs, so graded layers work.
+  std::vector<double> s(J + 1, 0.0);
+  for (std::size_t r = 0; r < B; ++r) {
+    const Vec3* rib = &in.ribs[r * (J + 1)];
+    double total = 0;
+    for (std::size_t j = 1; j <= J; ++j) total += (rib[j] - rib[j - 1]).norm();
+    double run = 0;
+    for (std::size_t j = 1; j <= J; ++j) {
+      run += (rib[j] - rib[j - 1]).norm();
+      s[j] += total > 0 ? run / total : static_cast<double>(j) / static_cast<double>(J);
+    }
+  }
+  for (std::size_t j = 1; j <= J; ++j) s[j] /= static_cast<double>(B);
+  s[J] = 1.0;
+
+  const Vec3* upper = &ring[0];
+  const Vec3* lower = &ring[J * B];
+  // Target cap: the source map to the target loop, then onto the surface.
+  const AffineMap to_target = least_squares_map(upper, lower, B, in.loop_starts);
+  if (!to_target.ok) {
+    why = "the least-squares map from the source loops to the target loops is singular or "
+          "inverting (det A <= 0)";
+    return false;
+  }
+  // Residuals above this size are corrected (affine motions have none, so
+  // plain and rigid sweeps skip the O(n B) interpolation).
+  Vec3 lo = ring[0], hi = ring[0];
+  for (const Vec3& p : ring) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double tolerance = 1e-9 * (hi - lo).norm();
+  std::vector<Vec3> res_u;
+  std::vector<Vec3> res_l;
+
+  Vec3* target = &points[J * n];
+  const bool correct_target = residuals(to_target, upper, lower, B, res_u) > tolerance;
+  for (std::size_t i = B; i < n; ++i) {
+    Vec3 y = to_target.apply(in.source[i]);
+    if (correct_target) y += interpolate_residual(in.source[i], in.source, B, res_u);
+    target[i] = in.project_target ? in.project_target(y) : y;
+  }
+
+  // x_ij = x^U_ij (1 - s_j) + x^L_ij s_j.
+  for (std::size_t j = 1; j < J; ++j) {
+    const Vec3* layer = &ring[j * B];
+    const AffineMap from_upper = least_squares_map(upper, layer, B, in.loop_starts);
+    const AffineMap from_lower = least_squares_map(lower, layer, B, in.loop_starts);
+    if (!from_upper.ok || !from_lower.ok) {
+      why = "the least-squares map to layer " + std::to_string(j) + " from the " +
+            (from_upper.ok ? "target" : "source") + " loops is singular or inverting (det A <= 0)";
+      return false;
+    }
+    const double sj = s[j];
+    const Eigen::Matrix3d Au = (1.0 - sj) * from_upper.A;
+    const Eigen::Matrix3d Al = sj * from_lower.A;
+    const Vec3 c = from_upper.to_centre - Au * from_upper.from_centre - Al * from_lower.from_centre;
+    // (1 - s) [A_U (x - xu) + yc] + s [A_L (t - xl) + yc] with yc shared.
+    Vec3* out = &points[j * n];
+    for (std::size_t i = B; i < n; ++i) out[i] = Au * in.source[i] + Al * target[i] + c;
+    const bool cu = residuals(from_upper, upper, layer, B, res_u) > tolerance;
+    const bool cl = residuals(from_lower, lower, layer, B, res_l) > tolerance;
+    if (cu || cl) {
+      for (std::size_t k = 0; k < B; ++k) res_u[k] = (1.0 - sj) * res_u[k] + sj * res_l[k];
+      for (std::size_t i = B; i < n; ++i) out[i] += interpolate_residual(in.source[i], in.source, B, res_u);
+    }
+  }
+  return true;
+}
+
+}  // namespace cooperage::cooper

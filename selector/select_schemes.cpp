@@ -1,0 +1,329 @@
+#include "selector/select_schemes.h"
+
+#include "framework/core/error.h"
+#include "framework/intervals/solve.h"
+#include "framework/pipeline/interval_setup.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace cooperage::selector {
+namespace {
+
+template <class Setting>
+const Setting* find_setting(const std::vector<Setting>& settings, int id) {
+  for (const auto& s : settings) {
+    if (s.id == id) return &s;
+  }
+  return nullptr;
+}
+
+std::string place(const io::SourceLocation& where) {
+  return where.file.empty() ? std::string("the job")
+                            : where.file + ":" + std::to_string(where.line);
+}
+
+std::string score_text(double score) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", score);
+  return buf;
+}
+
+template <class Scheme, class View>
+std::vector<Candidate> evaluate(const std::vector<const Scheme*>& schemes, const View& view) {
+  std::vector<Candidate> out;
+  for (const Scheme* s : schemes) out.push_back({std::string(s->name()), s->applicable(view)});
+  return out;
+}
+
+// Applicable candidates, best score first; ties keep registry order.
+std::vector<const Candidate*> ranked(const std::vector<Candidate>& candidates) {
+  std::vector<const Candidate*> ok;
+  for (const auto& c : candidates) {
+    if (c.applicability.ok) ok.push_back(&c);
+  }
+  std::stable_sort(ok.begin(), ok.end(), [](const Candidate* a, const Candidate* b) {
+    return a->applicability.score > b->applicability.score;
+  });
+  return ok;
+}
+
+std::string all_reasons(const std::vector<Candidate>& candidates) {
+  std::string r;
+  for (const auto& c : candidates) {
+    if (!c.applicability.ok) r += (r.empty() ? "" : "; ") + c.scheme + ": " + c.applicability.why;
+  }
+  return r.empty() ? std::string("no scheme registered") : r;
+}
+
+const Candidate* find_candidate(const std::vector<Candidate>& candidates, const std::string& name) {
+  for (const auto& c : candidates) {
+    if (c.scheme == name) return &c;
+  }
+  return nullptr;
+}
+
+struct Role {
+  std::string scheme;
+  int volume = 0;
+  std::string volume_scheme;
+};
+
+class Selector {
+ public:
+  Selector(const geom::Model& model, const scheme::Registry& registry,
+           const io::MeshSettings& settings, const SelectOptions& options)
+      : model_(model), registry_(registry), settings_(settings), options_(options) {}
+
+  Selection run() {
+    if (options_.dim == 3) {
+      for (const geom::Volume& v : model_.volumes()) choose_volume(v.id);
+    }
+    for (const geom::Surface& s : model_.surfaces()) choose_surface(s.id);
+    if (options_.check_intervals) relax_until_feasible();
+    return selection_;
+  }
+
+ private:
+  // A surface pin that contradicts a role: the message names both.
+  const io::SurfaceSetting* surface_pin(int surface) const {
+    const auto* pin = find_setting(settings_.surfaces, surface);
+    return pin && pin->scheme != "auto" ? pin : nullptr;
+  }
+
+  // Why `roles` cannot be taken by `volume`, or "" when they fit.
+  std::string role_conflict(int volume, const std::string& scheme_name,
+                            const scheme::SurfaceRoles& roles) const {
+    for (const auto& [surface, role] : roles) {
+      auto it = roles_.find(surface);
+      if (it != roles_.end() && it->second.scheme != role) {
+        return "surface " + std::to_string(surface) + " needs " + role + " for volume " +
+               std::to_string(volume) + " (" + scheme_name + ") but " + it->second.scheme +
+               " for volume " + std::to_string(it->second.volume) + " (" +
+               it->second.volume_scheme + ")";
+      }
+      if (const auto* pin = surface_pin(surface); pin && pin->scheme != role) {
+        return "surface " + std::to_string(surface) + " is pinned to " + pin->scheme + " at " +
+               place(pin->where) + " but volume " + std::to_string(volume) + " (" + scheme_name +
+               ") needs " + role;
+      }
+    }
+    return {};
+  }
+
+  void choose_volume(int id) {
+    const scheme::VolumeView view{model_, id, nullptr};
+    Choice choice{3, id, evaluate(registry_.volume_schemes(), view), {}, {}, false, false};
+    const auto* pin = find_setting(settings_.volumes, id);
+    std::vector<const Candidate*> order;
+    if (pin && pin->scheme != "auto") {
+      const Candidate* c = find_candidate(choice.candidates, pin->scheme);
+      if (!c) {
+        throw MeshingError(ErrorCode::NotSupported, EntityRef::volume(id),
+                           "volume scheme \"" + pin->scheme + "\" (" + place(pin->where) +
+                               ") is not available in this release");
+      }
+      if (!c->applicability.ok) {
+        throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
+                           pin->scheme + " pinned at " + place(pin->where) + " does not apply: " +
+                               c->applicability.why);
+      }
+      order.push_back(c);
+      choice.pinned = true;
+    } else {
+      order = ranked(choice.candidates);
+      if (order.empty()) {
+        throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
+                           "no hex scheme applies (" + all_reasons(choice.candidates) + ")");
+      }
+    }
+    std::string conflicts;
+    for (const Candidate* c : order) {
+      const scheme::SurfaceRoles roles = registry_.volume_scheme(c->scheme)->roles(view);
+      const std::string conflict = role_conflict(id, c->scheme, roles);
+      if (!conflict.empty()) {
+        conflicts += (conflicts.empty() ? "" : "; ") + conflict;
+        continue;
+      }
+      for (const auto& [surface, role] : roles) roles_[surface] = {role, id, c->scheme};
+      choice.scheme = c->scheme;
+      choice.reason = choice.pinned ? "pinned at " + place(pin->where)
+                                    : "best applicable, score " + score_text(c->applicability.score);
+      if (!choice.pinned && c != order.front()) choice.reason += " (better ones conflict: " + conflicts + ")";
+      selection_.volumes.push_back(std::move(choice));
+      return;
+    }
+    throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
+                       "no applicable scheme fits its neighbours: " + conflicts);
+  }
+
+  void choose_surface(int id) {
+    const scheme::SurfaceView view{model_, id, nullptr};
+    Choice choice{2, id, {}, {}, {}, false, false};
+    const io::SurfaceSetting* pin = surface_pin(id);
+    auto role = roles_.find(id);
+    if (role != roles_.end() && role->second.scheme == scheme::kMeshedByVolume) {
+      choice.scheme = scheme::kMeshedByVolume;
+      choice.reason = "meshed by volume " + std::to_string(role->second.volume) + " (" +
+                      role->second.volume_scheme + ")";
+      choice.fixed_by_volume = true;
+      selection_.surfaces.push_back(std::move(choice));
+      return;
+    }
+    choice.candidates = evaluate(registry_.surface_schemes(), view);
+    if (role != roles_.end()) {
+      const Candidate* c = find_candidate(choice.candidates, role->second.scheme);
+      if (!c || !c->applicability.ok) {
+        throw MeshingError(ErrorCode::NotApplicable, EntityRef::surface(id),
+                           "volume " + std::to_string(role->second.volume) + " (" +
+                               role->second.volume_scheme + ") needs " + role->second.scheme +
+                               ", which " + (c ? "does not apply: " + c->applicability.why
+                                               : std::string("is not available")));
+      }
+      choice.scheme = role->second.scheme;
+      choice.reason = "role from volume " + std::to_string(role->second.volume) + " (" +
+                      role->second.volume_scheme + ")";
+      choice.fixed_by_volume = true;
+      choice.pinned = pin != nullptr;
+    } else if (pin) {
+      const Candidate* c = find_candidate(choice.candidates, pin->scheme);
+      if (!c) {
+        throw MeshingError(ErrorCode::NotSupported, EntityRef::surface(id),
+                           "surface scheme \"" + pin->scheme + "\" (" + place(pin->where) +
+                               ") is not available in this release");
+      }
+      if (!c->applicability.ok) {
+        throw MeshingError(ErrorCode::NotApplicable, EntityRef::surface(id),
+                           pin->scheme + " pinned at " + place(pin->where) +
+                               " does not apply: " + c->applicability.why);
+      }
+      choice.scheme = pin->scheme;
+      choice.reason = "pinned at " + place(pin->where);
+      choice.pinned = true;
+    } else {
+      const auto order = ranked(choice.candidates);
+      if (order.empty()) {
+        throw MeshingError(ErrorCode::NotApplicable, EntityRef::surface(id),
+                           "no surface scheme applies (" + all_reasons(choice.candidates) + ")");
+      }
+      choice.scheme = order.front()->scheme;
+      choice.reason = "best applicable, score " + score_text(order.front()->applicability.score);
+    }
+    selection_.surfaces.push_back(std::move(choice));
+  }
+
+  // Curves named by an infeasibility message: "... (curves 1, 3, 7)".
+  static std::set<int> conflict_curves(const std::string& message) {
+    std::set<int> ids;
+    const auto at = message.rfind("(curves ");
+    if (at == std::string::npos) return ids;
+    std::string list = message.substr(at + 8);
+    size_t pos = 0;
+    while (pos < list.size()) {
+      size_t used = 0;
+      try {
+        ids.insert(std::stoi(list.substr(pos), &used));
+      } catch (const std::exception&) {
+        break;
+      }
+      pos += used;
+      while (pos < list.size() && (list[pos] == ',' || list[pos] == ' ')) ++pos;
+      if (pos < list.size() && list[pos] == ')') break;
+    }
+    return ids;
+  }
+
+  // The automatic surface choice to relax for a conflict on `curves`: the
+  // lowest-scoring one that has a next candidate; nullptr when none.
+  Choice* relaxable(const std::set<int>& curves) {
+    Choice* best = nullptr;
+    double best_score = 2;
+    for (Choice& c : selection_.surfaces) {
+      if (c.pinned || c.fixed_by_volume) continue;
+      bool touches = curves.empty();
+      for (const auto& loop : model_.surface(c.id).loops) {
+        for (const auto& use : loop.uses) touches = touches || curves.count(use.curve) > 0;
+      }
+      if (!touches) continue;
+      const auto order = ranked(c.candidates);
+      auto it = std::find_if(order.begin(), order.end(),
+                             [&](const Candidate* k) { return k->scheme == c.scheme; });
+      if (it == order.end() || it + 1 == order.end()) continue;
+      const double score = (*it)->applicability.score;
+      if (score < best_score) {
+        best = &c;
+        best_score = score;
+      }
+    }
+    return best;
+  }
+
+  void relax_until_feasible() {
+    for (int round = 0;; ++round) {
+      try {
+        intervals::solve(pipeline::build_interval_problem(model_, registry_, selection_.plan(),
+                                                          settings_));
+        return;
+      } catch (const MeshingError& e) {
+        if (e.code() != ErrorCode::Infeasible) throw;
+        Choice* c = round < options_.max_relaxations ? relaxable(conflict_curves(e.message()))
+                                                     : nullptr;
+        if (!c) {
+          throw MeshingError(ErrorCode::Infeasible, e.entity(),
+                             e.message() +
+                                 "; no automatic scheme choice is left to relax (the conflict "
+                                 "involves pinned counts or schemes)");
+        }
+        const auto order = ranked(c->candidates);
+        auto it = std::find_if(order.begin(), order.end(),
+                               [&](const Candidate* k) { return k->scheme == c->scheme; });
+        const std::string next = (*(it + 1))->scheme;
+        selection_.relaxations.push_back("surface " + std::to_string(c->id) + ": " + c->scheme +
+                                         " -> " + next + " (" + e.message() + ")");
+        c->reason = "relaxed from " + c->scheme + ": interval conflict";
+        c->scheme = next;
+      }
+    }
+  }
+
+  const geom::Model& model_;
+  const scheme::Registry& registry_;
+  const io::MeshSettings& settings_;
+  SelectOptions options_;
+  std::map<int, Role> roles_;
+  Selection selection_;
+};
+
+}  // namespace
+
+pipeline::SchemePlan Selection::plan() const {
+  pipeline::SchemePlan plan;
+  for (const Choice& c : volumes) plan.volumes[c.id] = {c.scheme, c.reason};
+  for (const Choice& c : surfaces) plan.surfaces[c.id] = {c.scheme, c.reason};
+  return plan;
+}
+
+Selection select_schemes(const geom::Model& model, const scheme::Registry& registry,
+                         const io::MeshSettings& settings, const SelectOptions& options) {
+  return Selector(model, registry, settings, options).run();
+}
+
+pipeline::Planner planner() {
+  return [](const geom::Model& model, const scheme::Registry& registry,
+            const io::MeshSettings& settings, int dim) {
+    SelectOptions options;
+    options.dim = dim;
+    return select_schemes(model, registry, settings, options).plan();
+  };
+}
+
+pipeline::MeshOptions mesh_options(int dim, int threads) {
+  pipeline::MeshOptions options;
+  options.planner = planner();
+  options.dim = dim;
+  options.threads = threads;
+  return options;
+}
+
+}  // namespace cooperage::selector

@@ -1,0 +1,39 @@
+// The selector's answer (the paper's "tool manager"): for every volume and
+// surface, every scheme's a-priori verdict, the choice and the reason.
+#pragma once
+
+#include "framework/pipeline/scheme_plan.h"
+#include "framework/scheme/applicability.h"
+
+#include <string>
+#include <vector>
+
+namespace cooperage::selector {
+
+struct Candidate {
+  std::string scheme;
+  scheme::Applicability applicability;
+};
+
+struct Choice {
+  int dim = 3;  ///< 3: volume, 2: surface
+  int id = 0;
+  /// Every registered scheme of the entity's dimension, in registry order
+  /// (empty for surfaces a volume scheme meshes itself).
+  std::vector<Candidate> candidates;
+  std::string scheme;  ///< the choice (scheme::kMeshedByVolume: meshed by its volume)
+  std::string reason;  ///< "best score 1.00", "pinned at job.xml:7", "role from volume 2 (map)"
+  bool pinned = false;
+  bool fixed_by_volume = false;
+};
+
+struct Selection {
+  std::vector<Choice> volumes;   ///< ascending id
+  std::vector<Choice> surfaces;  ///< ascending id
+  /// Choices changed because the interval assignment was infeasible, in order.
+  std::vector<std::string> relaxations;
+
+  pipeline::SchemePlan plan() const;
+};
+
+}  // namespace cooperage::selector
