@@ -105,7 +105,7 @@ TEST_F(RunCommand, UnmeshableVolumeIsOneClearLineAndNoFile) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("volume 1"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("no scheme applies"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no hex scheme applies"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("sphere.exo")));
 }
 
