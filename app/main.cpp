@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 a quality check failed, 2 bad input (file,
 // journal, geometry, no applicable scheme), 3 internal error.
 #include "model_report.h"
+#include "plan_command.h"
 #include "progress.h"
 #include "quality_command.h"
 #include "run_report.h"
@@ -122,6 +123,16 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   mesh->add_flag("-q,--quiet", quiet, "No progress output");
 
+  std::string plan_file;
+  double plan_size = 0;
+  bool plan_json = false;
+  CLI::App* plan = app.add_subcommand(
+      "plan", "Show the scheme chosen for every volume and surface, and why, without meshing");
+  plan->add_option("FILE", plan_file, "A journal (.xml) or a CAD file")->required();
+  plan->add_option("--size", plan_size, "Element size (overrides the journal's)")
+      ->check(CLI::PositiveNumber);
+  plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
+
   std::string quality_file;
   bool quality_json = false;
   CLI::App* quality = app.add_subcommand(
@@ -145,6 +156,10 @@ int main(int argc, char** argv) {
     if (*info) return run_info(info_file, info_json, info_no_imprint);
     if (*run) return run_journal(run_file, threads, quiet);
     if (*quality) return app::run_quality(quality_file, quality_json, std::cout);
+    if (*plan) {
+      return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
+                           plan_json, std::cout);
+    }
     if (*mesh) {
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, threads, quiet);
     }

@@ -1,0 +1,124 @@
+#include "plan_command.h"
+
+#include "json_writer.h"
+
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/check_settings.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace cooperage::app {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string score(double s) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%.2f", s);
+  return buf;
+}
+
+void write_text(const selector::Selection& sel, bool intervals_checked, std::ostream& out) {
+  auto entity = [&](const selector::Choice& c) {
+    out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
+        << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
+        << "  -- " << c.reason << "\n";
+    for (const auto& k : c.candidates) {
+      out << "    " << (k.applicability.ok ? "+ " : "- ") << k.scheme;
+      if (k.applicability.ok) out << " score " << score(k.applicability.score);
+      if (!k.applicability.why.empty()) out << ": " << k.applicability.why;
+      out << "\n";
+    }
+  };
+  if (!sel.volumes.empty()) out << "volumes\n";
+  for (const auto& c : sel.volumes) entity(c);
+  out << "surfaces\n";
+  for (const auto& c : sel.surfaces) entity(c);
+  for (const auto& r : sel.relaxations) out << "relaxed " << r << "\n";
+  if (!intervals_checked) out << "interval feasibility not checked: no element size given\n";
+}
+
+void write_json(const selector::Selection& sel, bool intervals_checked, std::ostream& out) {
+  JsonWriter j(out);
+  auto entities = [&](const std::vector<selector::Choice>& list) {
+    j.begin_array();
+    for (const auto& c : list) {
+      j.begin_object();
+      j.key("id");
+      j.value(c.id);
+      j.key("scheme");
+      j.value(c.scheme);
+      j.key("reason");
+      j.value(c.reason);
+      j.key("pinned");
+      j.value(c.pinned);
+      j.key("candidates");
+      j.begin_array();
+      for (const auto& k : c.candidates) {
+        j.begin_object();
+        j.key("scheme");
+        j.value(k.scheme);
+        j.key("ok");
+        j.value(k.applicability.ok);
+        j.key("score");
+        j.value(k.applicability.score);
+        j.key("why");
+        j.value(k.applicability.why);
+        j.end_object();
+      }
+      j.end_array();
+      j.end_object();
+    }
+    j.end_array();
+  };
+  j.begin_object();
+  j.key("volumes");
+  entities(sel.volumes);
+  j.key("surfaces");
+  entities(sel.surfaces);
+  j.key("relaxations");
+  j.begin_array();
+  for (const auto& r : sel.relaxations) j.value(r);
+  j.end_array();
+  j.key("intervals_checked");
+  j.value(intervals_checked);
+  j.end_object();
+  out << "\n";
+}
+
+}  // namespace
+
+int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out) {
+  io::MeshSettings settings;
+  geom::Model model;
+  if (lower_extension(file) == ".xml") {
+    const io::Job job = io::read_journal(file);
+    if (job.mesh) settings = *job.mesh;
+    model = pipeline::build_geometry(job);
+  } else {
+    model = pipeline::load_any(file);
+  }
+  if (size) settings.size = size;
+  pipeline::check_settings(model, settings);
+  scheme::Registry registry;
+  register_builtin_schemes(registry, builtin_options(settings));
+  selector::SelectOptions options;
+  options.check_intervals = settings.size.has_value();
+  const selector::Selection sel = selector::select_schemes(model, registry, settings, options);
+  if (json) {
+    write_json(sel, options.check_intervals, out);
+  } else {
+    write_text(sel, options.check_intervals, out);
+  }
+  return 0;
+}
+
+}  // namespace cooperage::app

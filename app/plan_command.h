@@ -1,0 +1,16 @@
+// `cooperage plan`: the selector's choice for every volume and surface, with
+// every scheme's verdict and the reason, without meshing.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace cooperage::app {
+
+/// Plans the model of FILE (a journal, or a CAD file with automatic schemes).
+/// `size` overrides the journal's global size; without any size the interval
+/// feasibility check is skipped (and said so). Returns the exit code.
+int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out);
+
+}  // namespace cooperage::app

@@ -1,0 +1,260 @@
+// The selector: a-priori choices on models whose right answer follows from
+// their shape, explained rejections, pins, invariance.
+#include "framework/core/error.h"
+#include "framework/geometry/occ/workbench.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <random>
+
+namespace cooperage::selector {
+namespace {
+
+using geom::Vec3;
+
+struct Fixture {
+  scheme::Registry registry;
+  explicit Fixture(const BuiltinOptions& options = {}) { register_builtin_schemes(registry, options); }
+};
+
+io::MeshSettings sized(double size) {
+  io::MeshSettings s;
+  s.size = size;
+  return s;
+}
+
+const Choice& volume(const Selection& s, int id) { return s.volumes.at(static_cast<size_t>(id - 1)); }
+const Choice& surface(const Selection& s, int id) { return s.surfaces.at(static_cast<size_t>(id - 1)); }
+
+// A plate 10 x 6 x 1 with three square through holes, as a prism.
+geom::Model plate_with_square_holes(occ::Workbench& bench) {
+  std::vector<std::vector<Vec3>> holes;
+  for (double x : {2.0, 5.0, 8.0}) {
+    holes.push_back({{x - 0.5, 2.5, 0}, {x - 0.5, 3.5, 0}, {x + 0.5, 3.5, 0}, {x + 0.5, 2.5, 0}});
+  }
+  bench.prism("plate", {{0, 0, 0}, {10, 0, 0}, {10, 6, 0}, {0, 6, 0}}, holes, {0, 0, 1});
+  return bench.build_model();
+}
+
+TEST(Selector, BrickGoesToVolumeMapWithEverySurfaceMapped) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 3, 4});
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  const Selection s = select_schemes(model, f.registry, sized(0.5));
+  EXPECT_EQ(volume(s, 1).scheme, "map");
+  for (const auto& c : s.surfaces) {
+    EXPECT_EQ(c.scheme, "map") << "surface " << c.id;
+    EXPECT_TRUE(c.fixed_by_volume);
+  }
+  // cooper also applies to a brick, with a lower score.
+  bool cooper_ok = false;
+  for (const auto& k : volume(s, 1).candidates) cooper_ok |= k.scheme == "cooper" && k.applicability.ok;
+  EXPECT_TRUE(cooper_ok);
+}
+
+TEST(Selector, PlateWithHolesGoesToCooperOneToOne) {
+  occ::Workbench bench;
+  const geom::Model model = plate_with_square_holes(bench);
+  Fixture f;
+  const Selection s = select_schemes(model, f.registry, sized(0.5));
+  EXPECT_EQ(volume(s, 1).scheme, "cooper");
+  int targets = 0, sources = 0;
+  for (const auto& c : s.surfaces) {
+    if (c.scheme == scheme::kMeshedByVolume) ++targets;
+    if (model.surface(c.id).loops.size() == 4 && c.scheme != scheme::kMeshedByVolume) ++sources;
+  }
+  EXPECT_EQ(targets, 1);
+  EXPECT_EQ(sources, 1);
+  // The volume map says why it does not apply.
+  for (const auto& k : volume(s, 1).candidates) {
+    if (k.scheme == "map") {
+      EXPECT_FALSE(k.applicability.ok);
+      EXPECT_FALSE(k.applicability.why.empty());
+    }
+  }
+}
+
+TEST(Selector, LShapedPlanarFaceGoesToSubmap) {
+  occ::Workbench bench;
+  bench.prism("l", {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}}, {},
+              {0, 0, 1});
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  SelectOptions surfaces_only;
+  surfaces_only.dim = 2;
+  const Selection s = select_schemes(model, f.registry, sized(0.5), surfaces_only);
+  int submapped = 0;
+  for (const auto& c : s.surfaces) {
+    if (model.surface(c.id).loops[0].uses.size() == 6) {
+      EXPECT_EQ(c.scheme, "submap") << "surface " << c.id;
+      ++submapped;
+      for (const auto& k : c.candidates) {
+        if (k.scheme == "map") EXPECT_FALSE(k.applicability.ok);  // 5 ENDs and a CORNER
+      }
+    } else {
+      EXPECT_EQ(c.scheme, "map") << "surface " << c.id;
+    }
+  }
+  EXPECT_EQ(submapped, 2);
+}
+
+TEST(Selector, SphereHasNoHexSchemeAndEverySchemeSaysWhy) {
+  occ::Workbench bench;
+  bench.sphere("s", {0, 0, 0}, 1);
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  try {
+    select_schemes(model, f.registry, sized(0.2));
+    FAIL() << "a sphere got a scheme";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("no hex scheme applies"), std::string::npos) << what;
+    EXPECT_NE(what.find("map:"), std::string::npos) << what;
+    EXPECT_NE(what.find("cooper:"), std::string::npos) << what;
+  }
+}
+
+TEST(Selector, PinnedVolumeSchemeIsObeyedOrRejectedWithItsReason) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  const geom::Model model = bench.build_model();
+  io::MeshSettings settings = sized(0.25);
+  io::VolumeSetting pin;
+  pin.id = 1;
+  pin.scheme = "cooper";
+  pin.where = {"job.xml", 7, "volume"};
+  settings.volumes.push_back(pin);
+  Fixture f;
+  const Selection s = select_schemes(model, f.registry, settings);
+  EXPECT_EQ(volume(s, 1).scheme, "cooper");
+  EXPECT_TRUE(volume(s, 1).pinned);
+  EXPECT_NE(volume(s, 1).reason.find("job.xml:7"), std::string::npos);
+
+  occ::Workbench ball;
+  ball.sphere("s", {0, 0, 0}, 1);
+  const geom::Model sphere = ball.build_model();
+  settings.volumes[0].scheme = "map";
+  try {
+    select_schemes(sphere, f.registry, settings);
+    FAIL();
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("job.xml:7"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Selector, ContradictoryPinsNameBoth) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  const geom::Model model = bench.build_model();
+  io::MeshSettings settings = sized(0.25);
+  io::VolumeSetting v;
+  v.id = 1;
+  v.scheme = "map";
+  v.where = {"job.xml", 5, "volume"};
+  settings.volumes.push_back(v);
+  io::SurfaceSetting s;
+  s.id = 1;
+  s.scheme = "submap";
+  s.where = {"job.xml", 6, "surface"};
+  settings.surfaces.push_back(s);
+  Fixture f;
+  try {
+    select_schemes(model, f.registry, settings);
+    FAIL() << "contradictory pins were accepted";
+  } catch (const MeshingError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("job.xml:6"), std::string::npos) << what;
+    EXPECT_NE(what.find("volume 1 (map)"), std::string::npos) << what;
+  }
+}
+
+TEST(Selector, PinnedHardCountsThatConflictAreReportedNotRelaxed) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  const geom::Model model = bench.build_model();
+  io::MeshSettings settings = sized(0.25);
+  // Curves 1 and 3 are opposite sides of a brick face.
+  io::CurveSetting a, b;
+  a.id = 1;
+  a.sizing.intervals = 3;
+  b.id = 3;
+  b.sizing.intervals = 5;
+  settings.curves = {a, b};
+  Fixture f;
+  try {
+    select_schemes(model, f.registry, settings);
+    FAIL();
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Infeasible);
+    EXPECT_NE(std::string(e.what()).find("no automatic scheme choice is left"), std::string::npos)
+        << e.what();
+  }
+}
+
+// The plan of a moved model, or of the same shapes created in another
+// order, is the same plan: compared through surface centroids, since ids
+// follow creation order.
+std::map<std::string, std::string> plan_by_place(const geom::Model& model, const Selection& s,
+                                                 const Eigen::Isometry3d& back) {
+  std::map<std::string, std::string> plan;
+  for (const auto& c : s.surfaces) {
+    Vec3 sum = Vec3::Zero();  // mean of the loop vertices: moves with the model
+    int n = 0;
+    for (const auto& loop : model.surface(c.id).loops) {
+      for (const auto& use : loop.uses) {
+        sum += model.vertex(model.curve(use.curve).start_vertex).point;
+        ++n;
+      }
+    }
+    const Vec3 centre = back * Vec3(sum / n);
+    char key[96];
+    std::snprintf(key, sizeof key, "%.3f %.3f %.3f", centre.x() + 0.0, centre.y() + 0.0,
+                  centre.z() + 0.0);
+    plan[key] = c.scheme;
+  }
+  for (const auto& c : s.volumes) plan["volume " + model.volume(c.id).name] = c.scheme;
+  return plan;
+}
+
+TEST(Selector, PlanIsInvariantUnderRigidMotionAndInputOrder) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
+  const double angle = 90 * u(rng);
+  const Vec3 shift(3 * u(rng), 3 * u(rng), 3 * u(rng));
+  auto build = [&](bool moved, bool reversed) {
+    occ::Workbench bench;
+    std::vector<std::pair<std::string, Vec3>> plates{{"a", {0, 0, 0}}, {"b", {2, 0, 0}}, {"c", {0, 2, 0}}};
+    if (reversed) std::reverse(plates.begin(), plates.end());
+    for (const auto& [name, origin] : plates) bench.brick(name, origin, {2, 2, 0.5});
+    if (moved) {
+      for (const auto& [name, origin] : plates) {
+        bench.rotate(name, {0, 0, 0}, axis, angle);
+        bench.translate(name, shift);
+      }
+    }
+    return bench.build_model();
+  };
+  Fixture f;
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d undo = Eigen::Isometry3d::Identity();
+  undo.rotate(Eigen::AngleAxisd(-angle * M_PI / 180, axis));
+  undo.translate(-shift);
+  const geom::Model m0 = build(false, false), m1 = build(true, false), m2 = build(false, true);
+  const auto p0 = plan_by_place(m0, select_schemes(m0, f.registry, sized(0.25)), identity);
+  const auto p1 = plan_by_place(m1, select_schemes(m1, f.registry, sized(0.25)), undo);
+  const auto p2 = plan_by_place(m2, select_schemes(m2, f.registry, sized(0.25)), identity);
+  EXPECT_EQ(p0, p1);
+  EXPECT_EQ(p0, p2);
+  EXPECT_EQ(p0.size(), m0.surfaces().size() + 3);
+}
+
+}  // namespace
+}  // namespace cooperage::selector
