@@ -29,7 +29,6 @@ io::MeshSettings sized(double size) {
 }
 
 const Choice& volume(const Selection& s, int id) { return s.volumes.at(static_cast<size_t>(id - 1)); }
-const Choice& surface(const Selection& s, int id) { return s.surfaces.at(static_cast<size_t>(id - 1)); }
 
 // A plate 10 x 6 x 1 with three square through holes, as a prism.
 geom::Model plate_with_square_holes(occ::Workbench& bench) {
@@ -95,7 +94,9 @@ TEST(Selector, LShapedPlanarFaceGoesToSubmap) {
       EXPECT_EQ(c.scheme, "submap") << "surface " << c.id;
       ++submapped;
       for (const auto& k : c.candidates) {
-        if (k.scheme == "map") EXPECT_FALSE(k.applicability.ok);  // 5 ENDs and a CORNER
+        if (k.scheme == "map") {
+          EXPECT_FALSE(k.applicability.ok);  // 5 ENDs and a CORNER
+        }
       }
     } else {
       EXPECT_EQ(c.scheme, "map") << "surface " << c.id;
@@ -214,9 +215,9 @@ std::map<std::string, std::string> plan_by_place(const geom::Model& model, const
       }
     }
     const Vec3 centre = back * Vec3(sum / n);
-    char key[96];
-    std::snprintf(key, sizeof key, "%.3f %.3f %.3f", centre.x() + 0.0, centre.y() + 0.0,
-                  centre.z() + 0.0);
+    char key[96];  // in thousandths, so -0.000 and 0.000 agree
+    std::snprintf(key, sizeof key, "%ld %ld %ld", std::lround(centre.x() * 1000),
+                  std::lround(centre.y() * 1000), std::lround(centre.z() * 1000));
     plan[key] = c.scheme;
   }
   for (const auto& c : s.volumes) plan["volume " + model.volume(c.id).name] = c.scheme;
