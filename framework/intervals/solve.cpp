@@ -190,8 +190,32 @@ bool build_model(const Component& comp, const std::vector<Item>& items,
       cap(*curve.fixed);
     }
   }
-  for (const detail::Column& col : columns)
-    if (col.hi && *col.hi < col.lo) return false;
+  // A finite box so branch and bound always ends: twice the sum of every
+  // curve's largest wish plus the constraint constants (no sensible
+  // assignment comes near it).
+  long box = 16;
+  for (const Curve* curve : comp.curves)
+    box += 2 * std::max<long>({std::lround(std::ceil(curve->target())), curve->min,
+                               curve->fixed.value_or(0)});
+  for (const Canonical& c : comp.constraints) box += 2 * std::abs(static_cast<long>(c.rhs));
+  const int cap_all = static_cast<int>(std::min<long>(box, 1L << 30));
+  for (detail::Column& col : columns) {
+    if (!col.hi) col.hi = std::max(cap_all, col.lo);
+    if (*col.hi < col.lo) return false;
+  }
+  // Divisibility (integer infeasibility CBC does not always prove): with the
+  // fixed columns moved to the right-hand side, the gcd of the remaining
+  // coefficients (and 2 for a parity row) must divide it.
+  for (const detail::Row& row : rows) {
+    if (row.kind == Constraint::Kind::Linear && row.sense != Sense::Equal) continue;
+    long constant = 0, divisor = row.kind == Constraint::Kind::Even ? 2 : 0;
+    for (auto [col, coeff] : row.terms) {
+      if (*columns[col].hi == columns[col].lo) constant += static_cast<long>(coeff) * columns[col].lo;
+      else divisor = std::gcd(divisor, static_cast<long>(std::abs(coeff)));
+    }
+    const long rest = (row.kind == Constraint::Kind::Even ? 0 : row.rhs) - constant;
+    if (divisor == 0 ? rest != 0 : rest % divisor != 0) return false;
+  }
   return true;
 }
 

@@ -27,17 +27,31 @@
 // under h (this is round(goal) except in a sliver just below k + 1/2),
 // clamped to its bounds; a hard one takes its fixed count.
 //
+// Model reductions and safeguards: curves tied by a plain equality x_a = x_b
+// (map faces) share one column carrying all their costs; every column gets a
+// finite box (twice the sum of all targets, minima and fixed counts of the
+// component plus the constraint constants) so branch and bound always ends;
+// equality and parity rows are checked for divisibility (gcd) before CBC,
+// which does not always prove such integer infeasibility; and a uniform
+// count (every free column at the same even value near the median target,
+// if that satisfies the component) is passed to CBC as a MIP start. CBC runs
+// through its standard driver (CbcMain0/CbcMain1: preprocessing, cuts,
+// heuristics), silenced. When it hits max_seconds with a solution, that
+// solution is used and a warning logged; without one, solve() throws
+// Infeasible saying the limit was reached.
+//
 // Determinism: constraints are put into a canonical form (terms merged and
 // sorted by curve id, first coefficient positive) and sorted before the model
 // is built, CBC runs single-threaded with fixed seeds, and components are
 // solved independently in ascending order of their smallest curve id, so the
 // answer does not depend on the order in which curves or constraints were
-// added.
+// added. (A run cut short by the time limit depends on machine speed.)
 //
 // Infeasibility: the component's constraints and bound items (hard counts,
-// minima > 1, maxima) are reduced by a deletion filter to an irreducible
-// infeasible subset when there are fewer than `iis_item_limit` items; the
-// error names those items and the curves they involve.
+// minima > 1, maxima) are reduced by a deletion filter (Chinneck) to an
+// irreducible infeasible subset when there are fewer than `iis_item_limit`
+// items (each check limited to iis_check_seconds; an unproven check keeps
+// its item); the error names those items and the curves they involve.
 #pragma once
 
 #include <map>
