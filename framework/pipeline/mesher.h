@@ -43,6 +43,7 @@ struct MeshResult {
   intervals::IntervalSolution intervals;
   mesh::MeshDB mesh;
   std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
+  QualityReport quality;              ///< scaled Jacobian per block (no journal checks)
 };
 
 /// Meshes a model. Throws MeshingError naming the entity on any failure,

@@ -11,16 +11,6 @@ namespace {
 using quality::ElementType;
 using quality::Metric;
 
-template <size_t N>
-std::vector<std::array<int, 8>> widen(const std::vector<std::array<int, N>>& elements) {
-  std::vector<std::array<int, 8>> rows(elements.size());
-  for (size_t e = 0; e < elements.size(); ++e) {
-    rows[e].fill(0);
-    for (size_t i = 0; i < N; ++i) rows[e][i] = elements[e][i];
-  }
-  return rows;
-}
-
 std::vector<Metric> metrics_for(ElementType type, const std::vector<io::QualityCheck>& checks) {
   std::vector<Metric> metrics{Metric::ScaledJacobian};
   for (const auto& c : checks) {
@@ -51,16 +41,19 @@ std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geo
   return normals;
 }
 
+// Elements given as a vector of fixed-size node arrays, read in place.
+template <size_t N>
 void add_block(QualityReport& report, const mesh::MeshDB& db, int dim, int id, ElementType type,
-               const std::vector<std::array<int, 8>>& rows,
+               const std::vector<std::array<int, N>>& elements,
                const std::vector<Eigen::Vector3d>* normals,
                const std::vector<io::QualityCheck>& checks) {
-  if (rows.empty()) return;
-  BlockReport block{dim, id, type, rows.size(), {}};
+  if (elements.empty()) return;
+  BlockReport block{dim, id, type, elements.size(), {}};
   quality::EvaluateOptions options;
   options.normals = normals;
   for (Metric m : metrics_for(type, checks)) {
-    const auto values = quality::evaluate(m, type, db.coords(), rows, options);
+    const auto values = quality::evaluate(m, type, db.coords(), elements.front().data(),
+                                          elements.size(), static_cast<int>(N), options);
     block.metrics.push_back(quality::summarize(m, values));
     // Each check counts against its own thresholds (one metric may be
     // checked twice, e.g. warn below 0.5 and fail below 0.2).
@@ -104,16 +97,16 @@ QualityReport assess_quality(const mesh::MeshDB& db, const geom::Model& model,
   const bool volumes = db.hex_count() + db.wedge_count() > 0;
   if (volumes) {
     for (const auto& [id, v] : db.volumes()) {
-      add_block(report, db, 3, id, ElementType::Hex, widen(v.hexes), nullptr, checks);
-      add_block(report, db, 3, id, ElementType::Wedge, widen(v.wedges), nullptr, checks);
+      add_block(report, db, 3, id, ElementType::Hex, v.hexes, nullptr, checks);
+      add_block(report, db, 3, id, ElementType::Wedge, v.wedges, nullptr, checks);
     }
   } else {
     for (const auto& [id, s] : db.surfaces()) {
       const geom::Surface& surface = model.surface(id);
       const auto qn = reference_normals(db, surface, s.quads);
       const auto tn = reference_normals(db, surface, s.tris);
-      add_block(report, db, 2, id, ElementType::Quad, widen(s.quads), &qn, checks);
-      add_block(report, db, 2, id, ElementType::Tri, widen(s.tris), &tn, checks);
+      add_block(report, db, 2, id, ElementType::Quad, s.quads, &qn, checks);
+      add_block(report, db, 2, id, ElementType::Tri, s.tris, &tn, checks);
     }
   }
   for (auto& c : report.checks) {

@@ -2,6 +2,9 @@
 
 #include <string>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "framework/core/error.h"
 #include "framework/quality/hex_metrics.h"
 #include "framework/quality/quad_metrics.h"
@@ -121,18 +124,23 @@ std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<
             std::to_string(count) + " elements");
   }
 
-  // Gather every element's nodes once (validates indices).
-  std::vector<Vector3d> nodes(count * static_cast<std::size_t>(n));
+  // Validate every index first, so the parallel loop below cannot fail.
+  const std::size_t width = static_cast<std::size_t>(stride);
   for (std::size_t e = 0; e < count; ++e) {
     for (int i = 0; i < n; ++i) {
-      const int id = connectivity[e * static_cast<std::size_t>(stride) + i];
+      const int id = connectivity[e * width + static_cast<std::size_t>(i)];
       if (id < 0 || static_cast<std::size_t>(id) >= coords.size()) {
         invalid("element " + std::to_string(e) + " node " + std::to_string(i) + ": index " +
                 std::to_string(id) + " out of range [0, " + std::to_string(coords.size()) + ")");
       }
-      nodes[e * n + i] = coords[id];
     }
   }
+  // One element's nodes, gathered on the fly (no copy of the whole mesh).
+  auto nodes_of = [&](std::size_t e, Vector3d* out) {
+    for (int i = 0; i < n; ++i) {
+      out[i] = coords[static_cast<std::size_t>(connectivity[e * width + static_cast<std::size_t>(i)])];
+    }
+  };
 
   double average = 0.0;
   if (metric == Metric::RelativeSize) {
@@ -140,26 +148,37 @@ std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<
       average = *options.average_size;
     } else if (count > 0) {
       double sum = 0.0;  // sequential sum: deterministic
-      for (std::size_t e = 0; e < count; ++e) sum += element_size(type, &nodes[e * n]);
+      Vector3d buf[8];
+      for (std::size_t e = 0; e < count; ++e) {
+        nodes_of(e, buf);
+        sum += element_size(type, buf);
+      }
       average = sum / static_cast<double>(count);
     }
   }
 
+  // Elements are independent: a parallel loop gives the same values as a
+  // sequential one, whatever the thread count.
   std::vector<double> values(count);
-  for (std::size_t e = 0; e < count; ++e) {
-    const Vector3d* normal = options.normals ? &(*options.normals)[e] : nullptr;
-    values[e] = evaluate_element(metric, type, &nodes[e * n], normal, average);
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      Vector3d buf[8];
+                      for (std::size_t e = range.begin(); e != range.end(); ++e) {
+                        nodes_of(e, buf);
+                        const Vector3d* normal = options.normals ? &(*options.normals)[e] : nullptr;
+                        values[e] = evaluate_element(metric, type, buf, normal, average);
+                      }
+                    });
   return values;
 }
 
 std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<Vector3d>& coords,
                              const std::vector<std::array<int, 8>>& connectivity,
                              const EvaluateOptions& options) {
-  std::vector<int> flat;
-  flat.reserve(connectivity.size() * 8);
-  for (const auto& row : connectivity) flat.insert(flat.end(), row.begin(), row.end());
-  return evaluate(metric, type, coords, flat.data(), connectivity.size(), 8, options);
+  static_assert(sizeof(std::array<int, 8>) == 8 * sizeof(int), "rows are contiguous ints");
+  return evaluate(metric, type, coords,
+                  connectivity.empty() ? nullptr : connectivity.front().data(),
+                  connectivity.size(), 8, options);
 }
 
 }  // namespace cooperage::quality

@@ -6,4 +6,5 @@ cooperage_framework_part(quality SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/quad_metrics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/tri_metrics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/evaluate.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/summary.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/summary.cpp
+  PRIVATE_DEPS TBB::tbb)
