@@ -88,12 +88,13 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     if (entry.scheme != scheme::kMeshedByVolume) surfaces.push_back(id);
   }
   report(options, "surfaces", 0, surfaces.size());
-  const auto surface_meshes = for_each_entity(surfaces, [&](int id) {
+  auto surface_meshes = for_each_entity(surfaces, [&](int id) {
     const scheme::SurfaceScheme* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
     return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
   });
   for (size_t i = 0; i < surfaces.size(); ++i) {
     commit_surface(surface_meshes[i].mesh, surfaces[i], result.mesh);
+    surface_meshes[i].mesh = {};  // release the local copy now
     result.timings.push_back(
         {2, surfaces[i], result.plan.surfaces.at(surfaces[i]).scheme, surface_meshes[i].seconds});
   }
@@ -102,12 +103,13 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   std::vector<int> volumes;
   for (const auto& [id, entry] : result.plan.volumes) volumes.push_back(id);
   report(options, "volumes", 0, volumes.size());
-  const auto volume_meshes = for_each_entity(volumes, [&](int id) {
+  auto volume_meshes = for_each_entity(volumes, [&](int id) {
     const scheme::VolumeScheme* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
     return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
   });
   for (size_t i = 0; i < volumes.size(); ++i) {
     commit_volume(volume_meshes[i].mesh, volumes[i], result.mesh);
+    volume_meshes[i].mesh = {};  // release the local copy now
     result.timings.push_back(
         {3, volumes[i], result.plan.volumes.at(volumes[i]).scheme, volume_meshes[i].seconds});
   }

@@ -134,12 +134,17 @@ FaceFinder::Key FaceFinder::key_of(const int* nodes, int n) {
 }
 
 FaceFinder::FaceFinder(const mesh::VolumeMeshData& vol, const FaceTable& hex_faces,
-                       const FaceTable& wedge_faces) {
-  auto add = [this](const int* elem, const FaceTable& table, bool wedge, int index) {
+                       const FaceTable& wedge_faces, const std::vector<bool>& wanted) {
+  auto add = [this, &wanted](const int* elem, const FaceTable& table, bool wedge, int index) {
     for (size_t s = 0; s < table.size(); ++s) {
       int nodes[4];
       const int n = static_cast<int>(table[s].size());
-      for (int i = 0; i < n; ++i) nodes[i] = elem[table[s][static_cast<size_t>(i)]];
+      bool all_wanted = true;
+      for (int i = 0; i < n; ++i) {
+        nodes[i] = elem[table[s][static_cast<size_t>(i)]];
+        all_wanted = all_wanted && wanted[static_cast<size_t>(nodes[i])];
+      }
+      if (!all_wanted) continue;
       // emplace keeps the first element with this face (an interior face is
       // shared by two elements of the volume; boundary faces are unique).
       faces_.emplace(key_of(nodes, n), FaceHit{wedge, index, static_cast<int>(s)});
@@ -188,7 +193,19 @@ std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
     if (!db.volume_meshed(vid) || db.volume(vid).size() == 0) continue;
     auto it = finders.find(vid);
     if (it == finders.end()) {
-      it = finders.emplace(vid, FaceFinder(db.volume(vid), hex_faces, wedge_faces)).first;
+      // Nodes of every surface element this volume's sides must carry.
+      std::vector<bool> wanted(db.node_count(), false);
+      for (const auto& [other, mesh] : db.surfaces()) {
+        const auto& owners = model.surface(other).volumes;
+        if (owners.empty() || owners.front() != vid) continue;
+        for (const auto& q : mesh.quads) {
+          for (int n : q) wanted[static_cast<size_t>(n)] = true;
+        }
+        for (const auto& t : mesh.tris) {
+          for (int n : t) wanted[static_cast<size_t>(n)] = true;
+        }
+      }
+      it = finders.emplace(vid, FaceFinder(db.volume(vid), hex_faces, wedge_faces, wanted)).first;
     }
     std::vector<FaceHit>& hits = result[sid];
     hits.reserve(s.size());

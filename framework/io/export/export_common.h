@@ -57,8 +57,11 @@ struct FaceHit {
 /// given set of nodes (order-independent).
 class FaceFinder {
  public:
+  /// Indexes the element sides all of whose nodes are marked in `wanted`
+  /// (the nodes of the surface elements to look up), so the index stays the
+  /// size of the boundary, not of the volume.
   FaceFinder(const mesh::VolumeMeshData& vol, const FaceTable& hex_faces,
-             const FaceTable& wedge_faces);
+             const FaceTable& wedge_faces, const std::vector<bool>& wanted);
   /// The element side with exactly these nodes, or a FaceHit with element -1.
   FaceHit find(const int* nodes, int n) const;
 
