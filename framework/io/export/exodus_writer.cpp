@@ -177,6 +177,35 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
                         static_cast<int64_t>(node_sets.size()),
                         static_cast<int64_t>(side_sets.size())),
             "put_init");
+    // Every definition first, then the bulk data: netCDF classic files move
+    // all data written so far each time define mode is re-entered, which
+    // made large exports read and rewrite themselves once per block.
+    char cx[] = "x", cy[] = "y", cz[] = "z";
+    char* coord_names[] = {cx, cy, cz};
+    f.check(ex_put_coord_names(f.id(), coord_names), "put_coord_names");
+    for (const auto& b : blocks) {
+      f.check(ex_put_block(f.id(), EX_ELEM_BLOCK, b.id, b.type,
+                           static_cast<int64_t>(b.conn.size()) / b.nodes_per, b.nodes_per, 0, 0, 0),
+              "put_block");
+    }
+    for (const auto& s : side_sets) {
+      f.check(ex_put_set_param(f.id(), EX_SIDE_SET, s.id, static_cast<int64_t>(s.entries.size()), 0),
+              "put_set_param (side set)");
+    }
+    for (const auto& s : node_sets) {
+      f.check(ex_put_set_param(f.id(), EX_NODE_SET, s.id, static_cast<int64_t>(s.entries.size()), 0),
+              "put_set_param (node set)");
+    }
+    std::vector<std::string> names;
+    for (const auto& b : blocks) names.push_back(b.name);
+    put_names(f, EX_ELEM_BLOCK, names);
+    names.clear();
+    for (const auto& s : side_sets) names.push_back(s.name);
+    put_names(f, EX_SIDE_SET, names);
+    names.clear();
+    for (const auto& s : node_sets) names.push_back(s.name);
+    put_names(f, EX_NODE_SET, names);
+
     std::vector<double> x(db.node_count()), y(db.node_count()), z(db.node_count());
     for (size_t i = 0; i < db.node_count(); ++i) {
       const auto& p = db.node(static_cast<int>(i));
@@ -185,40 +214,18 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
       z[i] = p.z();
     }
     f.check(ex_put_coord(f.id(), x.data(), y.data(), z.data()), "put_coord");
-    char cx[] = "x", cy[] = "y", cz[] = "z";
-    char* coord_names[] = {cx, cy, cz};
-    f.check(ex_put_coord_names(f.id(), coord_names), "put_coord_names");
-
-    std::vector<std::string> names;
     for (const auto& b : blocks) {
-      f.check(ex_put_block(f.id(), EX_ELEM_BLOCK, b.id, b.type,
-                           static_cast<int64_t>(b.conn.size()) / b.nodes_per, b.nodes_per, 0, 0, 0),
-              "put_block");
       f.check(ex_put_conn(f.id(), EX_ELEM_BLOCK, b.id, b.conn.data(), nullptr, nullptr),
               "put_conn");
-      names.push_back(b.name);
     }
-    put_names(f, EX_ELEM_BLOCK, names);
-
-    names.clear();
     for (const auto& s : side_sets) {
-      f.check(ex_put_set_param(f.id(), EX_SIDE_SET, s.id, static_cast<int64_t>(s.entries.size()), 0),
-              "put_set_param (side set)");
       f.check(ex_put_set(f.id(), EX_SIDE_SET, s.id, s.entries.data(), s.sides.data()),
               "put_set (side set)");
-      names.push_back(s.name);
     }
-    put_names(f, EX_SIDE_SET, names);
-
-    names.clear();
     for (const auto& s : node_sets) {
-      f.check(ex_put_set_param(f.id(), EX_NODE_SET, s.id, static_cast<int64_t>(s.entries.size()), 0),
-              "put_set_param (node set)");
       f.check(ex_put_set(f.id(), EX_NODE_SET, s.id, s.entries.data(), nullptr),
               "put_set (node set)");
-      names.push_back(s.name);
     }
-    put_names(f, EX_NODE_SET, names);
     f.close();
   } catch (...) {
     detail::remove_temp_file(tmp);
