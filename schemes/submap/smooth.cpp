@@ -5,6 +5,11 @@
 #include <set>
 
 namespace cooperage::submap {
+namespace {
+
+constexpr double kQualityNoise = 1e-12;
+
+}  // namespace
 
 double quad_scaled_jacobian(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& normals) {
   double q = 1.0;
@@ -61,7 +66,9 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
       bool accept = true;
       for (size_t k = 0; k < incident[v].size() && accept; ++k) {
         const double after = quality(incident[v][k]);
-        if (after < options.min_quality && after < before[k]) accept = false;
+        // A move that leaves a bad quad as it was (within noise) is taken,
+        // so a rigid transform of the model cannot flip the decision.
+        if (after < options.min_quality && after < before[k] - kQualityNoise) accept = false;
       }
       if (!accept) {
         x[v] = old_x;

@@ -131,7 +131,9 @@ SubmapPlan plan_submap(const geom::Model& model, int surface_id,
           const int d = (hole.directions[u] + r) % 4;
           score += (d < 2 ? 1.0 : -1.0) * chords[u].dot(ref[d % 2]);
         }
-        if (score > best + 1e-12) {
+        // A quarter turn wins only by more than noise: the scores are
+        // intrinsic (angles in the surface), so ties keep the smaller r.
+        if (score > best + 1e-9 * static_cast<double>(hole.uses.size())) {
           best = score;
           best_r = r;
         }

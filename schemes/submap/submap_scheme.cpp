@@ -7,6 +7,7 @@
 
 #include "framework/core/error.h"
 #include "schemes/submap/directions.h"
+#include "schemes/submap/hole_offsets.h"
 #include "schemes/submap/lattice.h"
 #include "schemes/submap/submap_plan.h"
 #include "schemes/submap/uv_chart.h"
@@ -58,19 +59,39 @@ LoopNodes walk_nodes(const mesh::MeshDB& db, int sid, size_t loop_index, const L
 }
 
 // Least-squares affine map from surface parameters to lattice coordinates,
-// fitted on the outer loop; used to place holes.
-Eigen::Matrix<double, 3, 2> fit_uv_to_lattice(const std::vector<BoundaryPoint>& pts) {
+// fitted on the outer loop; used to place holes. The parameters are taken
+// relative to their mean (`origin`), so a far-away parameter origin (a
+// translated model) costs no precision. An affine fit's predictions do not
+// depend on an affine change of the parameters, so neither the kernel's
+// choice of a plane's frame nor its origin changes where a hole goes.
+struct UvToLattice {
+  Vec2 origin = Vec2::Zero();
+  Eigen::Matrix<double, 3, 2> map = Eigen::Matrix<double, 3, 2>::Zero();
+
+  Eigen::Vector2d operator()(const Vec2& uv) const {
+    const Vec2 d = uv - origin;
+    const Eigen::RowVector3d row(d.x(), d.y(), 1.0);
+    return (row * map).transpose();
+  }
+};
+
+UvToLattice fit_uv_to_lattice(const std::vector<BoundaryPoint>& pts) {
+  UvToLattice fit;
+  for (const auto& b : pts) fit.origin += b.uv;
+  fit.origin /= static_cast<double>(pts.size());
   Eigen::MatrixXd A(static_cast<Eigen::Index>(pts.size()), 3);
   Eigen::MatrixXd B(static_cast<Eigen::Index>(pts.size()), 2);
   for (size_t k = 0; k < pts.size(); ++k) {
     const auto r = static_cast<Eigen::Index>(k);
-    A(r, 0) = pts[k].uv.x();
-    A(r, 1) = pts[k].uv.y();
+    const Vec2 d = pts[k].uv - fit.origin;
+    A(r, 0) = d.x();
+    A(r, 1) = d.y();
     A(r, 2) = 1.0;
     B(r, 0) = pts[k].ij[0];
     B(r, 1) = pts[k].ij[1];
   }
-  return A.colPivHouseholderQr().solve(B);
+  fit.map = A.colPivHouseholderQr().solve(B);
+  return fit;
 }
 
 std::string balance_text(const std::vector<BoundaryPoint>& pts, const LatticePoint& closure) {
@@ -133,39 +154,35 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
             std::max(bmax[static_cast<size_t>(a)], b.ij[static_cast<size_t>(a)]);
       }
     }
-    const Eigen::Matrix<double, 3, 2> fit = fit_uv_to_lattice(outer);
+    const UvToLattice fit = fit_uv_to_lattice(outer);
     for (size_t l = 1; l < loops.size(); ++l) {
       std::vector<BoundaryPoint> hole = loops[l].points;
       const Vec2 shift = chart.shift_near(hole.front().uv, 0.5 * (lo + hi)) - hole.front().uv;
-      Eigen::Vector2d predicted = Eigen::Vector2d::Zero();
+      Vec2 predicted = Vec2::Zero();
       LatticePoint hmin = hole.front().ij, hmax = hole.front().ij;
       for (auto& b : hole) {
         b.uv += shift;
-        const Eigen::RowVector3d row(b.uv.x(), b.uv.y(), 1.0);
-        const Eigen::RowVector2d ij = row * fit;
-        predicted += Eigen::Vector2d(ij(0) - b.ij[0], ij(1) - b.ij[1]);
+        const Eigen::Vector2d ij = fit(b.uv);
+        predicted += Vec2(ij(0) - b.ij[0], ij(1) - b.ij[1]);
         for (size_t a = 0; a < 2; ++a) {
           hmin[a] = std::min(hmin[a], b.ij[a]);
           hmax[a] = std::max(hmax[a], b.ij[a]);
         }
       }
       predicted /= static_cast<double>(hole.size());
-      // Candidate offsets keep the hole strictly inside the outer lattice box.
-      std::vector<std::pair<double, LatticePoint>> candidates;
-      for (int oi = bmin[0] + 1 - hmin[0]; oi <= bmax[0] - 1 - hmax[0]; ++oi) {
-        for (int oj = bmin[1] + 1 - hmin[1]; oj <= bmax[1] - 1 - hmax[1]; ++oj) {
-          const double d = std::hypot(oi - predicted.x(), oj - predicted.y());
-          candidates.push_back({d, {oi, oj}});
-        }
-      }
-      std::sort(candidates.begin(), candidates.end());
+      // Candidate offsets keep the hole strictly inside the outer lattice
+      // box; ties in distance (a half-integer prediction) go by the offsets,
+      // never by noise (hole_offsets.h).
+      const std::vector<LatticePoint> candidates =
+          rank_hole_offsets(predicted, {bmin[0] + 1 - hmin[0], bmin[1] + 1 - hmin[1]},
+                            {bmax[0] - 1 - hmax[0], bmax[1] - 1 - hmax[1]});
       constexpr size_t kMaxTries = 64;
       bool done = false;
       for (size_t c = 0; c < candidates.size() && c < kMaxTries && !done; ++c) {
         std::vector<BoundaryPoint> moved = hole;
         for (auto& b : moved) {
-          b.ij[0] += candidates[c].second[0];
-          b.ij[1] += candidates[c].second[1];
+          b.ij[0] += candidates[c][0];
+          b.ij[1] += candidates[c][1];
         }
         placed.push_back(moved);
         if (fill_lattice(placed).ok) {
