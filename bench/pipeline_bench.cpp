@@ -1,6 +1,6 @@
 // The whole pipeline (plan, intervals, curves, surfaces, volumes, inversion
-// check) on a brick meshed by the volume map: hexes per second end to end,
-// model already built, and peak memory.
+// check) on a brick, by the volume map and by the cooper sweep: hexes per
+// second end to end (model already built), quality, peak memory.
 #include "bench_models.h"
 #include "peak_memory.h"
 
@@ -14,24 +14,40 @@ namespace {
 
 using namespace cooperage;
 
-// A 1 x 1 x 1 brick at size 1/n: n^3 hexes.
-void BM_VolumeMapBrick(benchmark::State& state) {
+// A 1 x 1 x 1 brick at size 1/n (n^3 hexes) meshed by `scheme` (pinned):
+// the volume map and the cooper sweep on the same piece.
+void run_brick(benchmark::State& state, const char* scheme_name) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {1, 1, 1});
   const geom::Model model = bench.build_model();
   io::MeshSettings settings;
   settings.size = 1.0 / static_cast<double>(state.range(0));
+  io::VolumeSetting pin;
+  pin.id = 1;
+  pin.scheme = scheme_name;
+  settings.volumes.push_back(pin);
   const pipeline::MeshOptions options = selector::mesh_options(3, 1);
   size_t hexes = 0;
+  double min_sj = 0, median_sj = 0;
   for (auto _ : state) {
     const auto r = pipeline::mesh_model(model, settings, bench::builtin_registry(), options);
     hexes = r.mesh.hex_count();
+    const auto* sj = r.quality.blocks.front().find("scaled_jacobian");
+    min_sj = sj->min;
+    median_sj = sj->median;
   }
   state.counters["hexes"] = static_cast<double>(hexes);
   state.counters["hexes_per_s"] =
       benchmark::Counter(static_cast<double>(hexes), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["min_SJ"] = min_sj;
+  state.counters["median_SJ"] = median_sj;
   state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
 }
+
+void BM_VolumeMapBrick(benchmark::State& state) { run_brick(state, "map"); }
 BENCHMARK(BM_VolumeMapBrick)->Arg(20)->Arg(46)->Arg(100)->Unit(benchmark::kMillisecond);
+
+void BM_CooperBrick(benchmark::State& state) { run_brick(state, "cooper"); }
+BENCHMARK(BM_CooperBrick)->Arg(20)->Arg(46)->Arg(100)->Unit(benchmark::kMillisecond);
 
 }  // namespace
