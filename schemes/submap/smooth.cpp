@@ -46,6 +46,7 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
     return quad_scaled_jacobian(p, nn);
   };
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+    bool moved = false;
     for (size_t v = 0; v < n; ++v) {
       if (fixed[v] || neighbours[v].empty()) continue;
       // Length-weighted Laplacian: long edges pull harder, evening out sizes.
@@ -57,6 +58,12 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
         wsum += w;
       }
       if (wsum <= 0.0) continue;
+      // Already where the Laplacian wants it (an even lattice): no projection,
+      // no quality check, nothing to do. The tolerance is relative to the
+      // mean edge length, so the decision does not depend on placement.
+      const double mean_edge = wsum / static_cast<double>(neighbours[v].size());
+      if ((acc / wsum - x[v]).norm() <= 1e-12 * mean_edge) continue;
+      moved = true;
       std::vector<double> before;
       for (int q : incident[v]) before.push_back(quality(q));
       const Vec3 old_x = x[v], old_n = normals[v];
@@ -75,6 +82,7 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
         normals[v] = old_n;
       }
     }
+    if (!moved) break;  // a fixed point: further sweeps change nothing
   }
 }
 
