@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <map>
+#include <vector>
 
 namespace cooperage::app {
 namespace {
@@ -22,16 +23,33 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     schemes[{t.dim, t.id}] = t.scheme;
   }
   char line[256];
-  std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %9s\n", "entity", "scheme",
-                "type", "elements", "min SJ", "mean SJ", "time [s]");
+  std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %8s %8s %9s\n", "entity", "scheme",
+                "type", "elements", "min SJ", "mean SJ", "max SJ", "inverted", "time [s]");
   out << line;
+  std::vector<std::size_t> histogram;
+  double lo = -1, hi = 1;
   for (const auto& b : result.quality.blocks) {
     const auto* sj = b.find("scaled_jacobian");
     const std::string entity = (b.dim == 3 ? "volume " : "surface ") + std::to_string(b.id);
-    std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10zu %8.4f %8.4f %9.3f\n", entity.c_str(),
-                  schemes[{b.dim, b.id}].c_str(), std::string(quality::to_string(b.type)).c_str(),
-                  b.count, sj ? sj->min : 0.0, sj ? sj->mean : 0.0, seconds[{b.dim, b.id}]);
+    std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10zu %8.4f %8.4f %8.4f %8zu %9.3f\n",
+                  entity.c_str(), schemes[{b.dim, b.id}].c_str(),
+                  std::string(quality::to_string(b.type)).c_str(), b.count, sj ? sj->min : 0.0,
+                  sj ? sj->mean : 0.0, sj ? sj->max : 0.0, sj ? sj->inverted : std::size_t{0},
+                  seconds[{b.dim, b.id}]);
     out << line;
+    if (!sj) continue;
+    if (histogram.empty()) histogram.assign(sj->histogram.size(), 0);
+    lo = sj->histogram_lo;
+    hi = sj->histogram_hi;
+    for (std::size_t i = 0; i < sj->histogram.size() && i < histogram.size(); ++i) {
+      histogram[i] += sj->histogram[i];
+    }
+  }
+  if (!histogram.empty()) {
+    out << "scaled Jacobian histogram, " << histogram.size() << " bins over [" << fmt("%g", lo)
+        << ", " << fmt("%g", hi) << "]:";
+    for (std::size_t n : histogram) out << " " << n;
+    out << "\n";
   }
   out << "nodes " << result.mesh.mesh.node_count() << ", hexes " << result.mesh.mesh.hex_count()
       << ", wedges " << result.mesh.mesh.wedge_count() << ", quads "
