@@ -156,6 +156,35 @@ TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
   EXPECT_EQ(q.out.find("hex"), std::string::npos) << q.out;
 }
 
+TEST_F(RunCommand, PlanShowsEveryChoiceWithReasonsWithoutMeshing) {
+  fs::copy_file(kSource + "/examples/bracket_prism.xml", path("bracket_prism.xml"));
+  const auto r = run_command(kCli + " plan " + path("bracket_prism.xml"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("volume 1: cooper"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("- map: volume 1: volume map needs 6 mappable surfaces"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("meshed by its volume"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("bracket_prism.vtu")));  // nothing meshed, nothing written
+  // JSON for programs: valid, one entry per volume and surface.
+  const auto j = run_command(kCli + " plan --json --size 0.5 " + path("bracket_prism.xml"));
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  std::ofstream(path("plan.json")) << j.out;
+  const auto check = run_command(std::string(COOPERAGE_DEBIAN_PYTHON) +
+                                 " -c \"import json; d=json.load(open('" + path("plan.json") +
+                                 "')); print(d['volumes'][0]['scheme'], len(d['surfaces']), "
+                                 "d['intervals_checked'])\"");
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(check.out, "cooper 12 True\n");
+}
+
+TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
+  const std::string job = journal("ball.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
+)");
+  const auto r = run_command(kCli + " plan " + job);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no hex scheme applies"), std::string::npos) << r.err;
+}
+
 TEST_F(RunCommand, MeshCommandRejectsANonPositiveSize) {
   const auto r = run_command(kCli + " mesh x.step --size -1 -o y.exo");
   EXPECT_EQ(r.exit_code, 2);
