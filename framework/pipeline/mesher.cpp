@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -57,6 +58,22 @@ void report(const MeshOptions& options, const std::string& stage, size_t done, s
   if (options.progress) options.progress(stage, done, total);
 }
 
+// One stage: mesh every entity of `ids` in parallel, then commit the results
+// in id order (so the node numbering never depends on the thread count).
+template <class MeshOne, class Commit>
+void run_stage(const char* stage, int dim, const std::vector<int>& ids,
+               const std::map<int, PlanEntry>& plan, MeshResult& result,
+               const MeshOptions& options, MeshOne mesh_one, Commit commit) {
+  report(options, stage, 0, ids.size());
+  auto meshes = for_each_entity(ids, mesh_one);
+  for (size_t i = 0; i < ids.size(); ++i) {
+    commit(meshes[i].mesh, ids[i], result.mesh);
+    meshes[i].mesh = {};  // release the local copy now
+    result.timings.push_back({dim, ids[i], plan.at(ids[i]).scheme, meshes[i].seconds});
+  }
+  report(options, stage, ids.size(), ids.size());
+}
+
 }  // namespace
 
 MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
@@ -87,33 +104,23 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   for (const auto& [id, entry] : result.plan.surfaces) {
     if (entry.scheme != scheme::kMeshedByVolume) surfaces.push_back(id);
   }
-  report(options, "surfaces", 0, surfaces.size());
-  auto surface_meshes = for_each_entity(surfaces, [&](int id) {
-    const scheme::SurfaceScheme* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
-    return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
-  });
-  for (size_t i = 0; i < surfaces.size(); ++i) {
-    commit_surface(surface_meshes[i].mesh, surfaces[i], result.mesh);
-    surface_meshes[i].mesh = {};  // release the local copy now
-    result.timings.push_back(
-        {2, surfaces[i], result.plan.surfaces.at(surfaces[i]).scheme, surface_meshes[i].seconds});
-  }
-  report(options, "surfaces", surfaces.size(), surfaces.size());
+  run_stage(
+      "surfaces", 2, surfaces, result.plan.surfaces, result, options,
+      [&](int id) {
+        const auto* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
+        return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
+      },
+      commit_surface);
 
   std::vector<int> volumes;
   for (const auto& [id, entry] : result.plan.volumes) volumes.push_back(id);
-  report(options, "volumes", 0, volumes.size());
-  auto volume_meshes = for_each_entity(volumes, [&](int id) {
-    const scheme::VolumeScheme* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
-    return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
-  });
-  for (size_t i = 0; i < volumes.size(); ++i) {
-    commit_volume(volume_meshes[i].mesh, volumes[i], result.mesh);
-    volume_meshes[i].mesh = {};  // release the local copy now
-    result.timings.push_back(
-        {3, volumes[i], result.plan.volumes.at(volumes[i]).scheme, volume_meshes[i].seconds});
-  }
-  report(options, "volumes", volumes.size(), volumes.size());
+  run_stage(
+      "volumes", 3, volumes, result.plan.volumes, result, options,
+      [&](int id) {
+        const auto* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
+        return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
+      },
+      commit_volume);
 
   // Never hand back inverted elements silently.
   result.quality = assess_quality(result.mesh, model, {});

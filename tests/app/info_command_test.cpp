@@ -1,5 +1,6 @@
 // `cooperage info` end to end: the real binary on real files.
 #include "run_command.h"
+#include "temp_dir.h"
 
 #include "framework/geometry/occ/workbench.h"
 
@@ -18,15 +19,8 @@ using testing::run_command;
 const std::string kCli = COOPERAGE_CLI;
 const std::string kSource = COOPERAGE_SOURCE_DIR;
 
-class InfoCommand : public ::testing::Test {
+class InfoCommand : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cooperage-info-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
   // A fused boss-on-cylinder written as STEP.
   std::string boss_step() const {
     occ::Workbench bench;
@@ -37,8 +31,6 @@ class InfoCommand : public ::testing::Test {
     bench.write(file);
     return file;
   }
-
-  fs::path dir_;
 };
 
 size_t count_lines(const std::string& s) {

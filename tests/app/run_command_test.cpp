@@ -1,6 +1,7 @@
 // `cooperage run`, `cooperage mesh` and `cooperage quality` end to end: the
 // real binary, exit codes, files written or not.
 #include "run_command.h"
+#include "temp_dir.h"
 
 #include "framework/geometry/occ/workbench.h"
 
@@ -19,19 +20,12 @@ using testing::run_command;
 const std::string kCli = COOPERAGE_CLI;
 const std::string kSource = COOPERAGE_SOURCE_DIR;
 
-class RunCommand : public ::testing::Test {
+class RunCommand : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cooperage-run-cli-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string journal(const std::string& name, const std::string& body) const {
     std::ofstream(path(name)) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
     return path(name);
   }
-  fs::path dir_;
 };
 
 size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
