@@ -3,6 +3,7 @@
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
+#include "schemes/pave/pave_scheme.h"
 #include "schemes/submap/submap_scheme.h"
 
 namespace cooperage {
@@ -14,6 +15,7 @@ BuiltinOptions builtin_options(const io::MeshSettings& settings) {
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options) {
   registry.add(map::make_surface_map());
   registry.add(submap::make_submap(options.vertex_types));
+  registry.add(pave::make_pave());
   registry.add(map::make_volume_map());
   cooper::CooperOptions cooper_options;
   for (const io::VolumeSetting& v : options.volumes) {

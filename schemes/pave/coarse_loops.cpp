@@ -1,0 +1,241 @@
+#include "schemes/pave/coarse_loops.h"
+
+#include "schemes/pave/split_to_quads.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace cooperage::pave::detail {
+
+namespace {
+
+/// Interior angle of the face at node k of loop L (face on the left), in (0, 2 pi).
+double interior_angle(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t k) {
+  const size_t n = L.size();
+  const Eigen::Vector2d& a = P[static_cast<size_t>(L[(k + n - 1) % n])];
+  const Eigen::Vector2d& b = P[static_cast<size_t>(L[k])];
+  const Eigen::Vector2d& c = P[static_cast<size_t>(L[(k + 1) % n])];
+  return M_PI - std::atan2(cross2(b - a, c - b), (b - a).dot(c - b));
+}
+
+}  // namespace
+
+double skipped_quality(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
+  double worst = 1.0;
+  for (size_t k = 1 - offset; k < L.size(); k += 2) worst = std::min(worst, std::sin(0.5 * interior_angle(P, L, k)));
+  return worst;
+}
+
+size_t choose_parity(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L) {
+  const double q0 = skipped_quality(P, L, 0), q1 = skipped_quality(P, L, 1);
+  if (std::abs(q0 - q1) > 1e-9) return q1 > q0 ? 1 : 0;
+  // Tie: emphasise strong corners as coarse vertices.
+  double score[2] = {0.0, 0.0};
+  for (size_t k = 0; k < L.size(); ++k) {
+    const double turn = M_PI - interior_angle(P, L, k);
+    score[k % 2] += turn * turn;
+  }
+  return score[1] > score[0] * (1.0 + 1e-9) ? 1 : 0;
+}
+
+std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int first_new,
+                                  std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads) {
+  const size_t n = L.size();
+  if (n % 2 != 0) return L;  // odd loops are left as they are
+  const size_t offset = choose_parity(P, L);
+  std::vector<char> wrap(n, 0);
+  bool any = false;
+  for (size_t k = 1 - offset; k < n; k += 2) {
+    // Neighbouring tips share a node: wrap one per pass.
+    if (L[k] < first_new && interior_angle(P, L, k) > limit && !(k >= 2 && wrap[k - 2]) && !(k + 2 >= n && wrap[(k + 2) % n])) {
+      wrap[k] = any = true;
+    }
+  }
+  if (!any) return L;
+  std::vector<int> out;
+  for (size_t k = 0; k < n; ++k) {
+    if (!wrap[k]) {
+      out.push_back(L[k]);
+      continue;
+    }
+    // Paving's corner template: three quads around the tip p, each taking a
+    // third of its angle; the loop a, p, b becomes a, a', q1, q2, q3, b', b.
+    const int ia = L[(k + n - 1) % n], ip = L[k], ib = L[(k + 1) % n];
+    const Eigen::Vector2d a = P[static_cast<size_t>(ia)], p = P[static_cast<size_t>(ip)], b = P[static_cast<size_t>(ib)];
+    const double theta = interior_angle(P, L, k);
+    const double h = 0.5 * ((a - p).norm() + (b - p).norm());
+    const Eigen::Vector2d u = (b - p).normalized();
+    auto dir = [&](double ang) {
+      return Eigen::Vector2d(u.x() * std::cos(ang) - u.y() * std::sin(ang), u.x() * std::sin(ang) + u.y() * std::cos(ang));
+    };
+    const Eigen::Vector2d q3 = p + h * dir(theta / 3), q1 = p + h * dir(2 * theta / 3);
+    const Eigen::Vector2d q2 = p + 1.3 * h * dir(theta / 2);
+    const auto add = [&](const Eigen::Vector2d& x) {
+      P.push_back(x);
+      return static_cast<int>(P.size()) - 1;
+    };
+    const int n3 = add(q3), n2 = add(q2), n1 = add(q1);
+    const int na = add(a + (q1 - p)), nb = add(b + (q3 - p));
+    quads.push_back({ip, ib, nb, n3});
+    quads.push_back({ip, n3, n2, n1});
+    quads.push_back({ia, ip, n1, na});
+    // out already ends with a (or will start with it); insert the new path.
+    for (int v : {na, n1, n2, n3, nb}) out.push_back(v);
+  }
+  return out;
+}
+
+bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
+  double fine = 0.0, coarse = 0.0;
+  const size_t n = L.size();
+  for (size_t k = 0; k < n; ++k) {
+    fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
+  }
+  for (size_t k = offset; k < n; k += 2) {
+    coarse += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 2) % n])]);
+  }
+  // Same orientation, and not folded flat.
+  return fine * coarse > 0 && std::abs(coarse) > 0.05 * std::abs(fine);
+}
+
+namespace {
+
+/// Signed area of the polygon of the picked loop nodes, times 2.
+double picked_area(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, const std::vector<size_t>& picks) {
+  double a = 0.0;
+  for (size_t j = 0; j < picks.size(); ++j) {
+    a += cross2(P[static_cast<size_t>(L[picks[j]])], P[static_cast<size_t>(L[picks[(j + 1) % picks.size()]])]);
+  }
+  return a;
+}
+
+/// Coarse vertices of an odd loop: s, s + 2, ..., s + n - 1; the last coarse
+/// edge spans one fine edge (an odd edge). s is the rank-th best start by
+/// the worst skipped node (rank > 0: retries move the odd edge).
+std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, int rank) {
+  const size_t n = L.size();
+  std::vector<double> q(n);
+  for (size_t k = 0; k < n; ++k) q[k] = std::sin(0.5 * interior_angle(P, L, k));
+  double fine = 0.0;
+  for (size_t k = 0; k < n; ++k) fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
+  const size_t stride = std::max<size_t>(1, n / 400);
+  std::vector<std::pair<double, size_t>> ranked;
+  for (size_t s = 0; s < n; s += stride) {
+    double worst = 1.0;
+    for (size_t k = s + 1; k + 1 < s + n; k += 2) worst = std::min(worst, q[k % n]);
+    std::vector<size_t> picks;
+    for (size_t k = s; k < s + n; k += 2) picks.push_back(k % n);
+    const double coarse = picked_area(P, L, picks);
+    if (fine * coarse > 0 && std::abs(coarse) > 0.05 * std::abs(fine)) ranked.emplace_back(-worst, s);
+  }
+  if (ranked.empty()) {
+    throw std::runtime_error("an odd loop of " + std::to_string(n) +
+                             " nodes is too coarse for its shape (its every-other-node polygon folds)");
+  }
+  std::stable_sort(ranked.begin(), ranked.end());
+  const size_t best = ranked[std::min(static_cast<size_t>(std::max(rank, 0)) * 3, ranked.size() - 1)].second;
+  std::vector<size_t> picks;
+  for (size_t k = best; k < best + n; k += 2) picks.push_back(k % n);
+  return picks;
+}
+
+}  // namespace
+
+CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
+                               const std::vector<std::vector<int>>& loops, bool seed_rows, int odd_rank) {
+  CoarseBoundary out;
+  for (const auto& L : loops) {
+    const size_t n = L.size();
+    auto at = [&](size_t k) { return P[static_cast<size_t>(L[k % n])]; };
+    std::vector<size_t> picks;
+    if (n % 2 == 0) {
+      size_t offset = choose_parity(P, L);
+      if (!coarse_loop_valid(P, L, offset)) {
+        offset = 1 - offset;
+        if (!coarse_loop_valid(P, L, offset)) {
+          throw std::runtime_error("a loop of " + std::to_string(n) +
+                                   " nodes is too coarse for its shape (its every-other-node polygon folds)");
+        }
+      }
+      for (size_t k = offset; k < n; k += 2) picks.push_back(k);
+    } else {
+      picks = odd_loop_picks(P, L, odd_rank);
+    }
+    const int first = static_cast<int>(out.points.size());
+    std::vector<int> coarse;
+    for (size_t k : picks) {
+      const Eigen::Vector2d a = at(k + n - 1), b = at(k), c = at(k + 1);
+      const double interior = M_PI - std::atan2(cross2(b - a, c - b), (b - a).dot(c - b));
+      // FASTQ's node classes by angle (ALGORITHMS.md sec. 4): END < 135 deg
+      // (1 cell), SIDE < 225 (2), CORNER < 315 (3), REVERSAL (4).
+      const double deg = interior * 180.0 / M_PI;
+      out.min_cells.push_back(deg < 135.0 ? 1 : deg < 225.0 ? 2 : deg < 315.0 ? 3 : 4);
+      coarse.push_back(static_cast<int>(out.points.size()));
+      out.points.push_back(P[static_cast<size_t>(L[k])]);
+      out.fine_of_coarse.push_back(L[k]);
+    }
+    const size_t m = coarse.size();
+    for (size_t j = 0; j < m; ++j) {
+      const int a = coarse[j], b = coarse[(j + 1) % m];
+      if ((picks[(j + 1) % m] + n - picks[j]) % n == 2) {
+        out.midpoint[undirected_key(a, b)] = L[(picks[j] + 1) % n];
+      } else {
+        out.odd_edges.push_back(undirected_key(a, b));
+      }
+    }
+    for (size_t j = 0; j < m; ++j) {
+      const Eigen::Vector2d& x = out.points[static_cast<size_t>(first) + j];
+      const Eigen::Vector2d& xp = out.points[static_cast<size_t>(first) + (j + m - 1) % m];
+      const Eigen::Vector2d& xn = out.points[static_cast<size_t>(first) + (j + 1) % m];
+      const double lp = (x - xp).norm(), ln = (x - xn).norm();
+      const double size = 0.5 * (lp + ln);
+      out.sizes.push_back(size);
+      const double interior = M_PI - std::atan2(cross2(x - xp, xn - x), (x - xp).dot(xn - x));
+      if (seed_rows && m >= 3 && interior > 150.0 * M_PI / 180.0 && interior < 210.0 * M_PI / 180.0) {
+        const Eigen::Vector2d tin = (x - xp) / lp, tout = (xn - x) / ln;
+        const Eigen::Vector2d nrm = Eigen::Vector2d(-tin.y() - tout.y(), tin.x() + tout.x()).normalized();
+        out.seeds.push_back(x + 0.72 * size * nrm);
+        out.seed_from.push_back(coarse[j]);
+        out.seed_sizes.push_back(size);
+      }
+    }
+    out.loops.push_back(std::move(coarse));
+  }
+  return out;
+}
+
+std::vector<int> ring_around_small_hole(const std::vector<int>& loop, double width,
+                                        std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads) {
+  // Counter-clockwise corners q0..q3 of the hole: (s, t) = (0,0), (1,0), (1,1), (0,1).
+  const Eigen::Vector2d q[4] = {P[static_cast<size_t>(loop[0])], P[static_cast<size_t>(loop[3])],
+                                P[static_cast<size_t>(loop[2])], P[static_cast<size_t>(loop[1])]};
+  const double s_of[4] = {-width, 0.0, 1.0, 1.0 + width};
+  int g[4][4];
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      const double s = s_of[i], t = s_of[j];
+      const Eigen::Vector2d x = (1 - s) * (1 - t) * q[0] + s * (1 - t) * q[1] + s * t * q[2] +
+                                (1 - s) * t * q[3];
+      if ((i == 1 || i == 2) && (j == 1 || j == 2)) continue;
+      g[i][j] = static_cast<int>(P.size());
+      P.push_back(x);
+    }
+  }
+  g[1][1] = loop[0];
+  g[2][1] = loop[3];
+  g[2][2] = loop[2];
+  g[1][2] = loop[1];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (i == 1 && j == 1) continue;
+      quads.push_back({g[i][j], g[i + 1][j], g[i + 1][j + 1], g[i][j + 1]});
+    }
+  }
+  const std::vector<int> ccw = {g[0][0], g[1][0], g[2][0], g[3][0], g[3][1], g[3][2],
+                                g[3][3], g[2][3], g[1][3], g[0][3], g[0][2], g[0][1]};
+  return std::vector<int>(ccw.rbegin(), ccw.rend());
+}
+
+}  // namespace cooperage::pave::detail

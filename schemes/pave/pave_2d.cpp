@@ -1,0 +1,282 @@
+#include "schemes/pave/pave_2d.h"
+
+#include "framework/core/error.h"
+#include "schemes/pave/cdt_2d.h"
+#include "schemes/pave/cleanup_2d.h"
+#include "schemes/pave/coarse_loops.h"
+#include "schemes/pave/parity_paths.h"
+#include "schemes/pave/recombine.h"
+#include "schemes/pave/split_to_quads.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+#include <stdexcept>
+#include <string>
+
+namespace cooperage::pave {
+namespace {
+
+using V2 = Eigen::Vector2d;
+
+[[noreturn]] void invalid(const std::string& message) {
+  throw MeshingError(ErrorCode::InvalidInput, message);
+}
+[[noreturn]] void failed(const std::string& message) {
+  throw MeshingError(ErrorCode::MeshingFailed, message);
+}
+
+double signed_area(const std::vector<V2>& P, const std::vector<int>& loop) {
+  double a = 0.0;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    a += detail::cross2(P[static_cast<size_t>(loop[k])], P[static_cast<size_t>(loop[(k + 1) % loop.size()])]);
+  }
+  return 0.5 * a;
+}
+
+/// A rigid frame fixed by the input itself (first node, first edge) plus a
+/// scale, with coordinates snapped to a fine lattice, so that a rotated or
+/// translated input gives bit-identical working coordinates.
+struct CanonicalFrame {
+  V2 origin, ex;
+  double scale = 1.0;
+  static constexpr double kQuantum = 1.0 / 1099511627776.0;  // 2^-40
+
+  V2 to(const V2& p) const {
+    const V2 d = (p - origin) / scale;
+    V2 r(d.dot(ex), detail::cross2(ex, d));
+    return V2(std::round(r.x() / kQuantum) * kQuantum, std::round(r.y() / kQuantum) * kQuantum);
+  }
+  V2 from(const V2& r) const { return origin + scale * (r.x() * ex + r.y() * V2(-ex.y(), ex.x())); }
+};
+
+/// The last line of defence: the quads must tile the domain exactly. Every
+/// loop edge is used once in its direction and never against it, every
+/// other edge once in each direction, and the quads' area is the loops' area.
+void check_tiling(const std::vector<V2>& P, const std::vector<std::vector<int>>& loops,
+                  const std::vector<detail::Quad>& quads) {
+  std::unordered_map<std::uint64_t, int> used;
+  used.reserve(quads.size() * 4);
+  double area = 0.0;
+  for (const auto& q : quads) {
+    for (int c = 0; c < 4; ++c) {
+      const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(q[static_cast<size_t>(c)])) << 32) |
+                                static_cast<std::uint32_t>(q[static_cast<size_t>((c + 1) % 4)]);
+      if (++used[key] > 1) failed("two quads share an edge in the same direction");
+    }
+    area += 0.5 * detail::cross2(P[static_cast<size_t>(q[2])] - P[static_cast<size_t>(q[0])],
+                                 P[static_cast<size_t>(q[3])] - P[static_cast<size_t>(q[1])]);
+  }
+  auto key_of = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  size_t boundary_edges = 0;
+  double loop_area = 0.0;
+  for (const auto& l : loops) {
+    for (size_t k = 0; k < l.size(); ++k) {
+      const int a = l[k], b = l[(k + 1) % l.size()];
+      if (!used.count(key_of(a, b)) || used.count(key_of(b, a))) failed("a boundary edge is not covered exactly once");
+      loop_area += 0.5 * detail::cross2(P[static_cast<size_t>(a)], P[static_cast<size_t>(b)]);
+      ++boundary_edges;
+    }
+  }
+  size_t unpaired = 0;
+  for (const auto& [key, count] : used) {
+    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+    if (!used.count(key_of(b, a))) ++unpaired;
+  }
+  if (unpaired != boundary_edges) failed("the quads leave a gap or overlap (free interior edge)");
+  if (std::abs(area - loop_area) > 1e-9 * std::max(std::abs(loop_area), 1e-300) + 1e-12) {
+    failed("the quads do not tile the domain (area mismatch)");
+  }
+}
+
+/// Steps (b)-(f) on the canonical points P (the nb loop nodes first) with
+/// one set of options; returns the quads and extends P.
+std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::vector<int>>& ids, int nb,
+                                    const PaveOptions& options) {
+  std::vector<detail::Quad> quads;
+  if (ids.size() == 1 && ids[0].size() == 4) {
+    quads.push_back({0, 1, 2, 3});
+  } else {
+    // (b) coarse loops; small holes first get a ring of quads.
+    std::vector<std::vector<int>> work = ids;
+    for (size_t l = 0; l < work.size(); ++l) {
+      if (work[l].size() != 4) continue;
+      work[l] = detail::ring_around_small_hole(work[l], options.ring_width, P, quads);
+    }
+    for (auto& loop : work) {
+      for (int pass = 0; pass < 4; ++pass) {
+        std::vector<int> wrapped = detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads);
+        if (wrapped.size() == loop.size()) break;
+        loop = std::move(wrapped);
+      }
+    }
+    detail::CoarseBoundary coarse;
+    try {
+      coarse = detail::coarse_boundary(P, work, options.boundary_rows, options.odd_edge_rank);
+    } catch (const std::runtime_error& err) {
+      failed(err.what());
+    }
+
+    // (c) refined constrained Delaunay triangulation of the coarse loops.
+    detail::CdtInput in;
+    in.points = coarse.points;
+    in.sizes = coarse.sizes;
+    in.loops = coarse.loops;
+    in.min_triangles = coarse.min_cells;
+    in.seeds = coarse.seeds;
+    in.seed_from = coarse.seed_from;
+    in.seed_sizes = coarse.seed_sizes;
+    detail::Triangulation2D tri;
+    try {
+      tri = detail::constrained_delaunay(in);
+    } catch (const std::runtime_error& err) {
+      failed(std::string("triangulation of the boundary failed (") + err.what() +
+             "); the loops may touch or cross");
+    }
+    // (d) recombination, (e) all-quad split.
+    const std::vector<detail::Cell> cells = detail::recombine(tri, options.recombine_quality, coarse.min_cells);
+
+    std::vector<int> fine_of_coarse(tri.points.size(), -1);
+    for (size_t c = 0; c < coarse.fine_of_coarse.size(); ++c) fine_of_coarse[c] = coarse.fine_of_coarse[c];
+    std::unordered_set<std::uint64_t> no_midpoint;
+    try {
+      no_midpoint = detail::parity_paths(cells, coarse.odd_edges);
+    } catch (const std::runtime_error& err) {
+      failed(err.what());
+    }
+    detail::split_to_quads(cells, tri.points, fine_of_coarse, coarse.midpoint, P, quads, no_midpoint);
+  }
+
+  // (f) cleanup and smoothing.
+  std::vector<char> fixed(P.size(), 0);
+  for (int i = 0; i < nb; ++i) fixed[static_cast<size_t>(i)] = 1;
+  if (options.cleanup) {
+    detail::remove_doublets(P, quads, fixed);
+    for (int pass = 0; pass < 3 && detail::collapse_diamonds(P, quads, fixed) > 0; ++pass) {
+    }
+    detail::remove_doublets(P, quads, fixed);
+  }
+  detail::smooth_quads_2d(P, quads, fixed, options.smooth);
+  for (size_t k = 0; k < quads.size(); ++k) {
+    if (options.check_inversion && !(detail::scaled_jacobian_2d(P, quads[k]) > 1e-6)) {
+      failed("quad " + std::to_string(k) + " is inverted or degenerate after smoothing");
+    }
+  }
+
+  if (options.check_inversion) check_tiling(P, ids, quads);
+
+  return quads;
+}
+
+}  // namespace
+
+QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions& options) {
+  if (loops.empty()) invalid("no boundary loop");
+  size_t total = 0;
+  for (const auto& l : loops) total += l.size();
+  if (total % 2 != 0) {
+    invalid("odd number of boundary nodes (" + std::to_string(total) +
+            "): no all-quad mesh exists; the boundary interval count must be even");
+  }
+  for (size_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].size() < 4) {
+      invalid("loop " + std::to_string(l) + " has " + std::to_string(loops[l].size()) +
+              " boundary nodes; pave needs at least 4 on every loop");
+    }
+  }
+
+  // (a) canonical frame.
+  CanonicalFrame frame;
+  frame.origin = loops[0][0];
+  const V2 e = loops[0][1] - loops[0][0];
+  if (!(e.norm() > 0)) invalid("the first two boundary nodes coincide");
+  frame.ex = e.normalized();
+  // A rotation-invariant scale: the largest distance from the first node.
+  double reach = 0.0;
+  for (const auto& l : loops) {
+    for (const auto& p : l) reach = std::max(reach, (p - frame.origin).norm());
+  }
+  frame.scale = std::max(reach, 1e-300);
+  std::vector<V2> P0;
+  P0.reserve(total);
+  std::vector<std::vector<int>> ids(loops.size());
+  for (size_t l = 0; l < loops.size(); ++l) {
+    for (const V2& p : loops[l]) {
+      ids[l].push_back(static_cast<int>(P0.size()));
+      P0.push_back(frame.to(p));
+    }
+  }
+  const int nb = static_cast<int>(P0.size());
+  if (signed_area(P0, ids[0]) <= 0) invalid("the outer loop is not counter-clockwise");
+  for (size_t l = 1; l < ids.size(); ++l) {
+    if (signed_area(P0, ids[l]) >= 0) invalid("hole loop " + std::to_string(l) + " is not clockwise");
+  }
+
+  for (size_t l = 1; l < ids.size(); ++l) {
+    // Crossing number of the hole's first node against the outer loop.
+    const V2 q = P0[static_cast<size_t>(ids[l][0])];
+    bool in = false;
+    const auto& o = ids[0];
+    for (size_t k = 0, j = o.size() - 1; k < o.size(); j = k++) {
+      const V2 a = P0[static_cast<size_t>(o[k])], b = P0[static_cast<size_t>(o[j])];
+      if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+        in = !in;
+      }
+    }
+    if (!in) invalid("hole loop " + std::to_string(l) + " lies outside the outer loop");
+  }
+
+  if (ids.size() > 1 && ids[0].size() == 4) invalid("an outer loop of 4 nodes cannot surround holes; give it at least 6");
+
+  // A failed attempt is retried with other settings: wrapping more tips,
+  // a narrower ring around 4-node holes, no tip wrapping, stricter
+  // recombination (fewer, better quads).
+  std::vector<PaveOptions> attempts(4, options);
+  attempts[1].tip_angle = 200.0;
+  attempts[1].ring_width = 0.5;
+  attempts[2].tip_angle = 360.0;
+  attempts[2].recombine_quality = 0.6;
+  attempts[3].tip_angle = 180.0;
+  attempts[3].ring_width = 0.35;
+  attempts[3].recombine_quality = 0.9;
+  for (size_t k = 0; k < attempts.size(); ++k) attempts[k].odd_edge_rank = static_cast<int>(k);
+  std::vector<V2> P;
+  std::vector<detail::Quad> quads;
+  // An attempt whose worst quad is below options.retry_below is kept only
+  // if no other attempt does better.
+  double best = -1.0;
+  for (size_t k = 0; k < attempts.size(); ++k) {
+    std::vector<V2> Pk = P0;
+    try {
+      std::vector<detail::Quad> qk = mesh_once(Pk, ids, nb, attempts[k]);
+      double worst = 1.0;
+      for (const auto& q : qk) worst = std::min(worst, detail::scaled_jacobian_2d(Pk, q));
+      if (worst > best) {
+        best = worst;
+        P = std::move(Pk);
+        quads = std::move(qk);
+      }
+      if (worst >= options.retry_below) break;
+    } catch (const MeshingError& err) {
+      if (err.code() != ErrorCode::MeshingFailed || !options.check_inversion) throw;
+      if (k + 1 == attempts.size() && best < 0) throw;
+    }
+  }
+
+  QuadMesh2D out;
+  out.boundary_count = nb;
+  out.points.resize(P.size());
+  for (size_t l = 0, i = 0; l < loops.size(); ++l) {
+    for (const V2& p : loops[l]) out.points[i++] = p;
+  }
+  for (size_t i = static_cast<size_t>(nb); i < P.size(); ++i) out.points[i] = frame.from(P[i]);
+  out.quads = std::move(quads);
+  return out;
+}
+
+}  // namespace cooperage::pave

@@ -1,0 +1,79 @@
+// The 2D core of the pave scheme: unstructured all-quad meshing of a planar
+// domain bounded by closed loops of given boundary nodes. Pure function on
+// value types; no CAD (the SurfaceScheme in pave_scheme.h maps surfaces to 2D).
+//
+// Algorithm (a documented alternative to classic paving, Blacker &
+// Stephenson 1991, with the same contract: all quads, boundary nodes given
+// and untouched, any number of holes, sizes taken from the boundary):
+//  (a) canonical frame (translation, rotation, scale, snapping) so that a
+//      rigidly moved input gives the moved mesh;
+//  (b) every loop's nodes are split into "coarse" vertices (every other
+//      node, the parity chosen so that the worst skipped node is best) and
+//      skipped nodes (coarse_loops.h); a hole with 4 nodes first gets a ring
+//      of 8 quads (a 12-node loop), and a skipped reflex tip (> 250 deg)
+//      paving's corner template (3 quads, the loop grows by 4 nodes);
+//  (c) constrained Delaunay triangulation of the coarse loops (cdt_2d.h),
+//      first seeded with a point 0.72 coarse sizes inward of every flat
+//      coarse vertex (paving's first row at the coarse level), then refined
+//      to twice the local boundary spacing: sizes grade smoothly between
+//      loops of different spacing by interpolation;
+//  (d) recombination of triangle pairs into quads, greedy by quality plus
+//      augmenting paths (recombine.h);
+//  (e) every quad split into 4 and every triangle into 3 quads
+//      (split_to_quads.h): a coarse loop edge's midpoint is exactly the skipped
+//      boundary node, so no node is added on the boundary; the boundary rows
+//      are quads with an edge on the boundary;
+//  (f) cleanup (doublets, diamonds) and smoothing that never inverts
+//      (cleanup_2d.h, smooth_2d.h); checks: every quad valid, the quads
+//      tile the domain exactly.
+//  Odd loops: a loop with an odd node count keeps one coarse edge without
+//  midpoint; such edges are paired by paths of coarse cells that lose their
+//  midpoints too (parity_paths.h), so only the total must be even, as in
+//  paving. A failed attempt, or one whose worst quad is below
+//  retry_below, is retried with other settings (up to 3 retries; the best
+//  valid attempt wins).
+// Requirement: an even total node count and at least 4 nodes per loop.
+#pragma once
+
+#include "schemes/pave/smooth_2d.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <vector>
+
+namespace cooperage::pave {
+
+struct PaveOptions {
+  detail::SmoothOptions smooth;      ///< the final smoothing
+  double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
+  double ring_width = 0.75;          ///< ring around a 4-node hole, in hole widths
+  double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
+  bool cleanup = true;               ///< remove doublets
+  bool boundary_rows = true;         ///< seed a coarse row along flat boundary stretches
+  double retry_below = 0.2;          ///< worst scaled Jacobian below which other settings are tried too
+  int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
+  bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
+};
+
+/// A 2D quad mesh: boundary nodes first, in the input order (loop by loop),
+/// at exactly their input positions; quads counter-clockwise.
+struct QuadMesh2D {
+  std::vector<Eigen::Vector2d> points;
+  std::vector<std::array<int, 4>> quads;
+  int boundary_count = 0;
+};
+
+/// Meshes the domain bounded by `loops` with quads.
+/// \param[in] loops  outer loop counter-clockwise first, then holes clockwise;
+///                   each a closed ring of boundary points without repetition
+/// \throws MeshingError(InvalidInput) for an odd total node count (no
+///         all-quad mesh exists), loops with fewer than 4 nodes, loops with
+///         the wrong orientation or holes outside the outer loop;
+///         MeshingError(MeshingFailed) when the loops intersect or an
+///         element would be inverted. The error carries no entity; callers add it.
+QuadMesh2D pave_2d(const std::vector<std::vector<Eigen::Vector2d>>& loops,
+                   const PaveOptions& options = {});
+
+}  // namespace cooperage::pave

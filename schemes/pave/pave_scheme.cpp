@@ -1,0 +1,178 @@
+#include "schemes/pave/pave_scheme.h"
+
+#include "framework/core/error.h"
+#include "framework/quality/quad_metrics.h"
+#include "schemes/pave/surface_to_2d.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+namespace cooperage::pave {
+namespace {
+
+[[noreturn]] void fail(int surface_id, ErrorCode code, const std::string& message) {
+  throw MeshingError(code, EntityRef::surface(surface_id), "pave: " + message);
+}
+
+std::string curve_list(const geom::Loop& loop) {
+  std::string s;
+  for (const auto& use : loop.uses) s += (s.empty() ? "" : "+") + std::to_string(use.curve);
+  return s;
+}
+
+/// The loop's boundary nodes as a closed ring (no repeated last node).
+std::vector<int> loop_ring(const mesh::MeshDB& db, int sid, size_t index, const geom::Loop& loop) {
+  std::vector<int> chain;
+  for (const auto& use : loop.uses) {
+    if (!db.curve_meshed(use.curve)) {
+      fail(sid, ErrorCode::MeshingFailed, "curve " + std::to_string(use.curve) + " is not meshed");
+    }
+    std::vector<int> nodes = db.curve_nodes(use.curve);
+    if (nodes.size() < 2) fail(sid, ErrorCode::MeshingFailed, "curve " + std::to_string(use.curve) + " has no intervals");
+    if (use.sense == geom::Sense::Reversed) std::reverse(nodes.begin(), nodes.end());
+    if (!chain.empty() && chain.back() != nodes.front()) {
+      fail(sid, ErrorCode::MeshingFailed,
+           "curve " + std::to_string(use.curve) + " does not continue loop " + std::to_string(index));
+    }
+    chain.insert(chain.end(), nodes.begin() + (chain.empty() ? 0 : 1), nodes.end());
+  }
+  if (chain.size() < 2 || chain.front() != chain.back()) {
+    fail(sid, ErrorCode::MeshingFailed, "loop " + std::to_string(index) + " is not closed");
+  }
+  chain.pop_back();
+  return chain;
+}
+
+}  // namespace
+
+scheme::Applicability PaveScheme::applicable(const scheme::SurfaceView& view) const {
+  const geom::Surface& s = view.surface();
+  const std::string name = "surface " + std::to_string(view.surface_id);
+  if (s.loops.empty()) return scheme::Applicability::no(name + ": no boundary loop, pave needs one");
+  for (size_t l = 0; l < s.loops.size(); ++l) {
+    if (s.loops[l].uses.empty()) {
+      return scheme::Applicability::no(name + ": loop " + std::to_string(l) + " has no curves");
+    }
+  }
+  // A general fallback: structured schemes score higher where they apply.
+  return scheme::Applicability::yes(
+      0.3, name + ": pave meshes any face (" + std::to_string(s.loops.size()) +
+               " loop" + (s.loops.size() > 1 ? "s" : "") + ") given an even boundary interval count");
+}
+
+void PaveScheme::constrain(const scheme::SurfaceView& view, intervals::IntervalProblem& problem) const {
+  const geom::Surface& s = view.surface();
+  const std::string name = "surface " + std::to_string(view.surface_id) + " (pave)";
+  std::vector<int> all;
+  std::string all_text;
+  for (size_t l = 0; l < s.loops.size(); ++l) {
+    std::vector<int> ids;
+    for (const auto& use : s.loops[l].uses) ids.push_back(use.curve);  // a seam counts twice
+    if (ids.empty()) continue;
+    all.insert(all.end(), ids.begin(), ids.end());
+    all_text += (all_text.empty() ? "" : "+") + curve_list(s.loops[l]);
+    const int least = (l == 0 && s.loops.size() > 1) ? 6 : 4;
+    problem.add_at_least(ids, least, name + ": loop " + std::to_string(l) + " curves " +
+                                         curve_list(s.loops[l]) + " >= " + std::to_string(least));
+  }
+  if (!all.empty()) problem.add_even(all, name + ": boundary curves " + all_text + " even");
+}
+
+scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const scheme::MeshParams& /*params*/) const {
+  const int sid = view.surface_id;
+  if (!view.mesh) fail(sid, ErrorCode::Internal, "mesh() needs the meshed curves");
+  const mesh::MeshDB& db = *view.mesh;
+  const geom::Surface& surface = view.surface();
+  if (surface.loops.empty()) fail(sid, ErrorCode::NotApplicable, "no boundary loop");
+  if (!surface.geometry) fail(sid, ErrorCode::Internal, "no surface geometry");
+
+  std::vector<std::vector<int>> rings;
+  size_t total = 0;
+  for (size_t l = 0; l < surface.loops.size(); ++l) {
+    rings.push_back(loop_ring(db, sid, l, surface.loops[l]));
+    total += rings.back().size();
+  }
+  if (total % 2 != 0) {
+    fail(sid, ErrorCode::InvalidInput,
+         "the boundary has an odd number of intervals (" + std::to_string(total) +
+             "), so no all-quad mesh exists; pave's interval constraints (constrain()) "
+             "require an even total");
+  }
+  for (size_t l = 0; l < rings.size(); ++l) {
+    if (rings[l].size() < 4) {
+      fail(sid, ErrorCode::InvalidInput,
+           "loop " + std::to_string(l) + " (curves " + curve_list(surface.loops[l]) + ") has " +
+               std::to_string(rings[l].size()) + " intervals; pave needs at least 4 per loop");
+    }
+  }
+
+  std::vector<std::vector<geom::Vec3>> loops3d;
+  for (const auto& ring : rings) {
+    std::vector<geom::Vec3> l;
+    for (int g : ring) l.push_back(db.node(g));
+    loops3d.push_back(std::move(l));
+  }
+  const geom::SurfaceGeometry& geometry = *surface.geometry;
+  const SurfaceTo2D map(geometry, loops3d);
+  QuadMesh2D m;
+  try {
+    m = pave_2d(map.loops_2d(), options_);
+  } catch (const MeshingError& e) {
+    fail(sid, e.code(), e.message());
+  }
+
+  scheme::EntityMesh out;
+  std::vector<int> local(m.points.size(), -1);
+  std::unordered_map<int, int> local_of_global;  // seams: a node used twice in a ring is one node
+  size_t i = 0;
+  for (const auto& ring : rings) {
+    for (int g : ring) {
+      auto it = local_of_global.find(g);
+      if (it == local_of_global.end()) it = local_of_global.emplace(g, out.add(db.node(g), g)).first;
+      local[i++] = it->second;
+    }
+  }
+  for (; i < m.points.size(); ++i) local[i] = out.add(map.to_3d(m.points[i]));
+
+  out.quads.reserve(m.quads.size());
+  int negative = 0;
+  std::vector<geom::Vec3> normals;
+  normals.reserve(m.quads.size());
+  for (const auto& q : m.quads) {
+    mesh::Quad quad{local[static_cast<size_t>(q[0])], local[static_cast<size_t>(q[1])],
+                    local[static_cast<size_t>(q[2])], local[static_cast<size_t>(q[3])]};
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        if (quad[static_cast<size_t>(a)] == quad[static_cast<size_t>(b)]) {
+          fail(sid, ErrorCode::MeshingFailed, "a quad uses one node twice (too few intervals across a seam)");
+        }
+      }
+    }
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int v : q) c += m.points[static_cast<size_t>(v)];
+    const geom::Vec3 n = map.normal_at(c / 4.0);
+    const geom::Vec3 d = (out.coords[static_cast<size_t>(quad[2])] - out.coords[static_cast<size_t>(quad[0])])
+                             .cross(out.coords[static_cast<size_t>(quad[3])] - out.coords[static_cast<size_t>(quad[1])]);
+    if (d.dot(n) < 0) ++negative;
+    normals.push_back(n);
+    out.quads.push_back(quad);
+  }
+  if (2 * negative > static_cast<int>(out.quads.size())) {
+    for (auto& q : out.quads) std::swap(q[1], q[3]);
+  }
+  for (size_t k = 0; k < out.quads.size(); ++k) {
+    const auto& q = out.quads[k];
+    const quality::QuadNodes p{out.coords[static_cast<size_t>(q[0])], out.coords[static_cast<size_t>(q[1])],
+                               out.coords[static_cast<size_t>(q[2])], out.coords[static_cast<size_t>(q[3])]};
+    if (!(quality::quad_scaled_jacobian(p, normals[k]) > 0)) {
+      fail(sid, ErrorCode::MeshingFailed,
+           "quad " + std::to_string(k) + " is inverted on the surface (distortion of the parameter space)");
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<scheme::SurfaceScheme> make_pave() { return std::make_unique<PaveScheme>(); }
+
+}  // namespace cooperage::pave

@@ -1,0 +1,132 @@
+#include "schemes/pave/recombine.h"
+
+#include "schemes/pave/quad_quality_2d.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+
+namespace cooperage::pave::detail {
+
+std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
+                            const std::vector<int>& min_cells) {
+  const auto& P = tri.points;
+  const auto& T = tri.tris;
+  // Directed edge (a -> b) -> triangle and the index of a.
+  std::unordered_map<std::uint64_t, std::pair<int, int>> half;
+  half.reserve(T.size() * 3);
+  auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  };
+  for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const auto& v = T[static_cast<size_t>(t)];
+      half.emplace(key(v[static_cast<size_t>(i)], v[static_cast<size_t>((i + 1) % 3)]),
+                   std::make_pair(t, i));
+    }
+  }
+  struct Candidate {
+    double score;
+    int t, s;
+    Cell quad;
+  };
+  std::vector<Candidate> cands;
+  for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+    const auto& v = T[static_cast<size_t>(t)];
+    for (size_t i = 0; i < 3; ++i) {
+      const int a = v[i], b = v[(i + 1) % 3], c = v[(i + 2) % 3];
+      auto it = half.find(key(b, a));
+      if (it == half.end() || it->second.first < t) continue;  // boundary, or seen
+      const int s = it->second.first;
+      const auto& w = T[static_cast<size_t>(s)];
+      const int d = w[static_cast<size_t>((it->second.second + 2) % 3)];
+      // Triangles (a, b, c) and (b, a, d) form the quad (a, d, b, c).
+      const Cell q{a, d, b, c};
+      const double sj = scaled_jacobian_2d(P, q);
+      if (sj < min_quality) continue;
+      cands.push_back({sj, t, s, q});
+    }
+  }
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Candidate& x, const Candidate& y) { return x.score > y.score; });
+  std::vector<int> cells_at(P.size(), 0);
+  for (const auto& v : T) {
+    for (int x : v) ++cells_at[static_cast<size_t>(x)];
+  }
+  auto floor_of = [&](int x) {
+    return static_cast<size_t>(x) < min_cells.size() ? min_cells[static_cast<size_t>(x)] : 0;
+  };
+  // match[t]: the candidate pairing triangle t, or -1.
+  std::vector<int> match(T.size(), -1);
+  auto can_merge = [&](const Candidate& c) {
+    const int x = c.quad[0], y = c.quad[2];  // the shared edge: both lose a cell
+    return cells_at[static_cast<size_t>(x)] - 1 >= floor_of(x) && cells_at[static_cast<size_t>(y)] - 1 >= floor_of(y);
+  };
+  auto merge = [&](int k, int sign) {
+    const Candidate& c = cands[static_cast<size_t>(k)];
+    cells_at[static_cast<size_t>(c.quad[0])] -= sign;
+    cells_at[static_cast<size_t>(c.quad[2])] -= sign;
+    match[static_cast<size_t>(c.t)] = match[static_cast<size_t>(c.s)] = sign > 0 ? k : -1;
+  };
+  for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
+    const Candidate& c = cands[static_cast<size_t>(k)];
+    if (match[static_cast<size_t>(c.t)] >= 0 || match[static_cast<size_t>(c.s)] >= 0 || !can_merge(c)) continue;
+    merge(k, +1);
+  }
+  // Augmenting paths of length 3: a free triangle t next to s, whose partner
+  // s' has a free neighbour u, becomes (t, s) + (s', u): one more quad.
+  std::vector<std::vector<int>> of(T.size());
+  for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
+    of[static_cast<size_t>(cands[static_cast<size_t>(k)].t)].push_back(k);
+    of[static_cast<size_t>(cands[static_cast<size_t>(k)].s)].push_back(k);
+  }
+  auto other = [&](int k, int t) {
+    const Candidate& c = cands[static_cast<size_t>(k)];
+    return c.t == t ? c.s : c.t;
+  };
+  for (int pass = 0; pass < 6; ++pass) {
+    bool changed = false;
+    for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+      if (match[static_cast<size_t>(t)] >= 0) continue;
+      bool done = false;
+      for (int kts : of[static_cast<size_t>(t)]) {
+        const int s2 = other(kts, t);
+        const int kss = match[static_cast<size_t>(s2)];
+        if (kss < 0) continue;  // s2 free too: cannot happen after greedy unless blocked
+        const int sp = other(kss, s2);
+        for (int ku : of[static_cast<size_t>(sp)]) {
+          const int u = other(ku, sp);
+          if (u == t || u == s2 || match[static_cast<size_t>(u)] >= 0) continue;
+          merge(kss, -1);
+          if (can_merge(cands[static_cast<size_t>(kts)])) {
+            merge(kts, +1);
+            if (can_merge(cands[static_cast<size_t>(ku)])) {
+              merge(ku, +1);
+              done = true;
+              break;
+            }
+            merge(kts, -1);
+          }
+          merge(kss, +1);
+        }
+        if (done) break;
+      }
+      changed = changed || done;
+    }
+    if (!changed) break;
+  }
+  std::vector<Cell> cells;
+  cells.reserve(T.size());
+  for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+    const int k = match[static_cast<size_t>(t)];
+    if (k < 0) {
+      cells.push_back({T[static_cast<size_t>(t)][0], T[static_cast<size_t>(t)][1], T[static_cast<size_t>(t)][2], -1});
+    } else if (cands[static_cast<size_t>(k)].t == t) {
+      cells.push_back(cands[static_cast<size_t>(k)].quad);
+    }
+  }
+  return cells;
+}
+
+}  // namespace cooperage::pave::detail

@@ -1,0 +1,141 @@
+// Tests of the 2D core pave_2d: the benchmark faces (quality printed,
+// validity asserted), rigid-motion invariance, and the rejection of odd
+// boundary counts.
+#include "pave_test_util.h"
+
+#include "framework/core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+
+namespace cooperage::pave::testing {
+namespace {
+
+struct NamedFace {
+  const char* name;
+  Loops loops;
+  bool simple;  // quality bars asserted (median > 0.8, min > 0.3)
+};
+
+std::vector<NamedFace> benchmark_faces() {
+  std::vector<NamedFace> f;
+  f.push_back({"square", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {10, 10, 10, 10})}, true});
+  f.push_back({"square, odd sides", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {7, 7, 7, 7})}, true});
+  f.push_back({"disk", {circle({0, 0}, 1, 40)}, true});
+  f.push_back({"annulus", {circle({0, 0}, 2, 48), circle({0, 0}, 1, 24, true)}, true});
+  f.push_back({"plate with three holes",
+               {polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 12, 24, 12}), circle({1, 1}, 0.4, 16, true),
+                circle({2.2, 1}, 0.3, 12, true), circle({3.2, 0.8}, 0.25, 4, true)},
+               true});
+  f.push_back({"L-shape", {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})}, true});
+  f.push_back({"narrow neck",
+               {polygon({{0, 0}, {1, 0}, {1, 0.45}, {2, 0.45}, {2, 0}, {3, 0}, {3, 1}, {2, 1}, {2, 0.55}, {1, 0.55},
+                         {1, 1}, {0, 1}},
+                        {10, 5, 10, 5, 10, 10, 10, 5, 10, 5, 10, 10})},
+               false});
+  f.push_back({"spacing 1:8", {polygon({{-4, -4}, {4, -4}, {4, 4}, {-4, 4}}, {8, 8, 8, 8}), circle({0, 0}, 1, 50, true)},
+               false});
+  return f;
+}
+
+TEST(Pave2D, BenchmarkFacesAreValidAndPrintQuality) {
+  std::printf("%-24s %6s %8s %8s %12s\n", "face", "quads", "min SJ", "med SJ", "irreg/100q");
+  for (const NamedFace& face : benchmark_faces()) {
+    SCOPED_TRACE(face.name);
+    const QuadMesh2D m = pave_2d(face.loops);
+    EXPECT_EQ(check_mesh(face.loops, m), "");
+    const Stats s = stats(m);
+    std::printf("%-24s %6d %8.3f %8.3f %12.1f\n", face.name, s.quads, s.min_sj, s.median_sj,
+                100.0 * s.irregular / s.quads);
+    if (face.simple) {
+      EXPECT_GT(s.median_sj, 0.8);
+      EXPECT_GT(s.min_sj, 0.3);
+    }
+  }
+}
+
+TEST(Pave2D, SingleQuadAndSmallestLoops) {
+  const Loops quad{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {1, 1, 1, 1})};
+  const QuadMesh2D m = pave_2d(quad);
+  EXPECT_EQ(m.quads.size(), 1u);
+  EXPECT_EQ(check_mesh(quad, m), "");
+  const Loops hexagon{circle({0, 0}, 1, 6)};
+  EXPECT_EQ(check_mesh(hexagon, pave_2d(hexagon)), "");
+  const Loops small_hole{circle({0, 0}, 1, 16), circle({0.1, 0}, 0.25, 4, true)};
+  EXPECT_EQ(check_mesh(small_hole, pave_2d(small_hole)), "");
+}
+
+TEST(Pave2D, RotatedAndTranslatedFaceGivesTheMovedMesh) {
+  for (const NamedFace& face : benchmark_faces()) {
+    SCOPED_TRACE(face.name);
+    const QuadMesh2D m = pave_2d(face.loops);
+    for (double angle : {0.3, 1.7, -2.9}) {
+      const Eigen::Rotation2Dd R(angle);
+      const V2 t(12.5, -3.25);
+      Loops moved = face.loops;
+      for (auto& l : moved) {
+        for (auto& p : l) p = R * p + t;
+      }
+      const QuadMesh2D r = pave_2d(moved);
+      ASSERT_EQ(r.quads, m.quads);
+      ASSERT_EQ(r.points.size(), m.points.size());
+      double scale = 1.0;
+      for (const auto& p : m.points) scale = std::max(scale, p.norm());
+      for (size_t i = 0; i < m.points.size(); ++i) {
+        EXPECT_LT((r.points[i] - (R * m.points[i] + t)).norm(), 1e-9 * scale) << "node " << i;
+      }
+    }
+  }
+}
+
+TEST(Pave2D, OddBoundaryCountIsRejected) {
+  const Loops odd{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {3, 3, 3, 4})};
+  try {
+    pave_2d(odd);
+    FAIL() << "an odd boundary was accepted";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("odd"), std::string::npos) << e.what();
+  }
+  const Loops two_odd_loops_odd_total{circle({0, 0}, 1, 15), circle({0, 0}, 0.5, 8, true)};
+  EXPECT_THROW(pave_2d(two_odd_loops_odd_total), MeshingError);
+}
+
+TEST(Pave2D, OddLoopsWithAnEvenTotalAreMeshed) {
+  const Loops two{circle({0, 0}, 2, 47), circle({0, 0}, 1, 23, true)};
+  const Loops four{polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 11, 24, 12}), circle({1, 1}, 0.4, 15, true),
+                   circle({2.2, 1}, 0.3, 11, true), circle({3.2, 0.8}, 0.25, 5, true)};
+  for (const Loops& loops : {two, four}) {
+    const QuadMesh2D m = pave_2d(loops);
+    EXPECT_EQ(check_mesh(loops, m), "");
+    const Stats s = stats(m);
+    std::printf("odd loops (%zu): %d quads, min SJ %.3f, median %.3f\n", loops.size(), s.quads, s.min_sj, s.median_sj);
+    EXPECT_GT(s.min_sj, 0.3);
+    EXPECT_GT(s.median_sj, 0.8);
+  }
+}
+
+TEST(Pave2D, BadLoopsAreRejected) {
+  EXPECT_THROW(pave_2d({}), MeshingError);
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12, true)}), MeshingError);           // outer clockwise
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({0, 0}, 0.5, 8)}), MeshingError);  // hole counter-clockwise
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({3, 0}, 0.5, 8, true)}), MeshingError);  // hole outside
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 2)}), MeshingError);                  // too few nodes
+}
+
+TEST(Pave2D, ThroughputIsPrinted) {
+  // About 3k, 12k and 48k quads: the time should grow linearly.
+  for (int n : {40, 80, 160}) {
+    const Loops big{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {n, n, n, n})};
+    const auto t0 = std::chrono::steady_clock::now();
+    const QuadMesh2D m = pave_2d(big);
+    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("throughput: %zu quads in %.3f s (%.0f quads/s)\n", m.quads.size(), dt, m.quads.size() / dt);
+    EXPECT_EQ(check_mesh(big, m), "");
+  }
+}
+
+}  // namespace
+}  // namespace cooperage::pave::testing
