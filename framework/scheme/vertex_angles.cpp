@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cooperage::scheme {
@@ -42,6 +43,12 @@ const char* to_string(VertexType type) {
 }
 
 double ideal_angle_degrees(VertexType type) { return 90.0 * (2 - static_cast<int>(type)); }
+
+double predicted_corner_quality(double degrees, VertexType type) {
+  const int k = 2 - static_cast<int>(type);  // quad corners sharing the angle
+  const double q = std::sin(degrees / k * kPi / 180.0);
+  return std::clamp(q, 0.0, 1.0);
+}
 
 std::optional<VertexType> classify_angle(double degrees) {
   if (degrees < 45.0) return std::nullopt;

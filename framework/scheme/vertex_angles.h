@@ -18,6 +18,13 @@ const char* to_string(VertexType type);
 /// The ideal interior angle of a type, in degrees: 90, 180, 270, 360.
 double ideal_angle_degrees(VertexType type);
 
+/// The scaled Jacobian a structured mesh can reach at a vertex of interior
+/// angle `degrees` classified as `type`: the angle is shared by 1, 2, 3 or 4
+/// quad corners (END, SIDE, CORNER, REVERSAL), each of sine sin(angle / k).
+/// 1 at the ideal angles; used as the schemes' a-priori quality score, so
+/// map, submap and pave compare on one scale.
+double predicted_corner_quality(double degrees, VertexType type);
+
 /// Classification by angle: END [45, 130), SIDE [130, 225), CORNER
 /// [225, 315), REVERSAL >= 315 degrees (MeshKit's thresholds); none below 45.
 std::optional<VertexType> classify_angle(double degrees);

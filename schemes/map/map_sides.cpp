@@ -79,16 +79,13 @@ MapSides analyse_map_surface(const geom::Model& model, int surface_id) {
     out.corner_vertices[s] = corners[static_cast<size_t>(groups[s].front())].vertex;
   }
 
-  // Penalty: mean and worst relative deviation from the ideal angles; a
-  // deviation of 45 degrees (the edge of the END class) counts as 1.
-  double sum = 0.0, worst = 0.0;
+  // Score: the scaled Jacobian the mapped mesh can reach at its worst
+  // vertex (a squashed corner scores low, so the selector may prefer pave).
+  double worst = 1.0;
   for (const auto& c : corners) {
-    const double d = std::abs(c.angle - scheme::ideal_angle_degrees(*c.type)) / 45.0;
-    sum += d;
-    worst = std::max(worst, d);
+    worst = std::min(worst, scheme::predicted_corner_quality(c.angle, *c.type));
   }
-  const double mean = sum / static_cast<double>(corners.size());
-  out.score = std::clamp(1.0 - 0.5 * mean - 0.5 * worst, 0.05, 1.0);
+  out.score = std::clamp(worst, 0.05, 1.0);
   out.ok = true;
   return out;
 }

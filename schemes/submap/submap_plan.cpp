@@ -61,6 +61,7 @@ SubmapPlan plan_submap(const geom::Model& model, int surface_id,
   }
   double deviation = 0.0;
   int corner_count = 0, changed = 0;
+  double worst_quality = 1.0;  // predicted scaled Jacobian at the worst vertex
   for (size_t l = 0; l < surface.loops.size(); ++l) {
     LoopPlan lp;
     lp.uses = surface.loops[l].uses;
@@ -95,6 +96,8 @@ SubmapPlan plan_submap(const geom::Model& model, int surface_id,
         return plan;
       }
       deviation += std::abs(lp.corners[k].angle - scheme::ideal_angle_degrees(lp.types.types[k]));
+      worst_quality = std::min(
+          worst_quality, scheme::predicted_corner_quality(lp.corners[k].angle, lp.types.types[k]));
     }
     corner_count += static_cast<int>(lp.corners.size());
     changed += lp.types.changed;
@@ -144,7 +147,10 @@ SubmapPlan plan_submap(const geom::Model& model, int surface_id,
 
   plan.ok = true;
   const double mean_dev = corner_count > 0 ? deviation / corner_count : 0.0;
-  plan.score = std::max(0.05, 0.9 * (1.0 - mean_dev / 90.0) - 0.05 * changed);
+  // The scaled Jacobian the lattice can reach at its worst vertex: on the
+  // same scale as map and pave, so the selector compares like with like
+  // (ties go to map, registered first).
+  plan.score = std::max(0.05, worst_quality);
   std::map<VertexType, int> count;
   for (const auto& lp : plan.loops) {
     for (VertexType t : lp.types.types) ++count[t];

@@ -105,6 +105,89 @@ TEST(Selector, LShapedPlanarFaceGoesToSubmap) {
   EXPECT_EQ(submapped, 2);
 }
 
+const Choice* choice_with_loops(const Selection& s, const geom::Model& m, size_t curves) {
+  for (const auto& c : s.surfaces) {
+    if (m.surface(c.id).loops[0].uses.size() == curves) return &c;
+  }
+  return nullptr;
+}
+
+TEST(Selector, DiskGoesToPave) {
+  occ::Workbench bench;
+  bench.cylinder("c", {0, 0, 0}, {0, 0, 1}, 1.0, 1.0);
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  SelectOptions surfaces_only;
+  surfaces_only.dim = 2;
+  const Selection s = select_schemes(model, f.registry, sized(0.2), surfaces_only);
+  int disks = 0;
+  for (const auto& c : s.surfaces) {
+    if (model.surface(c.id).geometry->type() != geom::SurfaceType::Plane) continue;
+    EXPECT_EQ(c.scheme, "pave") << "surface " << c.id;
+    for (const auto& k : c.candidates) {
+      if (k.scheme != "pave") EXPECT_FALSE(k.applicability.ok) << k.scheme;
+    }
+    ++disks;
+  }
+  EXPECT_EQ(disks, 2);
+}
+
+TEST(Selector, AFaceMappableOnlyBySquashingA170DegreeCornerGoesToPave) {
+  // A triangle with one edge bent by 10 degrees: three real corners and a
+  // 170-degree vertex. Submap can meet the sum rule only by making the
+  // 170-degree vertex an END (a quad corner of 170 degrees, scaled Jacobian
+  // sin 170 = 0.17); pave does better.
+  occ::Workbench bench;
+  const double bend = 0.5 * std::tan(5.0 * M_PI / 180.0) * 4.0;
+  bench.prism("t", {{0, 0, 0}, {2, -bend, 0}, {4, 0, 0}, {2, 3, 0}}, {}, {0, 0, 1});
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  SelectOptions surfaces_only;
+  surfaces_only.dim = 2;
+  const Selection s = select_schemes(model, f.registry, sized(0.25), surfaces_only);
+  const Choice* cap = choice_with_loops(s, model, 4);
+  ASSERT_NE(cap, nullptr);
+  EXPECT_EQ(cap->scheme, "pave");
+  // A rectangle still goes to map, and a mildly skewed quadrilateral too.
+  occ::Workbench quad;
+  quad.prism("q", {{0, 0, 0}, {4, 0, 0}, {4.8, 3, 0}, {0.8, 3, 0}}, {}, {0, 0, 1});
+  const geom::Model qm = quad.build_model();
+  const Selection qs = select_schemes(qm, f.registry, sized(0.25), surfaces_only);
+  for (const auto& c : qs.surfaces) EXPECT_EQ(c.scheme, "map") << "surface " << c.id;
+}
+
+TEST(Selector, InfeasibleAutomaticChoiceIsRelaxedAndReported) {
+  // Pinned counts 3 and 5 on opposite sides of a rectangle: map and submap
+  // both need them equal; pave needs only an even total. The automatic
+  // choice is relaxed map -> submap -> pave and every step is reported.
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  const geom::Model model = bench.build_model();
+  io::MeshSettings settings = sized(0.25);
+  io::CurveSetting a, b;
+  a.id = 1;
+  a.sizing.intervals = 3;
+  b.id = 3;
+  b.sizing.intervals = 5;
+  settings.curves = {a, b};
+  Fixture f;
+  SelectOptions surfaces_only;
+  surfaces_only.dim = 2;
+  const Selection s = select_schemes(model, f.registry, settings, surfaces_only);
+  ASSERT_FALSE(s.relaxations.empty());
+  int paved = 0;
+  for (const auto& c : s.surfaces) {
+    if (c.scheme == "pave") {
+      ++paved;
+      EXPECT_NE(c.reason.find("relaxed"), std::string::npos) << c.reason;
+    }
+  }
+  EXPECT_GE(paved, 1);
+  EXPECT_NE(s.relaxations.front().find("map -> submap"), std::string::npos) << s.relaxations.front();
+  // Deterministic: the same relaxations again.
+  EXPECT_EQ(select_schemes(model, f.registry, settings, surfaces_only).relaxations, s.relaxations);
+}
+
 TEST(Selector, SphereHasNoHexSchemeAndEverySchemeSaysWhy) {
   occ::Workbench bench;
   bench.sphere("s", {0, 0, 0}, 1);
