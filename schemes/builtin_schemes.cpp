@@ -5,6 +5,7 @@
 #include "schemes/map/volume_map.h"
 #include "schemes/pave/pave_scheme.h"
 #include "schemes/submap/submap_scheme.h"
+#include "schemes/tri/tri_scheme.h"
 
 namespace cooperage {
 
@@ -16,6 +17,7 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
   registry.add(map::make_surface_map());
   registry.add(submap::make_submap(options.vertex_types));
   registry.add(pave::make_pave());
+  registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
   registry.add(map::make_volume_map());
   cooper::CooperOptions cooper_options;
   for (const io::VolumeSetting& v : options.volumes) {

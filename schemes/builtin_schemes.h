@@ -19,8 +19,8 @@ struct BuiltinOptions {
 /// The options a journal's mesh settings give.
 BuiltinOptions builtin_options(const io::MeshSettings& settings);
 
-/// Surface schemes, most preferred first: map, submap, pave. Volume schemes:
-/// map, then cooper (which asks the registry for submap/map/pave by name, so the
+/// Surface schemes, most preferred first: map, submap, pave, tri (triangles,
+/// only when pinned). Volume schemes: map, then cooper (which asks the registry for submap/map/pave by name, so the
 /// registry must outlive it).
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options = {});
 
