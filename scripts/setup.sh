@@ -11,7 +11,7 @@ packages=(
   build-essential cmake pkg-config
   libocct-foundation-dev libocct-modeling-data-dev
   libocct-modeling-algorithms-dev libocct-data-exchange-dev
-  libopenmesh-dev libeigen3-dev libtbb-dev libtinyxml2-dev
+  libeigen3-dev libtbb-dev libtinyxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libexodusii-dev libnetcdf-dev coinor-libcbc-dev libcli11-dev
   libxml2-utils python3-meshio python3-gmsh
