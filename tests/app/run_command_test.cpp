@@ -179,6 +179,25 @@ TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
   EXPECT_NE(r.err.find("no hex scheme applies"), std::string::npos) << r.err;
 }
 
+TEST_F(RunCommand, OpenShellIsRejectedWithTheFileAndNoOutput) {
+  // A lone B-spline face: a shell that bounds no solid.
+  occ::Workbench bench;
+  std::vector<std::vector<geom::Vec3>> grid;
+  for (int i = 0; i < 4; ++i) {
+    grid.emplace_back();
+    for (int j = 0; j < 4; ++j) grid.back().push_back(geom::Vec3(i, j, 0.1 * i * j));
+  }
+  bench.bspline_patch("sheet", grid, 0.0);
+  bench.write(path("sheet.step"));
+  const auto r = run_command(kCli + " mesh " + path("sheet.step") + " --size 0.5 -q -o " +
+                             path("sheet.exo"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("sheet.step"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no solids"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("sheet.exo")));
+}
+
 TEST_F(RunCommand, MeshCommandRejectsANonPositiveSize) {
   const auto r = run_command(kCli + " mesh x.step --size -1 -o y.exo");
   EXPECT_EQ(r.exit_code, 2);
