@@ -3,11 +3,25 @@
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
+#include "schemes/pave/pave_2d.h"
 #include "schemes/pave/pave_scheme.h"
 #include "schemes/submap/submap_scheme.h"
 #include "schemes/tri/tri_scheme.h"
 
 namespace cooperage {
+namespace {
+
+// Pave's 2D core as the polygon mesher cooper uses for cap pieces that are
+// not model surfaces (imprinted and virtual subcaps, Blacker 1996 sec. 6.1).
+class Pave2D final : public scheme::PolygonMesher {
+ public:
+  scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
+    pave::QuadMesh2D m = pave::pave_2d(loops);
+    return {std::move(m.points), std::move(m.quads), m.boundary_count};
+  }
+};
+
+}  // namespace
 
 BuiltinOptions builtin_options(const io::MeshSettings& settings) {
   return {settings.vertex_types, settings.volumes};
@@ -20,6 +34,7 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
   registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
   registry.add(map::make_volume_map());
   cooper::CooperOptions cooper_options;
+  cooper_options.polygon_mesher = std::make_shared<Pave2D>();
   for (const io::VolumeSetting& v : options.volumes) {
     if (!v.sources.empty() || !v.targets.empty() || v.direction) {
       cooper_options.hints[v.id] = {v.sources, v.targets, v.direction};

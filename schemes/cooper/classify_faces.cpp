@@ -36,24 +36,25 @@ struct FaceInfo {
 
 enum class Role { Source, Target, Link };
 
-// Empty when `f` can be a side between caps a (upper) and b (lower), else why.
-std::string check_side(const geom::Model& model, const FaceInfo& f, const FaceInfo& a,
-                       const FaceInfo& b, SideFace& side) {
-  const std::string name = "surface " + std::to_string(f.id);
-  if (!f.side_ok) return name + " cannot be a side: " + f.side_why;
-  const auto& uses = model.surface(f.id).loops.front().uses;
+// Empty when surface f_id can be a side between caps a (upper) and b (lower), else why.
+std::string check_side_impl(const geom::Model& model, int f_id,
+                            const std::vector<scheme::LoopCorner>& corners, int a_id,
+                            const std::set<int>& a_curves, int b_id, const std::set<int>& b_curves,
+                            SideFace& side) {
+  const std::string name = "surface " + std::to_string(f_id);
+  const auto& uses = model.surface(f_id).loops.front().uses;
   const size_t n = uses.size();
   std::vector<Role> role(n);
   side = SideFace{};
-  side.surface = f.id;
+  side.surface = f_id;
   for (size_t k = 0; k < n; ++k) {
     const int c = uses[k].curve;
-    role[k] = a.curve_set.count(c) ? Role::Source : b.curve_set.count(c) ? Role::Target : Role::Link;
+    role[k] = a_curves.count(c) ? Role::Source : b_curves.count(c) ? Role::Target : Role::Link;
     if (role[k] == Role::Source) side.source_curves.push_back(c);
     if (role[k] == Role::Target) side.target_curves.push_back(c);
   }
   if (side.source_curves.empty() || side.target_curves.empty()) {
-    return name + " does not link caps " + std::to_string(a.id) + " and " + std::to_string(b.id) +
+    return name + " does not link caps " + std::to_string(a_id) + " and " + std::to_string(b_id) +
            " (it touches " + (side.source_curves.empty() ? "not the first" : "not the second") +
            " cap); a one-barrel side runs from cap to cap";
   }
@@ -63,7 +64,7 @@ std::string check_side(const geom::Model& model, const FaceInfo& f, const FaceIn
   for (size_t k = 0; k < n; ++k) {
     const Role prev = role[(k + n - 1) % n];
     const Role cur = role[k];
-    const auto& corner = f.corners[k];
+    const auto& corner = corners[k];
     const std::string at = name + ": the junction at vertex " + std::to_string(corner.vertex) +
                            " between curves " + std::to_string(uses[(k + n - 1) % n].curve) +
                            " and " + std::to_string(uses[k].curve);
@@ -98,6 +99,13 @@ std::string check_side(const geom::Model& model, const FaceInfo& f, const FaceIn
     side.linking_chains.push_back(chain);
   }
   return {};
+}
+
+// Empty when `f` can be a side between caps a (upper) and b (lower), else why.
+std::string check_side(const geom::Model& model, const FaceInfo& f, const FaceInfo& a,
+                       const FaceInfo& b, SideFace& side) {
+  if (!f.side_ok) return "surface " + std::to_string(f.id) + " cannot be a side: " + f.side_why;
+  return check_side_impl(model, f.id, f.corners, a.id, a.curve_set, b.id, b.curve_set, side);
 }
 
 // Empty when (a, b) are the two caps of a one-barrel sweep, else why.
@@ -150,8 +158,8 @@ std::string check_pair(const geom::Model& model, int volume_id, const std::vecto
 }
 
 // The first surface scheme of map, submap, pave that meshes the cap, or why not.
-std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                       std::string& why) {
+std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& registry, int surface,
+                            std::string& why) {
   std::string reasons;
   for (const char* name : {"map", "submap", "pave"}) {
     const scheme::SurfaceScheme* s = registry.surface_scheme(name);
@@ -327,10 +335,10 @@ Classification classify_faces(const geom::Model& model, int volume_id,
       std::swap(src, tgt);
     }
     std::string scheme_why;
-    std::string scheme = cap_scheme(model, registry, src->id, scheme_why);
+    std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why);
     if (scheme.empty() && !hinted) {
       std::string other_why;
-      const std::string other = cap_scheme(model, registry, tgt->id, other_why);
+      const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why);
       if (!other.empty()) {
         std::swap(src, tgt);
         scheme = other;
@@ -363,5 +371,21 @@ Classification classify_faces(const geom::Model& model, int volume_id,
             " tried; the best ranked fails: " + first_failure + ")";
   return out;
 }
+
+namespace detail {
+
+std::string check_side(const geom::Model& model, int side,
+                       const std::vector<scheme::LoopCorner>& corners, int upper,
+                       const std::set<int>& upper_curves, int lower,
+                       const std::set<int>& lower_curves, SideFace& out) {
+  return check_side_impl(model, side, corners, upper, upper_curves, lower, lower_curves, out);
+}
+
+std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
+                       std::string& why) {
+  return cap_scheme_impl(model, registry, surface, why);
+}
+
+}  // namespace detail
 
 }  // namespace cooperage::cooper

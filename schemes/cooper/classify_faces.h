@@ -7,8 +7,10 @@
 
 #include "framework/geometry/model.h"
 #include "framework/scheme/registry.h"
+#include "framework/scheme/vertex_angles.h"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,5 +58,24 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// the lower id, unless only the other one has a surface scheme.
 Classification classify_faces(const geom::Model& model, int volume_id,
                               const scheme::Registry& registry, const SweepHints& hints = {});
+
+namespace detail {
+
+/// Empty when surface `side` (one loop, submappable, its outer-loop corners
+/// given) links cap curve sets `upper_curves` and `lower_curves` as a side
+/// (Blacker 1996, sec. 3: one run on each cap, END/CORNER at the cap/link
+/// junctions, SIDE inside runs); else a sentence why not. Fills `out`
+/// (source_curves = upper run, target_curves = lower run, linking chains).
+std::string check_side(const geom::Model& model, int side,
+                       const std::vector<scheme::LoopCorner>& corners, int upper,
+                       const std::set<int>& upper_curves, int lower,
+                       const std::set<int>& lower_curves, SideFace& out);
+
+/// The first of the registry's "map", "submap", "pave" that applies to the
+/// cap surface, or "" with `why` set.
+std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
+                       std::string& why);
+
+}  // namespace detail
 
 }  // namespace cooperage::cooper

@@ -1,7 +1,10 @@
 #include "schemes/cooper/cooper_scheme.h"
 
 #include "framework/core/error.h"
+#include "schemes/cooper/classify_barrels.h"
 #include "schemes/cooper/form_barrels.h"
+#include "schemes/cooper/loop_nodes.h"
+#include "schemes/cooper/sweep_many_to_one.h"
 #include "schemes/cooper/sweep_barrel.h"
 
 #include <algorithm>
@@ -15,33 +18,6 @@ std::string volume_name(int id) { return "volume " + std::to_string(id); }
 
 [[noreturn]] void fail(int volume_id, const std::string& message) {
   throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
-}
-
-// Boundary node loops of a surface from its meshed curves, in loop order
-// (face on the left seen against the natural normal), first node not repeated.
-std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
-                                         int volume_id, int surface_id) {
-  std::vector<std::vector<int>> loops;
-  for (const auto& loop : model.surface(surface_id).loops) {
-    std::vector<int> nodes;
-    for (const auto& use : loop.uses) {
-      if (!db.curve_meshed(use.curve)) {
-        fail(volume_id, "curve " + std::to_string(use.curve) + " of surface " +
-                            std::to_string(surface_id) + " is not meshed");
-      }
-      std::vector<int> chain = db.curve_nodes(use.curve);
-      if (use.sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
-      if (!nodes.empty() && chain.front() != nodes.back()) {
-        fail(volume_id, "the loop of surface " + std::to_string(surface_id) +
-                            " is not closed at curve " + std::to_string(use.curve));
-      }
-      if (!nodes.empty()) nodes.pop_back();
-      nodes.insert(nodes.end(), chain.begin(), chain.end());
-    }
-    if (nodes.size() > 1 && nodes.front() == nodes.back()) nodes.pop_back();
-    loops.push_back(std::move(nodes));
-  }
-  return loops;
 }
 
 const mesh::SurfaceMeshData& meshed(const mesh::MeshDB& db, int volume_id, int surface_id,
@@ -61,16 +37,32 @@ Classification CooperScheme::classify(const scheme::VolumeView& view) const {
                         it == options_.hints.end() ? none : it->second);
 }
 
+ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
+  const auto it = options_.hints.find(view.volume_id);
+  static const SweepHints none;
+  return classify_barrels(view.model, view.volume_id, *registry_,
+                          it == options_.hints.end() ? none : it->second,
+                          options_.polygon_mesher != nullptr);
+}
+
+// One-to-one (part I) first; else many-to-one (part II) at a lower score, so
+// the selector ranks volume map, then cooper one-to-one, then many-to-one.
 scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
-  if (!c.ok) return scheme::Applicability::no(c.why);
-  return scheme::Applicability::yes(c.score, c.why);
+  if (c.ok) return scheme::Applicability::yes(c.score, c.why);
+  const ManyToOne m = classify_many(view);
+  if (m.ok) return scheme::Applicability::yes(m.score, m.why);
+  if (m.needs_decomposition) return scheme::Applicability::no(m.why);
+  return scheme::Applicability::no(c.why + "; as many-to-one: " + m.why);
 }
 
 void CooperScheme::constrain(const scheme::VolumeView& view,
                              intervals::IntervalProblem& problem) const {
   const Classification c = classify(view);
-  if (!c.ok) return;
+  if (!c.ok) {
+    constrain_many(view, problem);
+    return;
+  }
   const std::string tag = volume_name(view.volume_id) + " (cooper)";
   // The target boundary is linked to the source's through every side face.
   for (const SideFace& side : c.sides) {
@@ -96,10 +88,62 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
   }
 }
 
+// cite: Blacker 1996, sec. 3-4: per side, upper run = lower run; per barrel,
+// every linking chain the same count (its layers).
+void CooperScheme::constrain_many(const scheme::VolumeView& view,
+                                  intervals::IntervalProblem& problem) const {
+  const ManyToOne m = classify_many(view);
+  if (!m.ok) return;
+  const std::string tag = volume_name(view.volume_id) + " (cooper many-to-one)";
+  for (const SideFace& side : m.sides) {
+    problem.add_equal(side.source_curves, side.target_curves,
+                      tag + ": side surface " + std::to_string(side.surface) +
+                          " upper cap boundary = lower cap boundary");
+  }
+  // Even loops where imprinted subcaps are meshed in 2D (pave's 2D core
+  // needs every loop even): both real caps of a barrel with subcaps on both
+  // ends (Blacker 1996, sec. 5.3, 6.1: even parity for all-quad).
+  for (const BarrelPlan& b : m.barrels) {
+    if (b.lower_inflow.empty()) continue;
+    for (int cap : {b.upper, b.lower}) {
+      const auto& loops = view.model.surface(cap).loops;
+      for (size_t l = 0; l < loops.size(); ++l) {
+        std::vector<int> curves;
+        for (const auto& use : loops[l].uses) curves.push_back(use.curve);
+        problem.add_even(curves, tag + ": loop " + std::to_string(l) + " of imprinted cap " +
+                                     std::to_string(cap) + " even");
+      }
+    }
+  }
+  for (size_t b = 0; b < m.barrels.size(); ++b) {
+    std::set<std::vector<int>> seen;
+    std::vector<int> first;
+    for (const auto& chain : m.barrels[b].linking_chains) {
+      std::vector<int> key = chain;
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) continue;
+      if (first.empty()) {
+        first = chain;
+        continue;
+      }
+      problem.add_equal(first, chain, tag + ": barrel from cap " +
+                                          std::to_string(m.barrels[b].upper) +
+                                          ": linking paths = layers");
+    }
+  }
+}
+
 scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
   scheme::SurfaceRoles roles;
-  if (!c.ok) return roles;
+  if (!c.ok) {
+    const ManyToOne m = classify_many(view);
+    if (!m.ok) return roles;
+    for (const SideFace& side : m.sides) roles[side.surface] = "submap";
+    for (const auto& [cap, scheme] : m.cap_schemes) roles[cap] = scheme;
+    for (int cap : m.volume_caps) roles[cap] = scheme::kMeshedByVolume;
+    return roles;
+  }
   for (const SideFace& side : c.sides) roles[side.surface] = "submap";
   roles[c.source] = c.source_scheme;
   roles[c.target] = scheme::kMeshedByVolume;
@@ -124,7 +168,12 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
   if (!view.mesh) fail(vid, "cooper needs the meshed side and source surfaces");
   const mesh::MeshDB& db = *view.mesh;
   const Classification c = classify(view);
-  if (!c.ok) throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid), c.why);
+  if (!c.ok) {
+    const ManyToOne m = classify_many(view);
+    if (m.ok) return sweep_many_to_one(view, m, options_.polygon_mesher.get());
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid),
+                       m.needs_decomposition ? m.why : c.why + "; as many-to-one: " + m.why);
+  }
 
   // Barrel formation (sec. 4) from the source cap down the side meshes.
   BarrelInput barrel_in;

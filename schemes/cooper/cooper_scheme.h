@@ -1,11 +1,15 @@
-// The volume scheme "cooper" (Blacker 1996), part I: every single-barrel
+// The volume scheme "cooper" (Blacker 1996). Part I: every single-barrel
 // volume (the one-to-one sweep, any number of holes) meshes automatically
-// from an element size. Sides are submapped, the source cap is meshed by
+// from an element size. Part II: many-to-one volumes (several source caps,
+// bosses, shoulders and through holes along one axis; classify_barrels.h,
+// sweep_many_to_one.h). Sides are submapped, the source caps are meshed by
 // map / submap / pave, the target cap is meshed here (kMeshedByVolume).
 #pragma once
 
+#include "framework/scheme/polygon_mesher.h"
 #include "framework/scheme/registry.h"
 #include "framework/scheme/scheme.h"
+#include "schemes/cooper/classify_barrels.h"
 #include "schemes/cooper/classify_faces.h"
 
 #include <map>
@@ -18,6 +22,10 @@ namespace cooperage::cooper {
 struct CooperOptions {
   /// Journal hints per volume id (sources, targets, direction).
   std::map<int, SweepHints> hints;
+  /// Meshes imprinted subcaps that are no model surface (Blacker 1996,
+  /// sec. 6.1); null: barrels with subcaps on both ends are not applicable.
+  /// The registration code wraps pave's 2D core (pave::pave_2d) here.
+  std::shared_ptr<const scheme::PolygonMesher> polygon_mesher;
 };
 
 class CooperScheme final : public scheme::VolumeScheme {
@@ -48,9 +56,15 @@ class CooperScheme final : public scheme::VolumeScheme {
   void set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
                  std::optional<geom::Vec3> direction = std::nullopt);
   const CooperOptions& options() const { return options_; }
+  /// Sets the 2D mesher of imprinted subcaps (see CooperOptions).
+  void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher) {
+    options_.polygon_mesher = std::move(mesher);
+  }
 
  private:
   Classification classify(const scheme::VolumeView& view) const;
+  ManyToOne classify_many(const scheme::VolumeView& view) const;
+  void constrain_many(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const;
 
   const scheme::Registry* registry_;
   CooperOptions options_;

@@ -96,7 +96,12 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
 
   Vec3* target = &points[J * n];
   const bool correct_target = residuals(to_target, upper, lower, B, res_u) > tolerance;
+  const bool fixed = in.has_fixed_target.size() == n;
   for (std::size_t i = B; i < n; ++i) {
+    if (fixed && in.has_fixed_target[i]) {
+      target[i] = in.fixed_target[i];
+      continue;
+    }
     Vec3 y = to_target.apply(in.source[i]);
     if (correct_target) y += interpolate_residual(in.source[i], in.source, B, res_u);
     target[i] = in.project_target ? in.project_target(y) : y;

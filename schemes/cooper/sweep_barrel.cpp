@@ -58,8 +58,10 @@ void smooth_layers(const SweepInput& in, int iterations, std::vector<Vec3>& poin
   for (int j = 1; j <= in.layers; ++j) {
     Vec3* layer = &points[static_cast<std::size_t>(j) * n];
     const bool target = j == in.layers;
+    const bool fixed = target && in.has_fixed_target.size() == n;
     for (int it = 0; it < iterations; ++it) {
       for (std::size_t i = static_cast<std::size_t>(in.boundary); i < n; ++i) {
+        if (fixed && in.has_fixed_target[i]) continue;
         const int b = start[i];
         const int e = start[i + 1];
         if (e == b) continue;
@@ -106,7 +108,11 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
       }
       shift /= static_cast<double>(in.boundary);
       for (std::size_t i = static_cast<std::size_t>(in.boundary); i < n; ++i) {
-        smoothed[j * n + i] = in.source[i] + shift;
+        if (j + 1 == J1 && in.has_fixed_target.size() == n && in.has_fixed_target[i]) {
+          smoothed[j * n + i] = in.fixed_target[i];
+        } else {
+          smoothed[j * n + i] = in.source[i] + shift;
+        }
       }
     }
   }

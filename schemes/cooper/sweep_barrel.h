@@ -35,6 +35,11 @@ struct SweepInput {
   /// Closest point on the target surface; identity when empty. Called only
   /// for interior target cap nodes.
   std::function<Vec3(const Vec3&)> project_target;
+  /// Empty, or one flag per cap node: the node's target position is known
+  /// (`fixed_target[i]`), e.g. the far end of an interior rib onto an
+  /// existing lower subcap (Blacker 1996, sec. 5.2, 6.2); it is never moved.
+  std::vector<char> has_fixed_target;
+  std::vector<Vec3> fixed_target;
 };
 
 struct SweepOptions {

@@ -1,0 +1,271 @@
+// Subcap intersection (Blacker 1996, sec. 5.3): a subcap whose gap reaches
+// two opposing subcaps, and subcaps without ribs that overlap; the
+// intersection node p is the closest one meeting even parity.
+#include "schemes/cooper/imprinter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cooperage::cooper::detail {
+
+bool Imprinter::crosses_opposing(int e, const Loop& la) {
+  for (const Subcap& b : caps(1 - e)) {
+    if (matched(b.id)) continue;
+    for (const Loop& lb : b.loops) {
+      for (size_t i = 0; i < la.size(); ++i) {
+        for (size_t k = 0; k < lb.size(); ++k) {
+          if (segment_hit(xy().at(la[i]), xy().at(la[(i + 1) % la.size()]), xy().at(lb[k]),
+                          xy().at(lb[(k + 1) % lb.size()]))) {
+            return true;
+          }
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// A free loop crossing opposing boundaries (overlapping subcaps without
+// ribs, sec. 5.3): each crossing is combined onto the closest pair of an
+// unribbed node of a and an unribbed, non-exterior opposing node (sec. 5.4),
+// giving a's loop ribs; the gaps between them are then subtracted.
+bool Imprinter::free_crossing(int e, const Subcap& a) {
+  const Loop& la = a.loops.front();
+  const size_t na = la.size();
+  std::set<int> used;
+  std::vector<Vec2> done;
+  int links = 0;
+  for (size_t i = 0; i < na; ++i) {
+    const Vec2& p0 = xy().at(la[i]);
+    const Vec2& p1 = xy().at(la[(i + 1) % na]);
+    const double h = (p1 - p0).norm();
+    for (const Subcap& b : caps(1 - e)) {
+      if (matched(b.id)) continue;
+      for (const Loop& lb : b.loops) {
+        for (size_t k = 0; k < lb.size(); ++k) {
+          const Vec2& q0 = xy().at(lb[k]);
+          const Vec2& q1 = xy().at(lb[(k + 1) % lb.size()]);
+          const auto t = segment_hit(p0, p1, q0, q1);
+          if (!t) continue;
+          const Vec2 X = p0 + *t * (p1 - p0);
+          bool seen = false;
+          for (const Vec2& d : done) seen = seen || (d - X).norm() < 0.5 * h;
+          if (seen) continue;
+          done.push_back(X);
+          int best_a = -1, best_b = -1;
+          double best = std::numeric_limits<double>::infinity();
+          for (int va : {la[i], la[(i + 1) % na]}) {
+            if (partner(e, va) || used.count(va)) continue;
+            for (int vb : {lb[k], lb[(k + 1) % lb.size()]}) {
+              if (partner(1 - e, vb) || exterior_.count(vb) || used.count(vb)) continue;
+              const double dist = (xy().at(va) - xy().at(vb)).norm();
+              if (dist < best) {
+                best = dist;
+                best_a = va;
+                best_b = vb;
+              }
+            }
+          }
+          if (best_a < 0) continue;
+          used.insert(best_a);
+          used.insert(best_b);
+          link(e, best_a, best_b);
+          r_.seams.push_back({best_a, best_b});
+          r_.steps.push_back(ImprintStep::Seam);
+          ++links;
+        }
+      }
+    }
+  }
+  if (links > 0) r_.steps.push_back(ImprintStep::Intersect);
+  return links > 0;
+}
+
+// Splits subcap bi of end e along a path x -> path -> y between two nodes
+// of one of its hole loops: the piece between the path and one arc of the
+// hole becomes a subcap, the hole grows by it (sec. 5.2-5.3).
+bool Imprinter::split_hole(int e, size_t bi, int x, const Loop& path, int y) {
+  Subcap& t = caps(e)[bi];
+  for (size_t h = 1; h < t.loops.size(); ++h) {
+    const Loop H = t.loops[h];
+    const int ix = index_in(H, x), iy = index_in(H, y);
+    if (ix < 0 || iy < 0 || ix == iy) continue;
+    const size_t n = H.size();
+    Loop fwd, bwd;  // arcs of H from y to x, exclusive
+    for (size_t k = (static_cast<size_t>(iy) + 1) % n; k != static_cast<size_t>(ix); k = (k + 1) % n) fwd.push_back(H[k]);
+    for (size_t k = (static_cast<size_t>(iy) + n - 1) % n; k != static_cast<size_t>(ix); k = (k + n - 1) % n) bwd.push_back(H[k]);
+    Loop base{x};
+    base.insert(base.end(), path.begin(), path.end());
+    base.push_back(y);
+    Loop c1 = base, c2 = base;
+    c1.insert(c1.end(), fwd.begin(), fwd.end());
+    c2.insert(c2.end(), bwd.begin(), bwd.end());
+    // The piece does not enclose the other arc.
+    auto encloses = [&](const Loop& c, const Loop& arc) {
+      return !arc.empty() && point_in_loop(xy().at(arc[arc.size() / 2]), c, xy());
+    };
+    Loop piece = encloses(c1, bwd) ? c2 : c1;
+    Loop hole = encloses(c1, bwd) ? c1 : c2;
+    if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
+    if (signed_area(hole, xy()) > 0) std::reverse(hole.begin(), hole.end());
+    t.loops[h] = hole;
+    new_cap(e, {piece});
+    r_.steps.push_back(ImprintStep::Subtract);
+    return true;
+  }
+  return false;
+}
+
+// sec. 5.3: the gap's ends reach two subcaps, b (at r1) and c (at r0).
+bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r1,
+                          const std::vector<int>& hx, const std::vector<int>& hy) {
+  if (hx.empty() || hy.empty()) return false;
+  const int o = 1 - e;
+  const int x = *partner(e, r0);
+  const int y = *partner(e, r1);
+  const size_t bi = static_cast<size_t>(hy.front());
+  const Subcap b = caps(o)[bi];
+  const Subcap c = caps(o)[static_cast<size_t>(hx.front())];
+  const Loop& bl = b.loops.front();
+  const size_t bn = bl.size();
+  // Gamma_ba + the b/c boundary S: b's loop forward from y.
+  const int iy = index_in(bl, y);
+  std::vector<int> walk;  // y ... s0 ... s_t
+  std::set<int> cset;
+  for (const Loop& l : c.loops) cset.insert(l.begin(), l.end());
+  size_t s0 = bn;
+  for (size_t k = 0; k < bn; ++k) {
+    const int v = bl[(static_cast<size_t>(iy) + k) % bn];
+    if (s0 == bn) {
+      walk.push_back(v);
+      if (cset.count(v)) s0 = walk.size() - 1;
+    } else if (cset.count(v)) {
+      walk.push_back(v);
+    } else {
+      break;
+    }
+  }
+  if (s0 == bn || walk.size() < s0 + 2) return false;
+  // Projected gap Q = x, gap..., y; find its first crossing with S.
+  std::vector<Vec2> q{xy().at(x)};
+  for (int v : gap) q.push_back(xy().at(v));
+  q.push_back(xy().at(y));
+  size_t qi = 0, sj = 0;
+  double best_t = 2;
+  bool hit = false;
+  for (size_t i = 0; i + 1 < q.size() && !hit; ++i) {
+    for (size_t j = s0; j + 1 < walk.size(); ++j) {
+      const auto t = segment_hit(q[i], q[i + 1], xy().at(walk[j]), xy().at(walk[j + 1]));
+      if (t && (!hit || *t < best_t)) {
+        hit = true;
+        best_t = *t;
+        qi = i;
+        sj = j;
+      }
+    }
+  }
+  if (!hit) return false;
+  const Vec2 X = q[qi] + best_t * (q[qi + 1] - q[qi]);
+  // Candidates for the intersection node p (sec. 5.3): a node of S next to
+  // the crossing, combined with a gap node next to it (g >= 0) or inserted
+  // on the crossed edge of a (g < 0); closest first, even parity kept.
+  struct Cand {
+    long g;
+    size_t pj;
+    double d;
+  };
+  std::vector<Cand> cands;
+  const size_t asize = caps(e)[index_of_cap(e, a.id)].loops.front().size();
+  for (size_t pj : {sj, sj + 1}) {
+    if (pj <= s0 || pj >= walk.size()) continue;
+    const int p = walk[pj];
+    if (partner_[o].count(p) || exterior_.count(p)) continue;
+    for (long g : {static_cast<long>(qi) - 1, static_cast<long>(qi)}) {
+      if (g < 0 || g >= static_cast<long>(gap.size())) continue;
+      cands.push_back({g, pj, (xy().at(gap[static_cast<size_t>(g)]) - xy().at(p)).norm()});
+    }
+    cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
+  }
+  std::stable_sort(cands.begin(), cands.end(), [](const Cand& u, const Cand& v) { return u.d < v.d; });
+  for (const Cand& cand : cands) {
+    const size_t pj = cand.pj;
+    const int p = walk[pj];
+    const size_t first_b = cand.g >= 0 ? static_cast<size_t>(cand.g) + 1 : qi;
+    const size_t kept = gap.size() > first_b ? gap.size() - first_b : 0;
+    const size_t count = (pj + 1) + kept;  // nodes of a^
+    if (options_.even_parity) {
+      if (count % 2 != 0) continue;
+      // An inserted node makes a's remainder odd when a is even.
+      if (cand.g < 0 && (asize + 1 - count + 2) % 2 != 0) continue;
+    }
+    int p_up;
+    if (cand.g >= 0) {
+      p_up = gap[static_cast<size_t>(cand.g)];
+      partner_[e][p_up] = p;
+      partner_[o][p] = p_up;
+      r_.seams.push_back({p_up, p});
+      r_.steps.push_back(ImprintStep::Seam);
+    } else {
+      p_up = next_node_++;
+      r_.ends.xy[p_up] = xy().at(p);
+      const int u0 = qi == 0 ? r0 : gap[qi - 1];
+      const int u1 = qi < gap.size() ? gap[qi] : r1;
+      insert_on_edge(e, u0, u1, p_up);
+      link(o, p, p_up);
+    }
+    // Lower side: a^ = b split by p -> projected gap[first_b ..] -> y.
+    Loop low_path;
+    for (size_t g = first_b; g < gap.size(); ++g) low_path.push_back(project(e, gap[g], a.loops.front()));
+    // Upper side: project Gamma_bp (walk up to p) where it has no rib.
+    Loop up_path;
+    int ja = -1;
+    for (size_t k = 0; k < pj; ++k) {
+      const int v = walk[k];
+      if (const auto pv = partner(o, v); pv && k <= s0) {
+        ja = *pv;
+        up_path.clear();
+      } else {
+        up_path.push_back(project(o, v, bl));
+      }
+    }
+    if (ja < 0) return false;
+    const size_t ai = index_of_cap(e, a.id);
+    const Loop aouter = caps(e)[ai].loops.front();
+    auto [a_left, a_right] = split_loop(aouter, ja, up_path, p_up);
+    auto [b_left, b_right] = split_loop(caps(o)[index_of_cap(o, b.id)].loops.front(), p, low_path, y);
+    const auto a_ids = replace(e, ai, {a_left, a_right});
+    const auto b_ids = replace(o, index_of_cap(o, b.id), {b_left, b_right});
+    if (!a_ids.empty() && !b_ids.empty()) {
+      match_of_[a_ids.front()] = b_ids.front();
+      match_of_[b_ids.front()] = a_ids.front();
+    }
+    r_.steps.push_back(ImprintStep::Intersect);
+    return true;
+  }
+  return false;
+}
+
+size_t Imprinter::index_of_cap(int e, int id) {
+  auto& list = caps(e);
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (list[i].id == id) return i;
+  }
+  return list.size();
+}
+
+void Imprinter::insert_on_edge(int e, int u, int v, int w) {
+  for (Subcap& s : caps(e)) {
+    for (Loop& l : s.loops) {
+      const size_t n = l.size();
+      for (size_t k = 0; k < n; ++k) {
+        if ((l[k] == u && l[(k + 1) % n] == v) || (l[k] == v && l[(k + 1) % n] == u)) {
+          l.insert(l.begin() + static_cast<long>(k + 1), w);
+          break;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace cooperage::cooper::detail

@@ -1,0 +1,169 @@
+#include "schemes/cooper/imprint_polygons.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cooperage::cooper {
+
+double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy) {
+  double a = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Vec2& p = xy.at(loop[i]);
+    const Vec2& q = xy.at(loop[(i + 1) % loop.size()]);
+    a += p.x() * q.y() - p.y() * q.x();
+  }
+  return 0.5 * a;
+}
+
+namespace detail {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Intersection parameter t on segment p0-p1 with q0-q1 (touching included).
+std::optional<double> segment_hit(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
+  const Vec2 r = p1 - p0, s = q1 - q0;
+  const double d = cross(r, s);
+  const double scale = r.norm() * s.norm();
+  if (std::abs(d) <= 1e-12 * scale) return std::nullopt;  // parallel
+  const double t = cross(q0 - p0, s) / d;
+  const double u = cross(q0 - p0, r) / d;
+  const double eps = 1e-9;
+  if (t < -eps || t > 1 + eps || u < -eps || u > 1 + eps) return std::nullopt;
+  return std::clamp(t, 0.0, 1.0);
+}
+
+bool point_in_loop(const Vec2& p, const Loop& loop, const std::map<int, Vec2>& xy) {
+  bool in = false;
+  for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+    const Vec2& a = xy.at(loop[i]);
+    const Vec2& b = xy.at(loop[j]);
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      in = !in;
+    }
+  }
+  return in;
+}
+
+bool point_in_subcap(const Vec2& p, const Subcap& s, const std::map<int, Vec2>& xy) {
+  if (!point_in_loop(p, s.loops.front(), xy)) return false;
+  for (size_t h = 1; h < s.loops.size(); ++h) {
+    if (point_in_loop(p, s.loops[h], xy)) return false;
+  }
+  return true;
+}
+
+int index_in(const Loop& loop, int node) {
+  const auto it = std::find(loop.begin(), loop.end(), node);
+  return it == loop.end() ? -1 : static_cast<int>(it - loop.begin());
+}
+
+bool adjacent(const Loop& loop, int a, int b) {
+  const int i = index_in(loop, a);
+  if (i < 0) return false;
+  const size_t n = loop.size();
+  return loop[(static_cast<size_t>(i) + 1) % n] == b || loop[(static_cast<size_t>(i) + n - 1) % n] == b;
+}
+
+// Splits a counter-clockwise loop by a path x -> interior -> y (x, y on the
+// loop): left = path + loop from y forward to x; right = reversed path +
+// loop from x forward to y (sec. 5.2: b^ and b').
+std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y) {
+  const size_t n = loop.size();
+  const size_t ix = static_cast<size_t>(index_in(loop, x));
+  const size_t iy = static_cast<size_t>(index_in(loop, y));
+  Loop left{x};
+  left.insert(left.end(), interior.begin(), interior.end());
+  for (size_t k = iy;; k = (k + 1) % n) {
+    if (loop[k] == x) break;
+    left.push_back(loop[k]);
+  }
+  Loop right{y};
+  right.insert(right.end(), interior.rbegin(), interior.rend());
+  for (size_t k = ix;; k = (k + 1) % n) {
+    if (loop[k] == y) break;
+    right.push_back(loop[k]);
+  }
+  return {left, right};
+}
+
+// Splits a loop at its first repeated node; returns false when none.
+bool split_at_repeat(const Loop& loop, Loop& a, Loop& b) {
+  for (size_t i = 0; i < loop.size(); ++i) {
+    for (size_t j = i + 1; j < loop.size(); ++j) {
+      if (loop[i] != loop[j]) continue;
+      a.assign(loop.begin() + static_cast<long>(i), loop.begin() + static_cast<long>(j));
+      b.assign(loop.begin() + static_cast<long>(j), loop.end());
+      b.insert(b.end(), loop.begin(), loop.begin() + static_cast<long>(i));
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace detail
+
+using detail::Loop;
+
+// cite: Blacker 1996, sec. 5.5 (self-intersecting subcaps: n + 1 loops).
+std::vector<Loop> split_self_intersections(const Loop& input, const std::map<int, Vec2>& xy,
+                                           bool even_parity,
+                                           std::vector<std::pair<int, int>>* combined) {
+  Loop loop = input;
+  // Combine proper crossings onto node pairs.
+  for (int guard = 0; guard < 1000; ++guard) {
+    const size_t n = loop.size();
+    bool changed = false;
+    for (size_t i = 0; i < n && !changed; ++i) {
+      for (size_t k = i + 2; k < n && !changed; ++k) {
+        if ((k + 1) % n == i) continue;
+        const int a0 = loop[i], a1 = loop[(i + 1) % n], b0 = loop[k], b1 = loop[(k + 1) % n];
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+        if (!detail::segment_hit(xy.at(a0), xy.at(a1), xy.at(b0), xy.at(b1))) continue;
+        // Candidate pairs (one node of each segment), closest first, even loops preferred.
+        struct Cand { size_t p, q; double d; };
+        std::vector<Cand> cands;
+        for (size_t p : {i, (i + 1) % n}) {
+          for (size_t q : {k, (k + 1) % n}) cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
+        }
+        std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) { return x.d < y.d; });
+        const Cand* pick = &cands.front();
+        if (even_parity) {
+          for (const Cand& c : cands) {
+            const size_t lo = std::min(c.p, c.q), hi = std::max(c.p, c.q);
+            if ((hi - lo) % 2 == 0) {
+              pick = &c;
+              break;
+            }
+          }
+        }
+        const int keep = std::min(loop[pick->p], loop[pick->q]);
+        const int drop = std::max(loop[pick->p], loop[pick->q]);
+        if (combined) combined->push_back({drop, keep});
+        for (int& v : loop) {
+          if (v == drop) v = keep;
+        }
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  // Split at repeated nodes (touching points), recursively.
+  std::vector<Loop> out;
+  std::vector<Loop> work{loop};
+  while (!work.empty()) {
+    Loop l = work.back();
+    work.pop_back();
+    Loop a, b;
+    if (detail::split_at_repeat(l, a, b)) {
+      if (a.size() >= 3) work.push_back(a);
+      if (b.size() >= 3) work.push_back(b);
+    } else if (l.size() >= 3) {
+      out.push_back(l);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,60 @@
+// Polygon work on node loops for subcap imprinting (Blacker 1996, sec. 5):
+// loops of node ids with 2D coordinates (a barrel end projected along the
+// barrel axis). Value types only.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace cooperage::cooper {
+
+using Vec2 = Eigen::Vector2d;
+
+/// A subcap of one barrel end: loops of node ids, outer loop first
+/// (counter-clockwise in the barrel's 2D projection), holes clockwise.
+struct Subcap {
+  int id = 0;
+  std::vector<std::vector<int>> loops;
+};
+
+/// Signed area of a loop (positive counter-clockwise).
+double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy);
+
+/// Splits closed loop `loop` (no repeated nodes) at its repeated or crossing
+/// points into n + 1 loops (sec. 5.5). Crossings between segments are first
+/// combined onto a node pair (the closer pair whose loops stay even when
+/// `even_parity`); `combined` receives (removed node, kept node). Returns
+/// the loops; counter-clockwise ones are caps, clockwise ones overlaps.
+std::vector<std::vector<int>> split_self_intersections(
+    const std::vector<int>& loop, const std::map<int, Vec2>& xy, bool even_parity,
+    std::vector<std::pair<int, int>>* combined = nullptr);
+
+namespace detail {
+
+using Loop = std::vector<int>;
+
+double cross(const Vec2& a, const Vec2& b);
+/// Parameter on p0-p1 where it meets q0-q1 (touching included), if it does.
+std::optional<double> segment_hit(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1);
+/// Even-odd point in polygon.
+bool point_in_loop(const Vec2& p, const Loop& loop, const std::map<int, Vec2>& xy);
+/// Inside the outer loop and outside every hole.
+bool point_in_subcap(const Vec2& p, const Subcap& s, const std::map<int, Vec2>& xy);
+/// Position of `node` in `loop`, -1 when absent.
+int index_in(const Loop& loop, int node);
+/// a and b are consecutive in the (cyclic) loop.
+bool adjacent(const Loop& loop, int a, int b);
+/// Splits a counter-clockwise loop by a path x -> interior -> y (x, y on the
+/// loop): first = path + loop from y forward to x (the left side of the
+/// path); second = reversed path + loop from x forward to y (sec. 5.2: the
+/// caps b^ and b').
+std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y);
+/// Splits a loop at its first repeated node; false when none.
+bool split_at_repeat(const Loop& loop, Loop& a, Loop& b);
+
+}  // namespace detail
+}  // namespace cooperage::cooper

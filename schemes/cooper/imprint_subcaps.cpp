@@ -1,0 +1,425 @@
+#include "schemes/cooper/imprint_subcaps.h"
+
+#include "schemes/cooper/imprinter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <set>
+
+namespace cooperage::cooper {
+
+const char* to_string(ImprintStep step) {
+  switch (step) {
+    case ImprintStep::Match: return "match";
+    case ImprintStep::Subtract: return "subtract";
+    case ImprintStep::Intersect: return "intersect";
+    case ImprintStep::Seam: return "seam";
+    case ImprintStep::SelfIntersect: return "self-intersect";
+  }
+  return "?";
+}
+
+namespace detail {
+
+Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : options_(options) {
+  r_.ends = in;
+  for (const auto& [id, p] : in.xy) next_node_ = std::max(next_node_, id + 1);
+  for (const auto* list : {&in.upper, &in.lower}) {
+    for (const Subcap& s : *list) next_cap_ = std::max(next_cap_, s.id + 1);
+  }
+  for (const auto& [u, l] : in.ribs) {
+    partner_[0][u] = l;
+    partner_[1][l] = u;
+    exterior_.insert(u);
+    exterior_.insert(l);
+  }
+}
+
+ImprintResult Imprinter::run() {
+  for (int step = 0; step < options_.max_steps; ++step) {
+    if (all_matched()) {
+      finish();
+      return r_;
+    }
+    if (try_matches()) continue;
+    if (try_gaps()) continue;
+    r_.why = "no imprinting step applies to the unmatched subcaps" + unmatched_list();
+    return r_;
+  }
+  r_.why = "imprinting did not finish within " + std::to_string(options_.max_steps) + " steps";
+  return r_;
+}
+
+bool Imprinter::all_matched() {
+  for (int e = 0; e < 2; ++e) {
+    for (const Subcap& s : caps(e)) {
+      if (!matched(s.id)) return false;
+    }
+  }
+  return true;
+}
+
+std::string Imprinter::unmatched_list() {
+  std::string s;
+  for (int e = 0; e < 2; ++e) {
+    for (const Subcap& c : caps(e)) {
+      if (!matched(c.id)) s += std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
+    }
+  }
+  return s;
+}
+
+void Imprinter::finish() {
+  r_.ok = true;
+  for (const Subcap& s : r_.ends.upper) r_.matches.push_back({s.id, match_of_.at(s.id)});
+  std::sort(r_.matches.begin(), r_.matches.end());
+  r_.ends.ribs.clear();
+  for (const auto& [u, l] : partner_[0]) r_.ends.ribs.push_back({u, l});
+}
+
+std::optional<int> Imprinter::partner(int e, int node) const {
+  const auto it = partner_[e].find(node);
+  if (it == partner_[e].end()) return std::nullopt;
+  return it->second;
+}
+
+void Imprinter::link(int e, int node, int other) {
+  ++version_;
+  partner_[e][node] = other;
+  partner_[1 - e][other] = node;
+  r_.interior_ribs.push_back(e == 0 ? std::make_pair(node, other) : std::make_pair(other, node));
+}
+
+// Unmatched subcaps of end e whose loops contain node.
+std::vector<int> Imprinter::holders(int e, int node) {
+  std::vector<int> out;
+  auto& list = caps(e);
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (matched(list[i].id)) continue;
+    for (const Loop& l : list[i].loops) {
+      if (index_in(l, node) >= 0) {
+        out.push_back(static_cast<int>(i));
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+// sec. 5.1: a is fully ribbed into b and b into a, loop for loop.
+bool Imprinter::try_matches() {
+  auto& up = caps(0);
+  auto& lo = caps(1);
+  for (const Subcap& a : up) {
+    if (matched(a.id)) continue;
+    std::set<int> image;
+    bool full = true;
+    for (const Loop& l : a.loops) {
+      for (int v : l) {
+        const auto p = partner(0, v);
+        if (!p) full = false;
+        else image.insert(*p);
+      }
+    }
+    if (!full) continue;
+    for (const Subcap& b : lo) {
+      if (matched(b.id) || b.loops.size() != a.loops.size()) continue;
+      std::set<int> nodes;
+      for (const Loop& l : b.loops) nodes.insert(l.begin(), l.end());
+      if (nodes != image) continue;
+      match_of_[a.id] = b.id;
+      match_of_[b.id] = a.id;
+      r_.steps.push_back(ImprintStep::Match);
+      return true;
+    }
+  }
+  return false;
+}
+
+// Projects node v of end e onto end 1 - e (seaming onto an opposing node
+// without a rib when close, sec. 5.4); returns the opposing node.
+int Imprinter::project(int e, int v, const Loop& around) {
+  if (const auto p = partner(e, v)) return *p;
+  const Vec2 x = xy().at(v);
+  double h = std::numeric_limits<double>::infinity();
+  const int i = index_in(around, v);
+  if (i >= 0) {
+    const size_t n = around.size();
+    h = std::min((xy().at(around[(static_cast<size_t>(i) + 1) % n]) - x).norm(),
+                 (xy().at(around[(static_cast<size_t>(i) + n - 1) % n]) - x).norm());
+  }
+  const double tol = std::isfinite(h) ? options_.seam_fraction * h : 0.0;
+  int best = -1;
+  double best_d = tol;
+  for (const Subcap& s : caps(1 - e)) {
+    if (matched(s.id)) continue;
+    for (const Loop& l : s.loops) {
+      for (int w : l) {
+        if (partner_[1 - e].count(w) || exterior_.count(w)) continue;
+        const double d = (xy().at(w) - x).norm();
+        if (d < best_d) {
+          best_d = d;
+          best = w;
+        }
+      }
+    }
+  }
+  if (best >= 0) {
+    link(e, v, best);
+    r_.interior_ribs.pop_back();  // a seam, not a new rib node
+    r_.interior_ribs.push_back(e == 0 ? std::make_pair(v, best) : std::make_pair(best, v));
+    r_.seams.push_back({v, best});
+    r_.steps.push_back(ImprintStep::Seam);
+    return best;
+  }
+  const int w = next_node_++;
+  r_.ends.xy[w] = x;
+  link(e, v, w);
+  return w;
+}
+
+int Imprinter::new_cap(int e, std::vector<Loop> loops) {
+  ++version_;
+  Subcap s;
+  s.id = next_cap_++;
+  s.loops = std::move(loops);
+  caps(e).push_back(s);
+  return s.id;
+}
+
+// Replaces subcap index `bi` of end e by outer loops `pieces`, handing
+// out its holes to the piece containing them; returns their ids. Pieces
+// that cross or touch themselves are resolved first (sec. 5.5).
+std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& pieces) {
+  const Subcap old = caps(e)[bi];
+  caps(e).erase(caps(e).begin() + static_cast<long>(bi));
+  std::vector<Loop> outers, overlaps;
+  for (const Loop& p : pieces) {
+    std::vector<std::pair<int, int>> combined;
+    const auto parts = split_self_intersections(p, xy(), options_.even_parity, &combined);
+    apply_combined(e, combined);
+    if (parts.size() > 1) r_.steps.push_back(ImprintStep::SelfIntersect);
+    for (const Loop& part : parts) {
+      const double a = signed_area(part, xy());
+      if (std::abs(a) < 1e-14) continue;
+      (a > 0 ? outers : overlaps).push_back(part);
+    }
+  }
+  std::vector<int> ids;
+  std::vector<std::vector<Loop>> loops;
+  for (const Loop& o : outers) loops.push_back({o});
+  for (size_t h = 1; h < old.loops.size(); ++h) {
+    const Vec2 p = xy().at(old.loops[h].front());
+    for (auto& l : loops) {
+      if (point_in_loop(p, l.front(), xy())) {
+        l.push_back(old.loops[h]);
+        break;
+      }
+    }
+  }
+  for (auto& l : loops) ids.push_back(new_cap(e, l));
+  for (const Loop& o : overlaps) subtract_overlap(e, Loop(o.rbegin(), o.rend()));
+  return ids;
+}
+
+void Imprinter::apply_combined(int e, const std::vector<std::pair<int, int>>& combined) {
+  for (const auto& [drop, keep] : combined) {
+    for (Subcap& s : caps(e)) {
+      for (Loop& l : s.loops) {
+        for (int& v : l) {
+          if (v == drop) v = keep;
+        }
+      }
+    }
+    if (const auto p = partner(e, drop)) {
+      partner_[e].erase(drop);
+      partner_[e][keep] = *p;
+      partner_[1 - e][*p] = keep;
+    }
+    r_.seams.push_back({drop, keep});
+  }
+}
+
+// sec. 5.5: an overlap (a loop traversed clockwise after a subtraction)
+// lies inside other subcaps; it is subtracted from each and becomes a subcap.
+void Imprinter::subtract_overlap(int e, const Loop& piece) {
+  Vec2 c = Vec2::Zero();
+  for (int v : piece) c += xy().at(v);
+  c /= static_cast<double>(piece.size());
+  auto& list = caps(e);
+  for (size_t i = 0; i < list.size(); ++i) {
+    Subcap& t = list[i];
+    if (!point_in_subcap(c, t, xy())) continue;
+    const Loop& outer = t.loops.front();
+    // The piece's chain off t's outer loop cuts t.
+    const size_t n = piece.size();
+    int start = -1;
+    for (size_t k = 0; k < n; ++k) {
+      if (index_in(outer, piece[k]) >= 0 && index_in(outer, piece[(k + 1) % n]) < 0) start = static_cast<int>(k);
+    }
+    if (start < 0) {
+      t.loops.push_back(Loop(piece.rbegin(), piece.rend()));  // fully inside: a hole
+    } else {
+      Loop interior;
+      size_t k = (static_cast<size_t>(start) + 1) % n;
+      while (index_in(outer, piece[k]) < 0) {
+        interior.push_back(piece[k]);
+        k = (k + 1) % n;
+      }
+      const int x = piece[static_cast<size_t>(start)], y = piece[k];
+      auto [left, right] = split_loop(outer, x, interior, y);
+      std::set<int> ps(piece.begin(), piece.end());
+      const Loop& keep = std::set<int>(left.begin(), left.end()) == ps ? right : left;
+      t.loops.front() = keep;
+    }
+    if (matched(t.id)) {  // recategorise its former match too
+      match_of_.erase(match_of_.at(t.id));
+      match_of_.erase(t.id);
+    }
+  }
+  new_cap(e, {piece});
+}
+
+// A gap of loop l of subcap s (end e): consecutive ribbed nodes r0 -> r1
+// with the nodes between them unribbed (or none, when the partners are not
+// adjacent on an opposing subcap).
+bool Imprinter::try_gaps() {
+  for (int e = 0; e < 2; ++e) {
+    for (size_t si = 0; si < caps(e).size(); ++si) {
+      if (matched(caps(e)[si].id)) continue;
+      const Subcap s = caps(e)[si];
+      const Loop& outer = s.loops.front();
+      std::vector<size_t> ribbed;
+      for (size_t k = 0; k < outer.size(); ++k) {
+        if (partner(e, outer[k])) ribbed.push_back(k);
+      }
+      if (ribbed.empty()) {
+        if (free_loop(e, s) || free_crossing(e, s)) return true;
+        continue;
+      }
+      const size_t n = outer.size();
+      for (size_t g = 0; g < ribbed.size(); ++g) {
+        const size_t k0 = ribbed[g];
+        const size_t k1 = ribbed[(g + 1) % ribbed.size()];
+        Loop gap;
+        for (size_t k = (k0 + 1) % n; k != k1; k = (k + 1) % n) gap.push_back(outer[k]);
+        const int x = *partner(e, outer[k0]);
+        const int y = *partner(e, outer[k1]);
+        if (gap.empty() && (x == y || opposing_edge(e, x, y))) continue;
+        if (gap.empty() && ribbed.size() == 1) continue;
+        const long before = version_;
+        if (gap_step(e, s, outer[k0], gap, outer[k1]) && version_ != before) return true;
+      }
+      if (hole_loops(e, s)) return true;
+    }
+  }
+  return false;
+}
+
+bool Imprinter::opposing_edge(int e, int x, int y) {
+  for (const Subcap& b : caps(1 - e)) {
+    if (matched(b.id)) continue;
+    for (const Loop& l : b.loops) {
+      if (adjacent(l, x, y)) return true;
+    }
+  }
+  return false;
+}
+
+// sec. 5.2: a subcap without any rib projects inside one opposing subcap.
+bool Imprinter::free_loop(int e, const Subcap& a) {
+  const Vec2 p = xy().at(a.loops.front().front());
+  auto& opp = caps(1 - e);
+  // Only a loop that lies inside one opposing subcap is subtracted here; a
+  // free loop crossing an opposing boundary is left to free_crossing().
+  if (crosses_opposing(e, a.loops.front())) return false;
+  for (size_t bi = 0; bi < opp.size(); ++bi) {
+    if (matched(opp[bi].id) || !point_in_subcap(p, opp[bi], xy())) continue;
+    std::vector<Loop> images;
+    for (const Loop& l : a.loops) {
+      Loop img;
+      for (int v : l) img.push_back(project(e, v, l));
+      images.push_back(img);
+    }
+    Subcap& b = opp[bi];
+    b.loops.push_back(Loop(images.front().rbegin(), images.front().rend()));
+    std::vector<Loop> hat_loops{images.front()};
+    for (size_t h = 1; h < images.size(); ++h) {
+      hat_loops.push_back(images[h]);
+      new_cap(1 - e, {Loop(images[h].rbegin(), images[h].rend())});
+    }
+    new_cap(1 - e, hat_loops);
+    r_.steps.push_back(ImprintStep::Subtract);
+    return true;
+  }
+  return false;
+}
+
+// Hole loops of a without ribs: projected as holes into the subcap of the
+// opposing end that holds a's outer image, plus a subcap filling each.
+bool Imprinter::hole_loops(int e, const Subcap& a) {
+  for (size_t h = 1; h < a.loops.size(); ++h) {
+    const Loop& l = a.loops[h];
+    if (std::any_of(l.begin(), l.end(), [&](int v) { return partner(e, v).has_value(); })) continue;
+    if (crosses_opposing(e, l)) continue;
+    const Vec2 p = xy().at(l.front());
+    auto& opp = caps(1 - e);
+    for (size_t bi = 0; bi < opp.size(); ++bi) {
+      if (matched(opp[bi].id) || !point_in_subcap(p, opp[bi], xy())) continue;
+      Loop img;
+      for (int v : l) img.push_back(project(e, v, l));
+      caps(1 - e)[bi].loops.push_back(img);
+      new_cap(1 - e, {Loop(img.rbegin(), img.rend())});
+      r_.steps.push_back(ImprintStep::Subtract);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1) {
+  const int x = *partner(e, r0);
+  const int y = *partner(e, r1);
+  const auto hx = holders(1 - e, x);
+  const auto hy = holders(1 - e, y);
+  std::vector<int> common;
+  for (int h : hx) {
+    if (std::find(hy.begin(), hy.end(), h) != hy.end()) common.push_back(h);
+  }
+  if (common.empty()) return intersect(e, a, r0, gap, r1, hx, hy);
+  // sec. 5.2 subtraction: project the gap into the common subcap that
+  // holds the gap's first segment.
+  const Vec2 probe = 0.5 * (xy().at(x) + (gap.empty() ? xy().at(y) : xy().at(gap.front())));
+  size_t bi = static_cast<size_t>(common.front());
+  for (int c : common) {
+    if (point_in_subcap(probe, caps(1 - e)[static_cast<size_t>(c)], xy())) bi = static_cast<size_t>(c);
+  }
+  Loop path;
+  for (int v : gap) path.push_back(project(e, v, a.loops.front()));
+  const Loop outer = caps(1 - e)[bi].loops.front();
+  // Seamed onto b's boundary throughout: no split, the ribs are the progress.
+  bool on_loop = true;
+  for (int v : path) on_loop = on_loop && index_in(outer, v) >= 0;
+  if (on_loop && !path.empty()) {
+    r_.steps.push_back(ImprintStep::Subtract);
+    return true;
+  }
+  if (path.empty() && adjacent(outer, x, y)) return false;
+  if (index_in(outer, x) < 0 || index_in(outer, y) < 0) return split_hole(1 - e, bi, x, path, y);
+  auto [left, right] = split_loop(outer, x, path, y);
+  replace(1 - e, bi, {left, right});
+  r_.steps.push_back(ImprintStep::Subtract);
+  return true;
+}
+
+
+}  // namespace detail
+
+// cite: Blacker 1996, sec. 5 (imprinting subcaps: 5.1-5.5).
+ImprintResult imprint_subcaps(const BarrelEnds& ends, const ImprintOptions& options) {
+  return detail::Imprinter(ends, options).run();
+}
+
+}  // namespace cooperage::cooper

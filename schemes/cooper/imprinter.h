@@ -1,0 +1,96 @@
+// The imprinting state machine of imprint_subcaps() (Blacker 1996, sec. 5):
+// detail shared by imprint_subcaps.cpp (matching, subtraction, seaming,
+// self-intersection) and imprint_intersect.cpp (intersection, sec. 5.3).
+#pragma once
+
+#include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/imprint_subcaps.h"
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cooperage::cooper::detail {
+
+class Imprinter {
+ public:
+  Imprinter(const BarrelEnds& in, const ImprintOptions& options);
+  ImprintResult run();
+
+ private:
+  std::vector<Subcap>& caps(int e) { return e == 0 ? r_.ends.upper : r_.ends.lower; }
+  const std::map<int, Vec2>& xy() const { return r_.ends.xy; }
+  bool matched(int cap) const { return match_of_.count(cap) > 0; }
+
+  bool all_matched();
+  std::string unmatched_list();
+  void finish();
+  std::optional<int> partner(int e, int node) const;
+  void link(int e, int node, int other);
+
+  // Unmatched subcaps of end e whose loops contain node.
+  std::vector<int> holders(int e, int node);
+
+  // sec. 5.1: a is fully ribbed into b and b into a, loop for loop.
+  bool try_matches();
+
+  // Projects node v of end e onto end 1 - e (seaming onto an opposing node
+  // without a rib when close, sec. 5.4); returns the opposing node.
+  int project(int e, int v, const Loop& around);
+  int new_cap(int e, std::vector<Loop> loops);
+
+  // Replaces subcap index `bi` of end e by outer loops `pieces`, handing
+  // out its holes to the piece containing them; returns their ids. Pieces
+  // that cross or touch themselves are resolved first (sec. 5.5).
+  std::vector<int> replace(int e, size_t bi, const std::vector<Loop>& pieces);
+  void apply_combined(int e, const std::vector<std::pair<int, int>>& combined);
+
+  // sec. 5.5: an overlap (a loop traversed clockwise after a subtraction)
+  // lies inside other subcaps; it is subtracted from each and becomes a subcap.
+  void subtract_overlap(int e, const Loop& piece);
+
+  // A gap of loop l of subcap s (end e): consecutive ribbed nodes r0 -> r1
+  // with the nodes between them unribbed (or none, when the partners are not
+  // adjacent on an opposing subcap).
+  bool try_gaps();
+  bool opposing_edge(int e, int x, int y);
+  bool crosses_opposing(int e, const Loop& la);
+
+  // sec. 5.2: a subcap without any rib projects inside one opposing subcap.
+  bool free_loop(int e, const Subcap& a);
+
+  // Hole loops of a without ribs: projected as holes into the subcap of the
+  // opposing end that holds a's outer image, plus a subcap filling each.
+  bool hole_loops(int e, const Subcap& a);
+
+  // A free loop crossing opposing boundaries (overlapping subcaps without
+  // ribs, sec. 5.3): each crossing is combined onto the closest pair of an
+  // unribbed node of a and an unribbed, non-exterior opposing node (sec. 5.4),
+  // giving a's loop ribs; the gaps between them are then subtracted.
+  bool free_crossing(int e, const Subcap& a);
+
+  // Splits subcap bi of end e along a path x -> path -> y between two nodes
+  // of one of its hole loops: the piece between the path and one arc of the
+  // hole becomes a subcap, the hole grows by it (sec. 5.2-5.3).
+  bool split_hole(int e, size_t bi, int x, const Loop& path, int y);
+  bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
+
+  // sec. 5.3: the gap's ends reach two subcaps, b (at r1) and c (at r0).
+  bool intersect(int e, const Subcap& a, int r0, const Loop& gap, int r1,
+                 const std::vector<int>& hx, const std::vector<int>& hy);
+  size_t index_of_cap(int e, int id);
+  void insert_on_edge(int e, int u, int v, int w);
+  ImprintOptions options_;
+  ImprintResult r_;
+  std::map<int, int> partner_[2];
+  std::set<int> exterior_;
+  std::map<int, int> match_of_;  // subcap id -> matched subcap id
+  int next_node_ = 0;
+  int next_cap_ = 0;
+  long version_ = 0;  // bumped by every new rib and subcap: progress
+};
+
+}  // namespace cooperage::cooper::detail

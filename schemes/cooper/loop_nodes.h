@@ -1,0 +1,18 @@
+// Boundary node loops of a surface from its meshed curves (the cap loops
+// whose nodes start the ribs, Blacker 1996, sec. 4).
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/mesh/mesh_db.h"
+
+#include <vector>
+
+namespace cooperage::cooper {
+
+/// Node loops of `surface_id`, in loop order (face on the left seen against
+/// its natural normal), first node not repeated. Throws MeshingError naming
+/// `volume_id` when a curve is not meshed or a loop is not closed.
+std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
+                                         int volume_id, int surface_id);
+
+}  // namespace cooperage::cooper

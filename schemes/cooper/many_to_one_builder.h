@@ -1,0 +1,61 @@
+// The many-to-one builder shared by the barrel kinds (detail of
+// sweep_many_to_one.h): barrels whose lower cap has no subcaps
+// (sweep_many_to_one.cpp) and barrels with subcaps on both ends, whose
+// real caps are imprinted and meshed here (sweep_two_sided.cpp).
+#pragma once
+
+#include "framework/core/error.h"
+#include "schemes/cooper/form_barrels.h"
+#include "schemes/cooper/sweep_many_to_one.h"
+
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace cooperage::cooper::detail {
+
+[[noreturn]] inline void fail(int volume_id, const std::string& message) {
+  throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
+}
+
+// A virtual lower cap, in EntityMesh-local nodes, oriented counter-clockwise
+// about the sweep direction of the barrel that made it.
+struct VirtualCap {
+  std::vector<mesh::Quad> quads;
+  std::vector<mesh::Tri> tris;
+};
+
+class Builder {
+ public:
+  Builder(const scheme::VolumeView& view, const ManyToOne& plan, const scheme::PolygonMesher* mesher)
+      : vid_(view.volume_id), model_(view.model), db_(*view.mesh), plan_(plan), mesher_(mesher) {}
+
+  scheme::EntityMesh run(std::vector<BarrelReport>* reports);
+
+ private:
+  int existing(int g);
+  const mesh::SurfaceMeshData& meshed(int surface, const std::string& what) const;
+  const SideFace& side(int surface) const;
+  std::set<int> lower_curves(const BarrelPlan& p) const;
+  /// Side quads, rib loops of the upper cap, stop nodes and the expected rib
+  /// ends of barrel b; the ribs.
+  Barrel ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_nodes) const;
+  BarrelReport barrel(size_t b);
+  BarrelReport two_sided(size_t b);
+  /// A barrel meshed from the middle: swept from its virtual cap (made by
+  /// the two-sided barrel it flows into) out to its real cap; `flip` when the
+  /// virtual cap's elements face the other way.
+  BarrelReport sweep_out(size_t b, bool flip);
+
+  int vid_;
+  const geom::Model& model_;
+  const mesh::MeshDB& db_;
+  const ManyToOne& plan_;
+  const scheme::PolygonMesher* mesher_;
+  scheme::EntityMesh out_;
+  std::unordered_map<int, int> local_;
+  std::vector<VirtualCap> virtual_;
+};
+
+}  // namespace cooperage::cooper::detail

@@ -1,0 +1,56 @@
+#include "schemes/cooper/smooth_cap.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace cooperage::cooper {
+
+double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
+                               const std::vector<mesh::Quad>& quads, const mesh::Vec3& normal) {
+  double worst = 1.0;
+  for (const auto& q : quads) {
+    for (size_t k = 0; k < 4; ++k) {
+      const mesh::Vec3& p = points[static_cast<size_t>(q[k])];
+      const mesh::Vec3 a = points[static_cast<size_t>(q[(k + 1) % 4])] - p;
+      const mesh::Vec3 b = points[static_cast<size_t>(q[(k + 3) % 4])] - p;
+      const double la = a.norm(), lb = b.norm();
+      if (la == 0 || lb == 0) return -1.0;
+      worst = std::min(worst, a.cross(b).dot(normal) / (la * lb));
+    }
+  }
+  return worst;
+}
+
+// cite: Blacker 1996, sec. 6.1 (smoothing the subcaps of one exterior face).
+bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
+                const std::vector<char>& movable, const mesh::Vec3& normal,
+                const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations) {
+  std::vector<std::vector<int>> nbr(points.size());
+  for (const auto& q : quads) {
+    for (size_t k = 0; k < 4; ++k) {
+      nbr[static_cast<size_t>(q[k])].push_back(q[(k + 1) % 4]);
+      nbr[static_cast<size_t>(q[k])].push_back(q[(k + 3) % 4]);
+    }
+  }
+  for (auto& n : nbr) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  const double before = min_quad_corner_quality(points, quads, normal);
+  std::vector<mesh::Vec3> trial = points;
+  for (int it = 0; it < iterations; ++it) {
+    for (size_t i = 0; i < trial.size(); ++i) {
+      if (!movable[i] || nbr[i].empty()) continue;
+      mesh::Vec3 sum = mesh::Vec3::Zero();
+      for (int j : nbr[i]) sum += trial[static_cast<size_t>(j)];
+      const mesh::Vec3 x = sum / static_cast<double>(nbr[i].size());
+      trial[i] = project ? project(x) : x;
+    }
+  }
+  if (min_quad_corner_quality(trial, quads, normal) < before) return false;
+  points.swap(trial);
+  return true;
+}
+
+}  // namespace cooperage::cooper

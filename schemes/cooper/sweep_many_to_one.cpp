@@ -1,0 +1,239 @@
+#include "schemes/cooper/sweep_many_to_one.h"
+
+#include "schemes/cooper/loop_nodes.h"
+#include "schemes/cooper/many_to_one_builder.h"
+#include "schemes/cooper/sweep_barrel.h"
+
+#include <algorithm>
+
+namespace cooperage::cooper::detail {
+
+scheme::EntityMesh Builder::run(std::vector<BarrelReport>* reports) {
+  virtual_.resize(plan_.barrels.size());
+  for (size_t b = 0; b < plan_.barrels.size(); ++b) {
+    const BarrelPlan& p = plan_.barrels[b];
+    if (p.from_middle) continue;  // after the barrel it flows into
+    const BarrelReport r = p.lower_inflow.empty() ? barrel(b) : two_sided(b);
+    if (reports) reports->push_back(r);
+    // Barrels meshed from the middle: out through the upper end (their
+    // elements face the other way), then through the lower end.
+    for (int i : p.inflow) {
+      if (plan_.barrels[static_cast<size_t>(i)].from_middle) {
+        const BarrelReport o = sweep_out(static_cast<size_t>(i), true);
+        if (reports) reports->push_back(o);
+      }
+    }
+    for (int i : p.lower_inflow) {
+      if (plan_.barrels[static_cast<size_t>(i)].from_middle) {
+        const BarrelReport o = sweep_out(static_cast<size_t>(i), false);
+        if (reports) reports->push_back(o);
+      }
+    }
+  }
+  return std::move(out_);
+}
+
+int Builder::existing(int g) {
+  auto [it, added] = local_.emplace(g, 0);
+  if (added) it->second = out_.add(db_.node(g), g);
+  return it->second;
+}
+
+const mesh::SurfaceMeshData& Builder::meshed(int surface, const std::string& what) const {
+  if (!db_.surface_meshed(surface)) {
+    fail(vid_, what + " surface " + std::to_string(surface) + " is not meshed");
+  }
+  return db_.surface(surface);
+}
+
+const SideFace& Builder::side(int surface) const {
+  for (const SideFace& s : plan_.sides) {
+    if (s.surface == surface) return s;
+  }
+  fail(vid_, "side surface " + std::to_string(surface) + " is not in the plan");
+}
+
+std::set<int> Builder::lower_curves(const BarrelPlan& p) const {
+  std::set<int> c;
+  for (int s : p.sides) {
+    const auto& t = side(s).target_curves;
+    c.insert(t.begin(), t.end());
+  }
+  return c;
+}
+
+// cite: Blacker 1996, sec. 4 (rib progression from the upper cap's loops
+// that carry no inflowing subcap, until a rib reaches the lower cap).
+Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_nodes) const {
+  const BarrelPlan& p = plan_.barrels[b];
+  const std::string name = "barrel " + std::to_string(b + 1) + " from cap " + std::to_string(p.upper);
+  for (int s : p.sides) {
+    const mesh::SurfaceMeshData& m = meshed(s, "side");
+    if (!m.tris.empty()) fail(vid_, "side surface " + std::to_string(s) + " has triangles; ribs need quads");
+    bin.side_quads.insert(bin.side_quads.end(), m.quads.begin(), m.quads.end());
+  }
+  std::set<int> filled;
+  for (int i : p.inflow) {
+    const auto c = lower_curves(plan_.barrels[static_cast<size_t>(i)]);
+    filled.insert(c.begin(), c.end());
+  }
+  const auto upper_loops = loop_nodes(model_, db_, vid_, p.upper);
+  const auto& upper_geo = model_.surface(p.upper).loops;
+  for (size_t k = 0; k < upper_loops.size(); ++k) {
+    if (!filled.count(upper_geo[k].uses.front().curve)) bin.upper_loops.push_back(upper_loops[k]);
+  }
+  const int lower_surface = p.lower ? p.lower : p.into;
+  const auto lower_loops = loop_nodes(model_, db_, vid_, lower_surface);
+  const std::set<int> mine = lower_curves(p);
+  std::vector<int> expected;
+  for (size_t k = 0; k < lower_loops.size(); ++k) {
+    bin.stop_nodes.insert(bin.stop_nodes.end(), lower_loops[k].begin(), lower_loops[k].end());
+    lower_loop_nodes.insert(lower_loop_nodes.end(), lower_loops[k].begin(), lower_loops[k].end());
+    if (mine.count(model_.surface(lower_surface).loops[k].uses.front().curve)) {
+      expected.insert(expected.end(), lower_loops[k].begin(), lower_loops[k].end());
+    }
+  }
+  const Barrel barrel = form_barrels(bin);
+  if (!barrel.ok) fail(vid_, name + ": rib formation failed: " + barrel.why);
+  std::vector<int> ends;
+  for (const auto& rib : barrel.ribs) ends.push_back(rib.back());
+  std::sort(ends.begin(), ends.end());
+  std::sort(expected.begin(), expected.end());
+  if (!barrel.all_ribs_on_stop_nodes || ends != expected) {
+    fail(vid_, name + ": the ribs do not end on the loops of cap " + std::to_string(lower_surface) +
+                   " that the barrel's sides reach");
+  }
+  return barrel;
+}
+
+// cite: Blacker 1996, sec. 5.2 (subtraction onto a lower cap without
+// subcaps), 6.1-6.3 (stack projection, interior nodes, elements).
+BarrelReport Builder::barrel(size_t b) {
+  const BarrelPlan& p = plan_.barrels[b];
+  const std::string name = "barrel " + std::to_string(b + 1) + " from cap " + std::to_string(p.upper);
+  const int lower_surface = p.lower ? p.lower : p.into;
+  BarrelInput bin;
+  std::vector<int> lower_nodes;
+  const Barrel barrel = ribs(b, bin, lower_nodes);
+
+  // Upper cap = real cap mesh + virtual subcaps (cap-local numbering:
+  // rib starts first, in rib order).
+  SweepInput in;
+  in.layers = barrel.layers;
+  in.boundary = static_cast<int>(barrel.ribs.size());
+  std::vector<int> cap_entity;  // cap index -> EntityMesh-local node
+  std::unordered_map<int, int> cap_index;
+  auto index_of = [&](int e) {
+    auto [it, added] = cap_index.emplace(e, static_cast<int>(cap_entity.size()));
+    if (added) cap_entity.push_back(e);
+    return it->second;
+  };
+  for (const auto& loop : bin.upper_loops) {
+    in.loop_starts.push_back(cap_entity.size());
+    for (int g : loop) index_of(existing(g));
+  }
+  const mesh::SurfaceMeshData& cap = meshed(p.upper, "source cap");
+  const bool outward = model_.sense_in(p.upper, vid_) == geom::Sense::Forward;
+  for (const auto& q : cap.quads) {
+    mesh::Quad l;
+    for (size_t k = 0; k < 4; ++k) l[k] = index_of(existing(q[k]));
+    if (outward) std::swap(l[1], l[3]);
+    in.quads.push_back(l);
+  }
+  for (const auto& t : cap.tris) {
+    mesh::Tri l;
+    for (size_t k = 0; k < 3; ++k) l[k] = index_of(existing(t[k]));
+    if (outward) std::swap(l[1], l[2]);
+    in.tris.push_back(l);
+  }
+  for (int i : p.inflow) {
+    const VirtualCap& v = virtual_[static_cast<size_t>(i)];
+    for (const auto& q : v.quads) in.quads.push_back({index_of(q[0]), index_of(q[1]), index_of(q[2]), index_of(q[3])});
+    for (const auto& t : v.tris) in.tris.push_back({index_of(t[0]), index_of(t[1]), index_of(t[2])});
+  }
+  in.cap_nodes = static_cast<int>(cap_entity.size());
+  for (int e : cap_entity) in.source.push_back(out_.coords[static_cast<size_t>(e)]);
+  for (const auto& rib : barrel.ribs) {
+    for (int g : rib) in.ribs.push_back(db_.node(g));
+  }
+  if (p.lower) {
+    const auto geometry = model_.surface(p.lower).geometry;
+    in.project_target = [geometry](const Vec3& x) { return geometry->project(x).point; };
+  }
+  const SweepResult sweep = sweep_barrel(in);
+  if (!sweep.ok) fail(vid_, name + " to cap " + std::to_string(lower_surface) + ": " + sweep.why);
+
+  // Nodes: ribs exist; the upper cap is known; the lower cap's interior
+  // nodes belong to the target (or, virtual, to the volume).
+  const size_t n = static_cast<size_t>(in.cap_nodes);
+  const size_t B = static_cast<size_t>(in.boundary);
+  const size_t J = static_cast<size_t>(in.layers);
+  std::vector<int> node(sweep.points.size());
+  for (size_t j = 0; j <= J; ++j) {
+    for (size_t i = 0; i < n; ++i) {
+      const size_t q = j * n + i;
+      if (i < B) {
+        node[q] = existing(barrel.ribs[i][j]);
+      } else if (j == 0) {
+        node[q] = cap_entity[i];
+      } else if (j == J && p.lower) {
+        node[q] = out_.add_owned(sweep.points[q], {2, p.lower});
+      } else {
+        node[q] = out_.add(sweep.points[q]);
+      }
+    }
+  }
+  for (const auto& h : sweep.hexes) {
+    mesh::Hex e;
+    for (size_t k = 0; k < 8; ++k) e[k] = node[static_cast<size_t>(h[k])];
+    out_.hexes.push_back(e);
+  }
+  for (const auto& w : sweep.wedges) {
+    mesh::Wedge e;
+    for (size_t k = 0; k < 6; ++k) e[k] = node[static_cast<size_t>(w[k])];
+    out_.wedges.push_back(e);
+  }
+  const size_t top = J * n;
+  if (p.lower) {
+    // The target: stored with its natural normal (part I convention).
+    const bool target_outward = model_.sense_in(p.lower, vid_) == geom::Sense::Forward;
+    auto& tq = out_.surface_quads[p.lower];
+    for (const auto& q : in.quads) {
+      mesh::Quad f;
+      for (size_t k = 0; k < 4; ++k) f[k] = node[top + static_cast<size_t>(q[k])];
+      if (!target_outward) std::swap(f[1], f[3]);
+      tq.push_back(f);
+    }
+    for (const auto& t : in.tris) {
+      mesh::Tri f;
+      for (size_t k = 0; k < 3; ++k) f[k] = node[top + static_cast<size_t>(t[k])];
+      if (!target_outward) std::swap(f[1], f[2]);
+      out_.surface_tris[p.lower].push_back(f);
+    }
+  } else {
+    VirtualCap& v = virtual_[b];
+    for (const auto& q : in.quads) {
+      v.quads.push_back({node[top + static_cast<size_t>(q[0])], node[top + static_cast<size_t>(q[1])],
+                         node[top + static_cast<size_t>(q[2])], node[top + static_cast<size_t>(q[3])]});
+    }
+    for (const auto& t : in.tris) {
+      v.tris.push_back({node[top + static_cast<size_t>(t[0])], node[top + static_cast<size_t>(t[1])],
+                        node[top + static_cast<size_t>(t[2])]});
+    }
+  }
+  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
+}
+
+}  // namespace cooperage::cooper::detail
+
+namespace cooperage::cooper {
+
+scheme::EntityMesh sweep_many_to_one(const scheme::VolumeView& view, const ManyToOne& plan,
+                                     const scheme::PolygonMesher* polygon_mesher,
+                                     std::vector<BarrelReport>* reports) {
+  if (!view.mesh) detail::fail(view.volume_id, "cooper needs the meshed side and source surfaces");
+  if (!plan.ok) throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(view.volume_id), plan.why);
+  return detail::Builder(view, plan, polygon_mesher).run(reports);
+}
+
+}  // namespace cooperage::cooper

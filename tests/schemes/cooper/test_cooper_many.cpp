@@ -1,0 +1,515 @@
+// Cooper part II end to end (Blacker 1996, sec. 3-6): many-to-one volumes
+// built from Workbench primitives, meshed through the pipeline: all-hex,
+// conformal, exact volume, no inversion, rotation invariant, barrels
+// independent of the face order; Fig. 3a rejected and meshed after a webcut.
+#include "support/mesh_checks.h"
+
+#include "framework/core/error.h"
+#include "framework/geometry/occ/workbench.h"
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+#include "schemes/cooper/classify_barrels.h"
+#include "schemes/cooper/cooper_scheme.h"
+#include "schemes/map/surface_map.h"
+#include "schemes/map/volume_map.h"
+#include "schemes/pave/pave_2d.h"
+#include "schemes/pave/pave_scheme.h"
+#include "schemes/submap/submap_scheme.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <random>
+#include <set>
+
+namespace cooperage::cooper {
+namespace {
+
+using geom::Vec3;
+
+std::unique_ptr<scheme::Registry> builtin() {
+  auto r = std::make_unique<scheme::Registry>();
+  register_builtin_schemes(*r);
+  return r;
+}
+
+// pave's 2D core as cooper's polygon mesher, as the registration code is
+// meant to wire it (framework/scheme/polygon_mesher.h).
+class Pave2D final : public scheme::PolygonMesher {
+ public:
+  scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
+    const pave::QuadMesh2D m = pave::pave_2d(loops);
+    return {m.points, m.quads, m.boundary_count};
+  }
+};
+
+// map, submap, optionally pave, volume map and cooper, with or without the
+// polygon mesher (independent of what the built-in registry wires).
+std::unique_ptr<scheme::Registry> registry_with(bool pave_surfaces, bool polygon_mesher) {
+  auto r = std::make_unique<scheme::Registry>();
+  r->add(map::make_surface_map());
+  r->add(submap::make_submap());
+  if (pave_surfaces) r->add(pave::make_pave());
+  r->add(map::make_volume_map());
+  CooperOptions options;
+  if (polygon_mesher) options.polygon_mesher = std::make_shared<Pave2D>();
+  r->add(make_cooper(*r, options));
+  return r;
+}
+
+std::unique_ptr<scheme::Registry> with_polygon_mesher(bool pave_surfaces = false) {
+  return registry_with(pave_surfaces, true);
+}
+
+io::MeshSettings sized(double size) {
+  io::MeshSettings s;
+  s.size = size;
+  return s;
+}
+
+struct Summary {
+  double volume = 0;
+  double min_sj = 1;
+  size_t hexes = 0;
+};
+
+// Conformity over several volumes: every hex face used once or twice; faces
+// used once are exactly the quads of surfaces bounding one volume; the quads
+// of a surface between two volumes are used twice; no duplicate nodes.
+Summary check_mesh(const geom::Model& model, const mesh::MeshDB& db) {
+  Summary s;
+  for (const auto& [id, vol] : db.volumes()) {
+    EXPECT_TRUE(vol.wedges.empty());
+    for (const auto& h : vol.hexes) {
+      const auto p = testing::hex_points(db, h);
+      s.volume += testing::hex_volume(p);
+      s.min_sj = std::min(s.min_sj, testing::hex_scaled_jacobian(p));
+      ++s.hexes;
+    }
+  }
+  const auto faces = testing::hex_face_counts(db);
+  size_t once = 0;
+  for (const auto& [key, n] : faces) {
+    EXPECT_LE(n, 2);
+    if (n == 1) ++once;
+  }
+  size_t boundary_quads = 0;
+  for (const auto& [sid, m] : db.surfaces()) {
+    const int expected = static_cast<int>(model.surface(sid).volumes.size()) == 2 ? 2 : 1;
+    for (const auto& q : m.quads) {
+      auto it = faces.find(testing::face_key(q));
+      if (it == faces.end()) {
+        ADD_FAILURE() << "a quad of surface " << sid << " is no hex face";
+        continue;
+      }
+      EXPECT_EQ(it->second, expected) << "surface " << sid;
+      if (expected == 1) ++boundary_quads;
+    }
+  }
+  EXPECT_EQ(once, boundary_quads);
+  EXPECT_EQ(testing::duplicate_node_pairs(db, 1e-9), 0);
+  EXPECT_GT(s.min_sj, 0.0);
+  return s;
+}
+
+void expect_many_to_one(const geom::Model& model, const pipeline::MeshResult& r, double exact,
+                        const char* name) {
+  for (const auto& v : model.volumes()) EXPECT_EQ(r.plan.volumes.at(v.id).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, exact, exact * 1e-6) << name;
+  EXPECT_GE(s.min_sj, 0.3) << name;
+  ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian", std::to_string(s.min_sj));
+  ::testing::Test::RecordProperty(std::string(name) + "_hexes", std::to_string(s.hexes));
+  std::printf("[cooper II] %s: %zu hexes, min scaled Jacobian %.4f\n", name, s.hexes, s.min_sj);
+}
+
+// 4 x 4 x 2 brick with a 1 x 1 x 1 square boss on top (volume 33).
+void square_boss(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 2});
+  wb.brick("boss", {1.5, 1.5, 2}, {1, 1, 1});
+  wb.fuse("part", {"b", "boss"});
+}
+
+// 8 x 4 x 2 block, a 1.5 x 1.5 x 2 boss, a 1 x 1 x 0.5 boss and a 1 x 1
+// square through hole (volume 64 + 4.5 + 0.5 - 2 = 67).
+void two_bosses_and_hole(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {8, 4, 2});
+  wb.brick("tall", {1, 1, 2}, {1.5, 1.5, 2});
+  wb.brick("short", {4, 1.5, 2}, {1, 1, 0.5});
+  wb.brick("hole", {6, 1.5, -1}, {1, 1, 4});
+  wb.fuse("f", {"b", "tall", "short"});
+  wb.cut("part", {"f", "hole"});
+}
+
+// Three stacked blocks: 4 x 4 x 1, 2 x 2 x 1, 1 x 1 x 1 (volume 21).
+void stacked_bosses(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 1});
+  wb.brick("m", {1, 1, 1}, {2, 2, 1});
+  wb.brick("t", {1.5, 1.5, 2}, {1, 1, 1});
+  wb.fuse("part", {"b", "m", "t"});
+}
+
+TEST(CooperMany, SquareBossOnBrickTwoSourcesOneTarget) {
+  occ::Workbench wb;
+  square_boss(wb);
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const ManyToOne m = classify_barrels(model, 1, *registry);
+  ASSERT_TRUE(m.ok) << m.why;
+  EXPECT_EQ(m.barrels.size(), 2u);
+  EXPECT_EQ(m.cap_schemes.size(), 2u);  // boss top and shoulder
+  EXPECT_NEAR(std::abs(m.axis.z()), 1.0, 1e-9);
+  EXPECT_EQ(m.barrels.back().lower, m.target);
+  EXPECT_EQ(m.barrels.back().inflow, std::vector<int>{0});
+  EXPECT_EQ(m.barrels.front().into, m.barrels.back().upper);
+  const scheme::Applicability a =
+      registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  ASSERT_TRUE(a.ok) << a.why;
+  EXPECT_LT(a.score, 0.5);  // below every one-to-one score
+  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 33.0, "square_boss");
+}
+
+TEST(CooperMany, TwoBossesOfDifferentHeightsAndAThroughHole) {
+  occ::Workbench wb;
+  two_bosses_and_hole(wb);
+  const geom::Model model = wb.build_model();
+  ASSERT_NEAR(model.volume(1).volume, 67.0, 1e-6);
+  const auto registry = builtin();
+  const ManyToOne m = classify_barrels(model, 1, *registry);
+  ASSERT_TRUE(m.ok) << m.why;
+  EXPECT_EQ(m.barrels.size(), 3u);
+  EXPECT_EQ(m.barrels.back().inflow.size(), 2u);
+  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 67.0, "two_bosses_and_hole");
+}
+
+TEST(CooperMany, StackedBossesChainThreeBarrels) {
+  occ::Workbench wb;
+  stacked_bosses(wb);
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const ManyToOne m = classify_barrels(model, 1, *registry);
+  ASSERT_TRUE(m.ok) << m.why;
+  ASSERT_EQ(m.barrels.size(), 3u);
+  EXPECT_EQ(m.barrels[1].inflow, std::vector<int>{0});
+  EXPECT_EQ(m.barrels[2].inflow, std::vector<int>{1});
+  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 21.0, "stacked_bosses");
+}
+
+TEST(CooperMany, RoundBossOnCylinderWithPave) {
+  occ::Workbench wb;
+  wb.cylinder("c", {0, 0, 0}, {0, 0, 1}, 2.0, 1.5);
+  wb.cylinder("boss", {0, 0, 1.5}, {0, 0, 1}, 0.8, 1.0);
+  wb.fuse("part", {"c", "boss"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  if (!registry->surface_scheme("pave")) {
+    const ManyToOne m = classify_barrels(model, 1, *registry);
+    EXPECT_FALSE(m.ok);
+    GTEST_SKIP() << "pave is not registered yet: " << m.why;
+  }
+  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
+  EXPECT_GT(s.min_sj, 0.2);
+  std::printf("[cooper II] round_boss: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
+}
+
+TEST(CooperMany, RigidTransformGivesTheTransformedMesh) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
+  const double angle = 180 * u(rng);
+  const Vec3 shift(5 * u(rng), 5 * u(rng), 5 * u(rng));
+  auto build = [&](bool moved) {
+    occ::Workbench wb;
+    square_boss(wb);
+    if (moved) {
+      wb.rotate("part", {0, 0, 0}, axis, angle);
+      wb.translate("part", shift);
+    }
+    return wb.build_model();
+  };
+  const geom::Model m0 = build(false), m1 = build(true);
+  const auto registry = builtin();
+  const auto r0 = pipeline::mesh_model(m0, sized(0.25), *registry, selector::mesh_options());
+  const auto r1 = pipeline::mesh_model(m1, sized(0.25), *registry, selector::mesh_options());
+  ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
+  ASSERT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle * M_PI / 180, axis).toRotationMatrix();
+  double worst = 0;
+  for (size_t n = 0; n < r0.mesh.node_count(); ++n) {
+    const Vec3 expected = R * r0.mesh.node(static_cast<int>(n)) + shift;
+    worst = std::max(worst, (expected - r1.mesh.node(static_cast<int>(n))).norm());
+  }
+  EXPECT_LT(worst, 1e-8);
+}
+
+TEST(CooperMany, BarrelsDoNotDependOnTheFaceOrder) {
+  occ::Workbench wb;
+  two_bosses_and_hole(wb);
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const ManyToOne m0 = classify_barrels(model, 1, *registry);
+  ASSERT_TRUE(m0.ok) << m0.why;
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 4; ++trial) {
+    geom::Model permuted = model;
+    auto& shell = permuted.mutable_volume(1).shells.front();
+    std::shuffle(shell.begin(), shell.end(), rng);
+    const ManyToOne m1 = classify_barrels(permuted, 1, *registry);
+    ASSERT_TRUE(m1.ok) << m1.why;
+    EXPECT_EQ(m1.target, m0.target);
+    ASSERT_EQ(m1.barrels.size(), m0.barrels.size());
+    for (size_t b = 0; b < m0.barrels.size(); ++b) {
+      EXPECT_EQ(m1.barrels[b].upper, m0.barrels[b].upper);
+      EXPECT_EQ(m1.barrels[b].sides, m0.barrels[b].sides);
+      EXPECT_EQ(m1.barrels[b].inflow, m0.barrels[b].inflow);
+    }
+    const auto r0 = pipeline::mesh_model(model, sized(0.5), *registry, selector::mesh_options());
+    const auto r1 = pipeline::mesh_model(permuted, sized(0.5), *registry, selector::mesh_options());
+    EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
+  }
+}
+
+// Paper Fig. 1/20 style: appendages on top and bottom at different heights
+// (6 x 4 x 2 block, two top bosses, one bottom appendage; volume 52.875).
+void appendages_top_and_bottom(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {6, 4, 2});
+  wb.brick("t1", {1, 1, 2}, {1.5, 1.5, 1});
+  wb.brick("t2", {4, 0.25, 2}, {1, 0.75, 0.5});
+  wb.brick("d1", {3.5, 1.5, -1}, {1.5, 1.5, 1});
+  wb.fuse("part", {"b", "t1", "t2", "d1"});
+}
+
+TEST(CooperMany, AppendagesOnTopAndBottomNeedThePolygonMesher) {
+  occ::Workbench wb;
+  appendages_top_and_bottom(wb);
+  const geom::Model model = wb.build_model();
+  ASSERT_NEAR(model.volume(1).volume, 52.875, 1e-6);
+  // Without a polygon mesher: rejected with the reason.
+  const auto plain = registry_with(false, false);
+  const ManyToOne no = classify_barrels(model, 1, *plain);
+  EXPECT_FALSE(no.ok);
+  EXPECT_NE(no.why.find("polygon mesher"), std::string::npos) << no.why;
+  const auto registry = with_polygon_mesher();
+  const ManyToOne m = classify_barrels(model, 1, *registry, {}, true);
+  ASSERT_TRUE(m.ok) << m.why;
+  EXPECT_EQ(m.barrels.size(), 4u);
+  EXPECT_EQ(m.volume_caps.size(), 2u);  // both shoulders are imprinted
+  EXPECT_EQ(m.barrels.back().inflow.size() + m.barrels.back().lower_inflow.size(), 3u);
+  const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 52.875, "appendages_top_and_bottom");
+  // Rotation invariance, with the imprinted caps meshed in 2D.
+  const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
+  occ::Workbench moved;
+  appendages_top_and_bottom(moved);
+  moved.rotate("part", {0, 0, 0}, axis, 37.0);
+  moved.translate("part", {1.5, -2, 0.7});
+  const geom::Model m1 = moved.build_model();
+  const auto r1 = pipeline::mesh_model(m1, sized(0.25), *registry, selector::mesh_options());
+  ASSERT_EQ(r1.mesh.node_count(), r.mesh.node_count());
+  EXPECT_EQ(r1.mesh.volume(1).hexes, r.mesh.volume(1).hexes);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(37.0 * M_PI / 180, axis).toRotationMatrix();
+  double worst = 0;
+  for (size_t n = 0; n < r.mesh.node_count(); ++n) {
+    const Vec3 expected = R * r.mesh.node(static_cast<int>(n)) + Vec3(1.5, -2, 0.7);
+    worst = std::max(worst, (expected - r1.mesh.node(static_cast<int>(n))).norm());
+  }
+  EXPECT_LT(worst, 1e-8);
+}
+
+// Subcap intersection (sec. 5.3) end to end: the upper step (a boss on top)
+// straddles the boundary between the two lower regions (an appendage below
+// and the rest of the bottom). Both footprints are imprinted in the middle
+// barrel; the stacks are meshed there and swept out to the boss top and the
+// appendage bottom (volume 48 + 5 + 5 = 58).
+void straddling_step(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {6, 4, 2});
+  wb.brick("step", {1, 1, 2}, {2.5, 2, 1});
+  wb.brick("foot", {2.5, 1.5, -1}, {2.5, 2, 1});
+  wb.fuse("part", {"b", "step", "foot"});
+}
+
+TEST(CooperMany, StepStraddlingTwoLowerRegionsIntersects) {
+  occ::Workbench wb;
+  straddling_step(wb);
+  const geom::Model model = wb.build_model();
+  ASSERT_NEAR(model.volume(1).volume, 58.0, 1e-6);
+  const auto registry = with_polygon_mesher();
+  const ManyToOne m = classify_barrels(model, 1, *registry, {}, true);
+  ASSERT_TRUE(m.ok) << m.why;
+  int from_middle = 0;
+  for (const auto& b : m.barrels) from_middle += b.from_middle ? 1 : 0;
+  EXPECT_EQ(from_middle, 2);
+  EXPECT_EQ(m.volume_caps.size(), 4u);  // both shoulders, the step top, the foot bottom
+  const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 58.0, "straddling_step");
+}
+
+// A boss whose footprint contains the appendage's below: rejected, a priori.
+TEST(CooperMany, NestedFootprintsOnBothEndsAreRejectedWithAReason) {
+  occ::Workbench wb;
+  wb.brick("b", {0, 0, 0}, {6, 4, 2});
+  wb.brick("step", {1, 0.5, 2}, {4, 3, 1});
+  wb.brick("foot", {2, 1, -1}, {1, 1, 1});
+  wb.fuse("part", {"b", "step", "foot"});
+  const geom::Model model = wb.build_model();
+  const auto registry = with_polygon_mesher();
+  const scheme::Applicability a =
+      registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.why.find("contain one another"), std::string::npos) << a.why;
+}
+
+// The same with the footprints' crossings between nodes (seams with parity).
+TEST(CooperMany, StepStraddlingOffLattice) {
+  occ::Workbench wb;
+  wb.brick("b", {0, 0, 0}, {6, 4, 2});
+  wb.brick("step", {1, 1, 2}, {2.4, 2.1, 1});
+  wb.brick("foot", {2.6, 1.45, -1}, {2.4, 2.05, 1});
+  wb.fuse("part", {"b", "step", "foot"});
+  const geom::Model model = wb.build_model();
+  const auto registry = with_polygon_mesher();
+  const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, model.volume(1).volume, "straddling_step_off_lattice");
+}
+
+// The round version: a cylinder with a round boss on top and a round foot
+// below, off axis so that their footprints are disjoint.
+TEST(CooperMany, RoundAppendagesOnTopAndBottom) {
+  occ::Workbench wb;
+  wb.cylinder("c", {0, 0, 0}, {0, 0, 1}, 3.0, 1.5);
+  wb.cylinder("boss", {-1.2, 0, 1.5}, {0, 0, 1}, 0.8, 1.0);
+  wb.cylinder("foot", {1.3, 0.2, -0.75}, {0, 0, 1}, 0.7, 0.75);
+  wb.fuse("part", {"c", "boss", "foot"});
+  const geom::Model model = wb.build_model();
+  const auto registry = with_polygon_mesher(true);
+  const ManyToOne m = classify_barrels(model, 1, *registry, {}, true);
+  ASSERT_TRUE(m.ok) << m.why;
+  const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper II] round_appendages: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
+}
+
+// Fig. 3a-like: a block whose front half has a boss on top (sweep along z)
+// and whose back half has a boss on the +x face (sweep along x).
+void two_directions(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 2});
+  wb.brick("up", {1, 0.5, 2}, {1, 1, 1});
+  wb.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
+  wb.fuse("part", {"b", "up", "out"});
+}
+
+TEST(CooperMany, Fig3aIsRejectedNamingTheFacesAndMeshesAfterAWebcut) {
+  occ::Workbench wb;
+  two_directions(wb);
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const scheme::Applicability a =
+      registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.why.find("not cooperable"), std::string::npos) << a.why;
+  EXPECT_NE(a.why.find("webcut"), std::string::npos) << a.why;
+  // The two faces with hole loops are named.
+  std::vector<int> holed;
+  for (const auto& s : model.surfaces()) {
+    if (s.loops.size() == 2) holed.push_back(s.id);
+  }
+  ASSERT_EQ(holed.size(), 2u);
+  for (int id : holed) {
+    EXPECT_NE(a.why.find(std::to_string(id) + " (normal"), std::string::npos) << a.why;
+  }
+  try {
+    pipeline::mesh_model(model, sized(0.5), *registry, selector::mesh_options());
+    FAIL() << "meshed a Fig. 3a volume";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::NotApplicable) << e.what();
+  }
+  // Cut between the halves: each piece sweeps in its own direction; the cut
+  // face is a submapped side of both.
+  occ::Workbench cut;
+  two_directions(cut);
+  cut.webcut("part", {0, 2, 0}, {0, 1, 0});
+  const geom::Model pieces = cut.build_model();
+  ASSERT_EQ(pieces.volumes().size(), 2u);
+  const auto r = pipeline::mesh_model(pieces, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(pieces, r, 32.0 + 1.0 + 1.0, "fig3a_after_webcut");
+}
+
+// Table-1-style timing (paper sec. 7), off by default:
+//   test_cooper --gtest_also_run_disabled_tests --gtest_filter='*Timing*'
+TEST(CooperMany, DISABLED_TimingTable) {
+  struct Model {
+    const char* name;
+    void (*build)(occ::Workbench&);
+  };
+  const Model models[] = {{"square_boss", square_boss},
+                          {"two_bosses_and_hole", two_bosses_and_hole},
+                          {"stacked_bosses", stacked_bosses},
+                          {"appendages_top_and_bottom", appendages_top_and_bottom},
+                          {"straddling_step", straddling_step}};
+  const auto registry = with_polygon_mesher();
+  for (const Model& m : models) {
+    occ::Workbench wb;
+    m.build(wb);
+    const geom::Model model = wb.build_model();
+    for (double size : {0.25, 0.1, 0.05}) {
+      const auto r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options(3, 1));
+      double volume_seconds = 0, total = 0;
+      for (const auto& t : r.timings) {
+        total += t.seconds;
+        if (t.dim == 3) volume_seconds += t.seconds;
+      }
+      std::printf("[timing] %-28s size %.2f: %8zu hexes, cooper %.3f s (%.0f hexes/s), surfaces+cooper %.3f s\n",
+                  m.name, size, r.mesh.hex_count(), volume_seconds,
+                  static_cast<double>(r.mesh.hex_count()) / std::max(volume_seconds, 1e-9), total);
+    }
+  }
+}
+
+// The journals shipped for the examples mesh as the tests above do.
+TEST(CooperMany, JournalsMeshThroughThePipeline) {
+  const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
+  const std::vector<std::pair<std::string, double>> journals = {
+      {"cooper_square_boss.xml", 33.0},        {"cooper_two_bosses_hole.xml", 67.0},
+      {"cooper_stacked_bosses.xml", 21.0},     {"cooper_appendages.xml", 52.875},
+      {"cooper_fig3a_webcut.xml", 34.0},      {"cooper_straddling_step.xml", 58.0}};
+  const auto registry = with_polygon_mesher();
+  for (const auto& [file, exact] : journals) {
+    SCOPED_TRACE(file);
+    const io::Job job = io::read_journal(dir + file);
+    ASSERT_TRUE(job.mesh.has_value());
+    const geom::Model model = pipeline::build_geometry(job);
+    const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
+    expect_many_to_one(model, r, exact, file.c_str());
+  }
+}
+
+// The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
+// pave for the disk and annulus caps) meshes with the built-in schemes.
+TEST(CooperMany, ExampleCylinderBossMeshes) {
+  const auto registry = builtin();
+  if (!registry->surface_scheme("pave")) GTEST_SKIP() << "pave is not registered";
+  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/cylinder_boss.xml");
+  const geom::Model model = pipeline::build_geometry(job);
+  const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper II] examples/cylinder_boss.xml: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
+              s.min_sj);
+}
+
+}  // namespace
+}  // namespace cooperage::cooper

@@ -1,0 +1,299 @@
+// Subcap imprinting (Blacker 1996, sec. 5) on hand-made polygons: matching,
+// subtraction (a subcap inside, a subcap on the boundary), intersection
+// (the stepped L), seaming of small cracks (never on the exterior) and a
+// self-intersecting subcap (Fig. 18 style). Every result is checked as a
+// partition: each subcap matched once, matched loops linked node for node
+// by ribs, equal areas, even loops, the same total area on both ends.
+#include "schemes/cooper/imprint_subcaps.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace cooperage::cooper {
+namespace {
+
+// Nodes on a lattice of spacing h per end; loops walk polygon corners.
+struct Hand {
+  BarrelEnds ends;
+  std::map<std::tuple<int, long, long>, int> ids;
+  int next = 1;
+
+  int node(int end, const Vec2& p) {
+    const auto key = std::make_tuple(end, std::lround(p.x() * 1000), std::lround(p.y() * 1000));
+    auto it = ids.find(key);
+    if (it != ids.end()) return it->second;
+    ids[key] = next;
+    ends.xy[next] = p;
+    return next++;
+  }
+  std::vector<int> loop(int end, const std::vector<Vec2>& corners, double h = 1.0) {
+    std::vector<int> out;
+    for (size_t c = 0; c < corners.size(); ++c) {
+      const Vec2 a = corners[c], b = corners[(c + 1) % corners.size()];
+      const int steps = static_cast<int>(std::lround((b - a).norm() / h));
+      for (int k = 0; k < steps; ++k) out.push_back(node(end, a + (b - a) * (double(k) / steps)));
+    }
+    return out;
+  }
+  void subcap(int end, int id, std::vector<std::vector<Vec2>> loops, double h = 1.0) {
+    Subcap s;
+    s.id = id;
+    for (const auto& l : loops) s.loops.push_back(loop(end, l, h));
+    (end == 0 ? ends.upper : ends.lower).push_back(s);
+  }
+  // Exterior ribs: the nodes of the exterior polygon on both ends.
+  void exterior(const std::vector<Vec2>& corners, double h = 1.0) {
+    const auto up = loop(0, corners, h);
+    const auto lo = loop(1, corners, h);
+    for (size_t k = 0; k < up.size(); ++k) ends.ribs.push_back({up[k], lo[k]});
+  }
+};
+
+std::vector<Vec2> rect(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+std::vector<Vec2> hole(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}};
+}
+
+double cap_area(const Subcap& s, const std::map<int, Vec2>& xy) {
+  double a = 0;
+  for (const auto& l : s.loops) a += signed_area(l, xy);
+  return a;
+}
+
+// The result is a matched pair of partitions of the same region.
+void expect_partition(const ImprintResult& r, double area, double tol = 1e-9) {
+  ASSERT_TRUE(r.ok) << r.why;
+  const auto& xy = r.ends.xy;
+  std::map<int, int> up_of;
+  for (const auto& [u, l] : r.ends.ribs) up_of[l] = u;
+  std::map<int, const Subcap*> by_id;
+  double sum[2] = {0, 0};
+  for (int e = 0; e < 2; ++e) {
+    for (const Subcap& s : e == 0 ? r.ends.upper : r.ends.lower) {
+      by_id[s.id] = &s;
+      const double a = cap_area(s, xy);
+      EXPECT_GT(a, 0) << "subcap " << s.id;
+      sum[e] += a;
+      for (const auto& l : s.loops) EXPECT_EQ(l.size() % 2, 0u) << "odd loop in subcap " << s.id;
+    }
+  }
+  EXPECT_NEAR(sum[0], area, 1e-9);
+  EXPECT_NEAR(sum[1], area, 1e-9);
+  EXPECT_EQ(r.matches.size(), r.ends.upper.size());
+  EXPECT_EQ(r.matches.size(), r.ends.lower.size());
+  std::set<int> used;
+  for (const auto& [u, l] : r.matches) {
+    EXPECT_TRUE(used.insert(l).second) << "lower subcap " << l << " matched twice";
+    const Subcap& a = *by_id.at(u);
+    const Subcap& b = *by_id.at(l);
+    EXPECT_NEAR(cap_area(a, xy), cap_area(b, xy), tol) << u << " / " << l;
+    std::set<int> image, nodes;
+    for (const auto& loop : b.loops) {
+      for (int v : loop) {
+        ASSERT_TRUE(up_of.count(v)) << "lower node " << v << " has no rib";
+        image.insert(up_of.at(v));
+      }
+    }
+    for (const auto& loop : a.loops) nodes.insert(loop.begin(), loop.end());
+    EXPECT_EQ(image, nodes) << u << " / " << l;
+  }
+}
+
+std::string steps_text(const ImprintResult& r) {
+  std::string t;
+  for (ImprintStep s : r.steps) t += std::string(t.empty() ? "" : " ") + to_string(s);
+  return t;
+}
+
+size_t count(const ImprintResult& r, ImprintStep s) {
+  ::testing::Test::RecordProperty("steps", steps_text(r));
+  std::printf("[imprint] %s: %s\n", ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+              steps_text(r).c_str());
+  return static_cast<size_t>(std::count(r.steps.begin(), r.steps.end(), s));
+}
+
+TEST(ImprintSubcaps, MatchingCapsNeedNothing) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(0, 0, 4, 4)});
+  h.subcap(1, 2, {rect(0, 0, 4, 4)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16);
+  EXPECT_EQ(r.matches, (std::vector<std::pair<int, int>>{{1, 2}}));
+  EXPECT_TRUE(r.interior_ribs.empty());
+  EXPECT_EQ(count(r, ImprintStep::Match), 1u);
+}
+
+// A boss base (virtual subcap) inside the shoulder, over a plain lower cap.
+TEST(ImprintSubcaps, SubtractionOfASubcapInsideTheOpposingCap) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(0, 0, 4, 4), hole(1, 1, 3, 3)});  // shoulder
+  h.subcap(0, 2, {rect(1, 1, 3, 3)});                    // virtual boss base
+  h.subcap(1, 3, {rect(0, 0, 4, 4)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16);
+  EXPECT_EQ(r.matches.size(), 2u);
+  EXPECT_EQ(r.interior_ribs.size(), 8u);  // the 8 nodes of the boss base loop
+  EXPECT_GE(count(r, ImprintStep::Subtract), 1u);
+  EXPECT_EQ(r.ends.lower.size(), 2u);
+}
+
+// Gamma_ab continuous on part of a's loop: the left half of the upper cap.
+TEST(ImprintSubcaps, SubtractionAlongTheBoundarySplitsTheOpposingCap) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(0, 0, 2, 4)});
+  h.subcap(0, 2, {rect(2, 0, 4, 4)});
+  h.subcap(1, 3, {rect(0, 0, 4, 4)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16);
+  EXPECT_EQ(r.interior_ribs.size(), 3u);  // (2,1), (2,2), (2,3)
+  EXPECT_EQ(count(r, ImprintStep::Subtract), 1u);
+}
+
+// Stepped L (sec. 5.3): the upper step a straddles the boundary x = 2
+// between the lower regions b and c.
+TEST(ImprintSubcaps, IntersectionOfAStepStraddlingTwoLowerRegions) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 2));
+  h.subcap(0, 1, {rect(1, 0, 3, 1)});
+  h.subcap(0, 2, {{{0, 0}, {1, 0}, {1, 1}, {3, 1}, {3, 0}, {4, 0}, {4, 2}, {0, 2}}});
+  h.subcap(1, 3, {rect(0, 0, 2, 2)});
+  h.subcap(1, 4, {rect(2, 0, 4, 2)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 8);
+  EXPECT_GE(count(r, ImprintStep::Intersect), 1u);
+  EXPECT_EQ(r.matches.size(), 4u);  // a/b, a/c, d/b, d/c
+}
+
+// The same with the crossing in the middle of an edge of a: the closest
+// intersection node p meeting even parity (sec. 5.3) combines the gap node
+// (2.2, 1) with the b/c boundary node (2, 1).
+TEST(ImprintSubcaps, IntersectionPicksTheClosestEvenParityNode) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 2));
+  Subcap a{1, {{h.node(0, {1, 0}), h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {3, 1}),
+                h.node(0, {2.2, 1}), h.node(0, {1, 1})}}};
+  Subcap d{2, {{h.node(0, {0, 0}), h.node(0, {1, 0}), h.node(0, {1, 1}), h.node(0, {2.2, 1}),
+                h.node(0, {3, 1}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}),
+                h.node(0, {4, 2}), h.node(0, {3, 2}), h.node(0, {2, 2}), h.node(0, {1, 2}),
+                h.node(0, {0, 2}), h.node(0, {0, 1})}}};
+  h.ends.upper = {a, d};
+  h.subcap(1, 3, {rect(0, 0, 2, 2)});
+  h.subcap(1, 4, {rect(2, 0, 4, 2)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 8, 0.25);
+  EXPECT_GE(count(r, ImprintStep::Intersect), 1u);
+  ASSERT_FALSE(r.seams.empty());
+  EXPECT_EQ(r.seams.front().first, h.node(0, {2.2, 1}));
+  EXPECT_EQ(r.seams.front().second, h.node(1, {2, 1}));
+}
+
+// Subcaps without ribs that overlap (sec. 5.3 between free subcaps: a boss
+// base on the upper end straddling the boundary of an appendage's base on the
+// lower end): the crossings are combined onto nodes, then subtraction splits
+// both ends into the four overlap pieces.
+TEST(ImprintSubcaps, OverlappingFreeSubcapsIntersect) {
+  Hand h;
+  h.exterior(rect(0, 0, 8, 4), 0.5);
+  h.subcap(0, 1, {rect(0, 0, 8, 4), hole(1, 1, 5, 3)}, 0.5);
+  h.subcap(0, 2, {rect(1, 1, 5, 3)}, 0.5);
+  h.subcap(1, 3, {rect(0, 0, 8, 4), hole(3, 2, 6, 3.5)}, 0.5);
+  h.subcap(1, 4, {rect(3, 2, 6, 3.5)}, 0.5);
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 32);
+  EXPECT_EQ(r.matches.size(), 4u);  // T and B, T only, B only, neither
+  EXPECT_GE(count(r, ImprintStep::Intersect), 1u);
+}
+
+// Seaming (sec. 5.4): the upper split line wobbles around the lower one;
+// the projected nodes are combined with the lower ones (no sliver caps).
+TEST(ImprintSubcaps, SeamingClosesSmallCracksButNeverOnTheExterior) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(1, 3, {rect(0, 0, 2, 4)});
+  h.subcap(1, 4, {rect(2, 0, 4, 4)});
+  // Upper split line through (2.06, 1), (1.95, 2), (2.04, 3).
+  std::vector<int> line{h.node(0, {2, 0}), h.node(0, {2.06, 1}), h.node(0, {1.95, 2}),
+                        h.node(0, {2.04, 3}), h.node(0, {2, 4})};
+  Subcap left{1, {{}}}, right{2, {{}}};
+  // left: (0,0) -> (2,0) -> up the line -> (2,4) -> (0,4) -> down.
+  left.loops[0] = {h.node(0, {0, 0}), h.node(0, {1, 0})};
+  left.loops[0].insert(left.loops[0].end(), line.begin(), line.end());
+  for (Vec2 p : {Vec2(1, 4), Vec2(0, 4), Vec2(0, 3), Vec2(0, 2), Vec2(0, 1)}) left.loops[0].push_back(h.node(0, p));
+  right.loops[0] = {h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}), h.node(0, {4, 2}),
+                    h.node(0, {4, 3}), h.node(0, {4, 4}), h.node(0, {3, 4})};
+  right.loops[0].insert(right.loops[0].end(), line.rbegin(), line.rend() - 1);
+  h.ends.upper = {left, right};
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16, 0.2);
+  EXPECT_EQ(r.seams.size(), 3u);
+  EXPECT_EQ(count(r, ImprintStep::Seam), 3u);
+  EXPECT_EQ(r.ends.lower.size(), 2u);  // no crack caps
+  EXPECT_EQ(r.matches.size(), 2u);
+  // Only the three interior nodes were combined; exterior nodes untouched.
+  for (const auto& [from, to] : r.seams) {
+    EXPECT_NE(h.ends.xy.at(to).y(), 0.0);
+    EXPECT_NE(h.ends.xy.at(to).y(), 4.0);
+  }
+  // With seaming off the crack becomes extra subcaps.
+  ImprintOptions off;
+  off.seam_fraction = 0;
+  const ImprintResult cracks = imprint_subcaps(h.ends, off);
+  std::printf("[imprint] seaming off: ok %d, %zu lower subcaps, steps %s %s\n", cracks.ok ? 1 : 0,
+              cracks.ends.lower.size(), steps_text(cracks).c_str(), cracks.why.c_str());
+  if (cracks.ok) {
+    EXPECT_GT(cracks.ends.lower.size(), 2u);
+  }
+}
+
+// Fig. 18 style: the upper subcap a, ribbed only to b along the bottom,
+// pokes past b's top boundary into c: the subtraction leaves b' touching
+// itself twice (n = 2), resolved into 3 loops; the overlap is subtracted
+// from c and from b^, and everything is recategorised and matched.
+TEST(ImprintSubcaps, SelfIntersectingSubcapSplitsIntoNPlusOneLoops) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(1, 0, 3, 3)});
+  h.subcap(0, 2, {{{0, 0}, {1, 0}, {1, 3}, {3, 3}, {3, 0}, {4, 0}, {4, 4}, {0, 4}}});
+  h.subcap(1, 3, {rect(0, 0, 4, 2)});
+  h.subcap(1, 4, {rect(0, 2, 4, 4)});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16);
+  EXPECT_GE(count(r, ImprintStep::SelfIntersect), 1u);
+}
+
+TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
+  // A loop crossing itself twice (a rectangle whose top run dips through
+  // its bottom run), as lattice nodes.
+  std::map<int, Vec2> xy;
+  std::vector<int> loop;
+  int id = 1;
+  for (Vec2 p : {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(3, 0), Vec2(4, 0), Vec2(4, 1), Vec2(3, 1),
+                 Vec2(3, -1), Vec2(2, -1), Vec2(1, -1), Vec2(1, 1), Vec2(0, 1)}) {
+    xy[id] = p;
+    loop.push_back(id++);
+  }
+  std::vector<std::pair<int, int>> combined;
+  const auto parts = split_self_intersections(loop, xy, true, &combined);
+  EXPECT_EQ(combined.size(), 2u);
+  ASSERT_EQ(parts.size(), 3u);
+  int negative = 0;
+  for (const auto& p : parts) {
+    EXPECT_EQ(p.size() % 2, 0u);
+    if (signed_area(p, xy) < 0) ++negative;
+  }
+  EXPECT_EQ(negative, 1);
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
