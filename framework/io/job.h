@@ -45,6 +45,11 @@ struct RevolveOp {
   std::string name; Polygon profile; Vec3 origin = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
   double angle = 360;
 };
+/// Solid through planar sections in order (a loft). Each section is a planar
+/// polygon (>= 3 points) or, first or last only, a single point (an apex).
+/// ruled: straight side faces, point j joined to point j of the next section
+/// (every polygon has the same number of points); otherwise smooth faces.
+struct LoftOp { std::string name; std::vector<Polygon> sections; bool ruled = true; };
 enum class BooleanKind { Fuse, Cut, Common };
 /// `name` = inputs[0] op inputs[1] op ...; the inputs are consumed.
 struct BooleanOp { std::string name; BooleanKind kind = BooleanKind::Fuse; std::vector<std::string> inputs; };
@@ -56,7 +61,8 @@ struct ScaleOp { std::string shape; Vec3 origin = Vec3::Zero(); double factor = 
 struct WebcutOp { std::string shape; Vec3 origin = Vec3::Zero(); Vec3 normal = Vec3::UnitZ(); };
 
 using GeometryOp = std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, PrismOp,
-                                RevolveOp, BooleanOp, TranslateOp, RotateOp, ScaleOp, WebcutOp>;
+                                RevolveOp, LoftOp, BooleanOp, TranslateOp, RotateOp, ScaleOp,
+                                WebcutOp>;
 
 struct GeometryStep {
   GeometryOp op;

@@ -18,8 +18,8 @@ namespace cooperage::io::detail {
 namespace {
 
 const std::vector<std::string> kGeometryElements = {
-    "import", "brick", "cylinder", "cone", "sphere", "prism", "revolve", "fuse", "cut",
-    "common", "translate", "rotate", "scale", "webcut", "imprint_merge"};
+    "import", "brick", "cylinder", "cone", "sphere", "prism", "revolve", "loft", "fuse",
+    "cut", "common", "translate", "rotate", "scale", "webcut", "imprint_merge"};
 
 /// Names in journal order: where each was defined and, once a boolean used
 /// it, where it was consumed.
@@ -138,6 +138,52 @@ RevolveOp read_revolve(const Element& e) {
   return op;
 }
 
+/// <loft name ruled> with two or more <section points>: planar polygons, or a
+/// single point (an apex) as the first or last section. The geometry kernel
+/// checks the rest (consecutive sections apart, matching windings).
+LoftOp read_loft(const Element& e) {
+  e.allow_attributes({"name", "ruled"});
+  LoftOp op;
+  op.name = e.shape_name("name");
+  op.ruled = e.boolean("ruled").value_or(true);
+  const auto children = e.children();
+  for (const Element& child : children)
+    if (std::string(child.name()) != "section")
+      child.fail("unknown element in <loft>; allowed: <section>");
+  if (children.size() < 2)
+    e.fail("needs at least two <section> children, got " + std::to_string(children.size()));
+  const Element* first_polygon = nullptr;  // the <section> ruled counts are compared with
+  size_t polygon_size = 0;
+  for (size_t i = 0; i < children.size(); ++i) {
+    const Element& child = children[i];
+    child.allow_attributes({"points"});
+    child.expect_empty();
+    Polygon section = child.points("points", /*allow_single=*/true);
+    if (section.size() == 1) {
+      if (i != 0 && i + 1 != children.size())
+        child.fail_at("points", "a single-point section (an apex) is allowed only as the first "
+                                "or the last <section>");
+    } else {
+      check_planar_polygon(child, section);
+      if (!first_polygon) {
+        first_polygon = &child;
+        polygon_size = section.size();
+      } else if (op.ruled && section.size() != polygon_size) {
+        child.fail_at("points", "a ruled loft needs the same number of points in every polygon "
+                                "<section> (OpenCASCADE joins the sections edge by edge and needs "
+                                "compatible wires): the <section> at line " +
+                                    std::to_string(first_polygon->line()) + " has " +
+                                    std::to_string(polygon_size) + ", this one has " +
+                                    std::to_string(section.size()) +
+                                    "; use ruled=\"false\" or give them the same count");
+      }
+    }
+    op.sections.push_back(std::move(section));
+  }
+  if (!first_polygon) e.fail("needs at least one polygon <section> (three or more points)");
+  return op;
+}
+
 BooleanOp read_boolean(const Element& e, BooleanKind kind, ShapeTable& shapes) {
   e.allow_attributes({"name", "inputs"});
   e.expect_empty();
@@ -208,6 +254,7 @@ GeometryOp read_op(const Element& e, const std::string& tag, ShapeTable& shapes)
   }
   if (tag == "prism") return read_prism(e);
   if (tag == "revolve") return read_revolve(e);
+  if (tag == "loft") return read_loft(e);
   if (tag == "fuse") return read_boolean(e, BooleanKind::Fuse, shapes);
   if (tag == "cut") return read_boolean(e, BooleanKind::Cut, shapes);
   if (tag == "common") return read_boolean(e, BooleanKind::Common, shapes);
@@ -265,7 +312,7 @@ void read_geometry(const Element& geometry, Job& job) {
       job.imprint_merge = e.boolean("enabled").value_or(true);
       continue;
     }
-    if (tag != "prism" && tag != "revolve") e.expect_empty();
+    if (tag != "prism" && tag != "revolve" && tag != "loft") e.expect_empty();
     GeometryOp op = read_op(e, tag, shapes);
     std::visit(
         [&](const auto& o) {

@@ -308,9 +308,10 @@ Vec3 Element::required_vector(const char* attribute, VectorKind kind) const {
   return *vector(attribute, kind);
 }
 
-Polygon Element::points(const char* attribute) const {
+Polygon Element::points(const char* attribute, bool allow_single) const {
   const std::string value = required(attribute);
-  const std::string expected = "three or more points \"x y z, x y z, x y z, ...\"";
+  const std::string expected = std::string(allow_single ? "one point \"x y z\" or " : "") +
+                               "three or more points \"x y z, x y z, x y z, ...\"";
   Polygon out;
   size_t begin = 0;
   while (true) {
@@ -322,7 +323,7 @@ Polygon Element::points(const char* attribute) const {
     if (comma == std::string::npos) break;
     begin = comma + 1;
   }
-  if (out.size() < 3) bad_value(attribute, expected);
+  if (out.size() < 3 && !(allow_single && out.size() == 1)) bad_value(attribute, expected);
   return out;
 }
 

@@ -55,8 +55,9 @@ class Element {
   std::optional<bool> boolean(const char* attribute) const;
   std::optional<Vec3> vector(const char* attribute, VectorKind kind) const;
   Vec3 required_vector(const char* attribute, VectorKind kind) const;
-  /// "x y z, x y z, ..." with at least three points.
-  Polygon points(const char* attribute) const;
+  /// "x y z, x y z, ..." with at least three points; with allow_single, a
+  /// single point "x y z" is accepted too (a loft apex).
+  Polygon points(const char* attribute, bool allow_single = false) const;
   /// Index of the value in `options`, or nullopt when absent.
   std::optional<int> choice(const char* attribute,
                             std::initializer_list<const char*> options) const;

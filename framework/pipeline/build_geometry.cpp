@@ -35,6 +35,8 @@ void apply(occ::Workbench& bench, const io::GeometryOp& op, const std::string& b
           bench.prism(o.name, o.profile, o.holes, o.direction);
         } else if constexpr (std::is_same_v<T, io::RevolveOp>) {
           bench.revolve(o.name, o.profile, o.origin, o.axis, o.angle);
+        } else if constexpr (std::is_same_v<T, io::LoftOp>) {
+          bench.loft(o.name, o.sections, o.ruled);
         } else if constexpr (std::is_same_v<T, io::BooleanOp>) {
           switch (o.kind) {
             case io::BooleanKind::Fuse: bench.fuse(o.name, o.inputs); break;

@@ -11,6 +11,7 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Wire.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
@@ -83,6 +84,25 @@ auto guarded(ErrorCode code, const std::string& context, F&& f) -> decltype(f())
     throw MeshingError(code, context + ": unknown kernel failure");
   }
 }
+
+/// Polygon helpers shared by the primitives (primitives.cpp) and loft.cpp.
+/// Newell normal of a closed polygon: direction = normal for which the
+/// polygon is counter-clockwise, length = twice the enclosed area.
+Vec3 newell(const std::vector<Vec3>& pts);
+/// Diagonal of the bounding box of the points.
+double extent(const std::vector<Vec3>& pts);
+/// Checks a polygon (>= 3 finite points, no coincident consecutive points,
+/// non-zero area); returns its unit Newell normal. `what` names it in the
+/// InvalidInput message ("profile", "section 2", ...).
+Vec3 check_polygon(const std::string& shape, const std::vector<Vec3>& pts, const char* what);
+/// Throws InvalidInput "<what> is not planar" unless every point lies in the
+/// plane (origin, unit normal n), within 1e-7 * size.
+void check_in_plane(const std::string& shape, const std::vector<Vec3>& pts, const Vec3& origin,
+                    const Vec3& n, double size, const char* what);
+/// Closed polygonal wire through the points (straight edges).
+TopoDS_Wire polygon_wire(const std::vector<Vec3>& pts);
+/// Throws GeometryError unless s is non-null and passes BRepCheck_Analyzer.
+void check_valid(const std::string& shape, const TopoDS_Shape& s);
 
 /// True when the shape holds at least one sub-shape of the given type.
 bool contains_solid(const TopoDS_Shape& shape);

@@ -2,6 +2,7 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/silence.cpp
   ${CMAKE_CURRENT_LIST_DIR}/workbench.cpp
   ${CMAKE_CURRENT_LIST_DIR}/primitives.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loft.cpp
   ${CMAKE_CURRENT_LIST_DIR}/booleans.cpp
   ${CMAKE_CURRENT_LIST_DIR}/import.cpp
   ${CMAKE_CURRENT_LIST_DIR}/write.cpp

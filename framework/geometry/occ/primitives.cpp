@@ -24,17 +24,8 @@
 #include <cmath>
 
 namespace cooperage::occ {
-namespace {
+namespace detail {
 
-using detail::invalid;
-
-void positive(const std::string& shape, double value, const char* what) {
-  if (!(value > 0.0) || !std::isfinite(value))
-    invalid(shape, std::string(what) + " must be positive, got " + detail::num(value));
-}
-
-/// Newell normal of a closed polygon: direction = normal for which the
-/// polygon is counter-clockwise, length = twice the enclosed area.
 Vec3 newell(const std::vector<Vec3>& pts) {
   Vec3 n = Vec3::Zero();
   for (size_t i = 0; i < pts.size(); ++i) n += pts[i].cross(pts[(i + 1) % pts.size()]);
@@ -47,8 +38,6 @@ double extent(const std::vector<Vec3>& pts) {
   return b.diagonal();
 }
 
-/// Checks a polygon (>= 3 distinct finite points, non-zero area) lying in
-/// the plane (origin, n) when n is given; returns its unit Newell normal.
 Vec3 check_polygon(const std::string& shape, const std::vector<Vec3>& pts, const char* what) {
   if (pts.size() < 3) invalid(shape, std::string(what) + " needs at least 3 points");
   for (const auto& p : pts)
@@ -78,6 +67,27 @@ TopoDS_Wire polygon_wire(const std::vector<Vec3>& pts) {
   return poly.Wire();
 }
 
+void check_valid(const std::string& shape, const TopoDS_Shape& s) {
+  if (s.IsNull() || !BRepCheck_Analyzer(s).IsValid())
+    throw MeshingError(ErrorCode::GeometryError, "shape '" + shape + "': the kernel built an invalid solid");
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::check_in_plane;
+using detail::check_polygon;
+using detail::check_valid;
+using detail::extent;
+using detail::invalid;
+using detail::polygon_wire;
+
+void positive(const std::string& shape, double value, const char* what) {
+  if (!(value > 0.0) || !std::isfinite(value))
+    invalid(shape, std::string(what) + " must be positive, got " + detail::num(value));
+}
+
 /// Planar face bounded by `profile` (made counter-clockwise about the plane
 /// normal) with `holes` (made clockwise).
 TopoDS_Face planar_face(const std::string& shape, const std::vector<Vec3>& profile,
@@ -99,11 +109,6 @@ TopoDS_Face planar_face(const std::string& shape, const std::vector<Vec3>& profi
   if (!BRepCheck_Analyzer(face).IsValid())
     invalid(shape, "profile and holes do not make a valid face (holes outside or crossing?)");
   return face;
-}
-
-void check_valid(const std::string& shape, const TopoDS_Shape& s) {
-  if (s.IsNull() || !BRepCheck_Analyzer(s).IsValid())
-    throw MeshingError(ErrorCode::GeometryError, "shape '" + shape + "': the kernel built an invalid solid");
 }
 
 }  // namespace

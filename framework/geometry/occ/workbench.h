@@ -59,6 +59,22 @@ class Workbench {
   void bspline_patch(const std::string& name, const std::vector<std::vector<Vec3>>& grid,
                      double thickness);
 
+  /// Solid through planar sections, in order (a loft; OCCT ThruSections).
+  /// [in] sections  2 or more sections; each is a closed planar polygon of
+  ///                >= 3 points (closed implicitly, do not repeat the first
+  ///                point) or a single point (an apex), which is allowed only
+  ///                as the first or the last section. Consecutive sections
+  ///                must not lie in one plane. Model units.
+  /// [in] ruled     true: straight (ruled) side faces between consecutive
+  ///                sections; point j of a polygon joins point j of the next,
+  ///                so every polygon needs the same number of points and the
+  ///                same winding. false: smooth faces through all sections
+  ///                (OCCT matches the sections itself; counts may differ).
+  /// Example: a twisted square prism (squares at z = 0, 1, 2, 3, each turned
+  /// 15 degrees more), a frustum, a pyramid or a tetrahedron (triangle + apex).
+  void loft(const std::string& name, const std::vector<std::vector<Vec3>>& sections,
+            bool ruled = true);
+
   /// name = inputs[0] ∪ inputs[1] ∪ ...; inputs are consumed (removed).
   void fuse(const std::string& name, const std::vector<std::string>& inputs);
   /// name = inputs[0] − inputs[1] − ...; inputs are consumed.

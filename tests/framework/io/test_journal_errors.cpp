@@ -210,6 +210,39 @@ TEST(JournalErrors, ProfilesAndShapes) {
                {"<import>", "\"file\"", ".step"});
 }
 
+TEST(JournalErrors, LoftSections) {
+  const std::string sq0 = R"(<section points="0 0 0, 1 0 0, 1 1 0, 0 1 0"/>)";
+  const std::string sq1 = R"(<section points="0 0 1, 1 0 1, 1 1 1, 0 1 1"/>)";
+  const std::string tri1 = R"(<section points="0 0 1, 1 0 1, 1 1 1"/>)";
+  const std::string apex = R"(<section points="0.5 0.5 2"/>)";
+  expect_error(journal("<loft name=\"L\">" + sq0 + "</loft>"), ErrorCode::InvalidInput,
+               {"job.xml:3:", "<loft>", "at least two <section>"});
+  expect_error(journal("<loft name=\"L\">\n" + sq0 + "\n" + tri1 + "\n</loft>"),
+               ErrorCode::InvalidInput,
+               {"job.xml:5:", "<section>", "same number of points", "compatible wires",
+                "line 4 has 4, this one has 3", "ruled=\"false\""});
+  expect_error(journal("<loft name=\"L\">" + sq0 + "\n" + apex + "\n" + sq1 + "</loft>"),
+               ErrorCode::InvalidInput, {"job.xml:4:", "<section>", "first or the last"});
+  expect_error(journal("<loft name=\"L\">" + sq0 +
+                       R"(<section points="0 0 1, 1 0 1, 1 1 1, 0 1 1.5"/></loft>)"),
+               ErrorCode::InvalidInput, {"<section>", "plane"});
+  expect_error(journal("<loft name=\"L\">" + sq0 + R"(<section points="0 0 1, 1 0 1"/></loft>)"),
+               ErrorCode::InvalidInput, {"<section>", "one point \"x y z\" or three or more"});
+  expect_error(journal("<loft name=\"L\" ruled=\"yes\">" + sq0 + sq1 + "</loft>"),
+               ErrorCode::InvalidInput, {"<loft>", "\"ruled\""});
+  expect_error(journal("<loft name=\"L\" smooth=\"true\">" + sq0 + sq1 + "</loft>"),
+               ErrorCode::InvalidInput, {"<loft>", "unknown attribute \"smooth\"", "ruled"});
+  expect_error(journal("<loft name=\"L\">" + sq0 + R"(<section points="0 0 1" id="2"/></loft>)"),
+               ErrorCode::InvalidInput, {"<section>", "unknown attribute \"id\""});
+  expect_error(journal("<loft name=\"L\">" + sq0 + "<profile points=\"0 0 1, 1 0 1, 1 1 1\"/></loft>"),
+               ErrorCode::InvalidInput, {"<profile>", "allowed: <section>"});
+  expect_error(journal("<loft name=\"L\"><section points=\"0 0 0\"/><section points=\"0 0 1\"/></loft>"),
+               ErrorCode::InvalidInput, {"<loft>", "at least one polygon"});
+  // A smooth loft may change the number of points between sections.
+  EXPECT_NO_THROW(parse_journal(journal("<loft name=\"L\" ruled=\"false\">" + sq0 + tri1 + "</loft>"),
+                                "job.xml", "/base"));
+}
+
 TEST(JournalErrors, MeshQualityAndExportSemantics) {
   const auto mesh = [](const std::string& body) { return journal(kBrick, "<mesh>\n" + body + "\n</mesh>"); };
   expect_error(mesh("<curve id=\"1\" size=\"1\" intervals=\"3\"/>"), ErrorCode::InvalidInput,

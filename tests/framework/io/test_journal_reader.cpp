@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -96,7 +97,7 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   const Job job = read_journal(path);
   EXPECT_EQ(job.file, path);
   EXPECT_FALSE(job.imprint_merge);
-  ASSERT_EQ(job.geometry.size(), 14u);
+  ASSERT_EQ(job.geometry.size(), 15u);
 
   const auto& imp = op<ImportOp>(job, 0);
   EXPECT_EQ(imp.name, "bracket");
@@ -160,6 +161,15 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_EQ(cut.origin, Vec3(10, 0, 0));
   EXPECT_EQ(cut.normal, Vec3(1, 0, 0));
   EXPECT_EQ(job.geometry[13].where.element, "webcut");
+  const auto& spire = op<LoftOp>(job, 14);
+  EXPECT_EQ(spire.name, "spire");
+  EXPECT_FALSE(spire.ruled);
+  ASSERT_EQ(spire.sections.size(), 3u);
+  EXPECT_EQ(spire.sections[0].size(), 4u);
+  EXPECT_EQ(spire.sections[1].size(), 3u);  // smooth lofts may change the count
+  EXPECT_EQ(spire.sections[1][1], Vec3(20.75, 0.25, 1));
+  EXPECT_EQ(spire.sections[2], (Polygon{Vec3(20.5, 0.5, 2)}));  // the apex
+  EXPECT_EQ(job.geometry[14].where.element, "loft");
 
   ASSERT_TRUE(job.mesh.has_value());
   const MeshSettings& m = *job.mesh;
@@ -253,6 +263,51 @@ TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
   EXPECT_EQ(op<RevolveOp>(job, 3).origin, Vec3::Zero());
   EXPECT_TRUE(op<ImportOp>(job, 4).heal);
   EXPECT_EQ(job.geometry[2].where.line, 5);
+}
+
+TEST(JournalReader, LoftSectionsInOrder) {
+  const Job job = parse_journal(R"(<cooperage version="1"><geometry>
+    <loft name="tet">
+      <section points="0.5 0.5 4"/>
+      <section points="0 0 0, 2 0 0, 0 3 0"/>
+    </loft>
+    <loft name="twist" ruled="true">
+      <section points="-0.5 -0.5 0, 0.5 -0.5 0, 0.5 0.5 0, -0.5 0.5 0"/>
+      <section points="-0.353553 -0.612372 1, 0.612372 -0.353553 1, 0.353553 0.612372 1, -0.612372 0.353553 1"/>
+    </loft>
+  </geometry></cooperage>)",
+                                "l.xml", ".");
+  ASSERT_EQ(job.geometry.size(), 2u);
+  const auto& tet = op<LoftOp>(job, 0);
+  EXPECT_EQ(tet.name, "tet");
+  EXPECT_TRUE(tet.ruled);  // the default
+  ASSERT_EQ(tet.sections.size(), 2u);
+  EXPECT_EQ(tet.sections[0], (Polygon{Vec3(0.5, 0.5, 4)}));
+  EXPECT_EQ(tet.sections[1], (Polygon{Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 3, 0)}));
+  const auto& twist = op<LoftOp>(job, 1);
+  EXPECT_TRUE(twist.ruled);
+  ASSERT_EQ(twist.sections.size(), 2u);
+  EXPECT_EQ(twist.sections[1][1], Vec3(0.612372, -0.353553, 1));
+  EXPECT_EQ(job.geometry[1].where.line, 6);
+}
+
+TEST(JournalReader, TwistedBlockExample) {
+  const Job job = read_journal(kExamples + "/twisted_block.xml");
+  ASSERT_EQ(job.geometry.size(), 1u);
+  const auto& loft = op<LoftOp>(job, 0);
+  EXPECT_EQ(loft.name, "twisted");
+  EXPECT_TRUE(loft.ruled);
+  ASSERT_EQ(loft.sections.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) {
+    ASSERT_EQ(loft.sections[k].size(), 4u);
+    for (const auto& p : loft.sections[k]) {
+      EXPECT_DOUBLE_EQ(p.z(), static_cast<double>(k));
+      EXPECT_NEAR(std::hypot(p.x(), p.y()), std::sqrt(0.5), 1e-6);
+    }
+  }
+  EXPECT_DOUBLE_EQ(*job.mesh->size, 0.25);
+  ASSERT_EQ(job.exports.size(), 1u);
+  EXPECT_EQ(job.exports[0].file, "twisted_block.vtu");
 }
 
 TEST(JournalReader, NumbersInAllNotations) {
