@@ -57,6 +57,18 @@ mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceS
   return db;
 }
 
+mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceScheme& scheme,
+                                int surface,
+                                const std::function<double(const geom::Curve&)>& size) {
+  intervals::IntervalProblem problem;
+  for (const auto& c : model.curves()) problem.add_curve(c.id, c.length / size(c));
+  scheme.constrain(scheme::SurfaceView{model, surface, nullptr}, problem);
+  const auto solution = intervals::solve(problem);
+  mesh::MeshDB db;
+  pipeline::mesh_curves(model, solution.intervals, io::MeshSettings{}, db);
+  return db;
+}
+
 const scheme::Registry& builtin_registry() {
   static const scheme::Registry& registry = *[] {
     auto* r = new scheme::Registry;  // lives for the whole run

@@ -5,6 +5,7 @@
 #include "framework/mesh/mesh_db.h"
 #include "framework/scheme/registry.h"
 
+#include <functional>
 #include <map>
 #include <string>
 
@@ -21,6 +22,10 @@ int top_surface(const geom::Model& model);
 /// `scheme` on `surface` applied (interval assignment by CBC).
 mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceScheme& scheme,
                                 int surface, double size);
+/// As above with a goal size per curve (interval goal = length / size(curve)).
+mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceScheme& scheme,
+                                int surface,
+                                const std::function<double(const geom::Curve&)>& size);
 /// The built-in schemes.
 const scheme::Registry& builtin_registry();
 
