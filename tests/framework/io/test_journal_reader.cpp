@@ -297,15 +297,17 @@ TEST(JournalReader, TwistedBlockExample) {
   const auto& loft = op<LoftOp>(job, 0);
   EXPECT_EQ(loft.name, "twisted");
   EXPECT_TRUE(loft.ruled);
-  ASSERT_EQ(loft.sections.size(), 4u);
-  for (size_t k = 0; k < 4; ++k) {
+  ASSERT_EQ(loft.sections.size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
     ASSERT_EQ(loft.sections[k].size(), 4u);
     for (const auto& p : loft.sections[k]) {
-      EXPECT_DOUBLE_EQ(p.z(), static_cast<double>(k));
+      EXPECT_DOUBLE_EQ(p.z(), 3.0 * static_cast<double>(k));
       EXPECT_NEAR(std::hypot(p.x(), p.y()), std::sqrt(0.5), 1e-6);
     }
   }
-  EXPECT_DOUBLE_EQ(*job.mesh->size, 0.25);
+  EXPECT_DOUBLE_EQ(*job.mesh->size, 0.1);
+  ASSERT_EQ(job.mesh->volumes.size(), 1u);
+  EXPECT_EQ(job.mesh->volumes[0].scheme, "cooper");
   ASSERT_EQ(job.exports.size(), 1u);
   EXPECT_EQ(job.exports[0].file, "twisted_block.vtu");
 }

@@ -72,8 +72,10 @@ TEST(OccLoft, TwistedBlockExample) {
   Workbench wb;
   wb.loft(op->name, op->sections, op->ruled);
   const Model m = wb.build_model();
-  expect_counts(m, 16, 28, 14);
-  const double exact = 3.0 * (1.0 - (1.0 - std::cos(15.0 * kPi / 180)) / 3.0);
+  expect_counts(m, 8, 12, 6);
+  // One ruled layer of height 3 turned by 45 degrees: each cross-section is a
+  // scaled square, V = h A (1 - (1 - cos t) / 3).
+  const double exact = 3.0 * (1.0 - (1.0 - std::cos(45.0 * kPi / 180)) / 3.0);
   EXPECT_TRUE(near_rel(m.volume(1).volume, exact, 1e-5)) << m.volume(1).volume;  // 6 digits
 }
 
