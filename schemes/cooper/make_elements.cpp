@@ -5,6 +5,10 @@
 #include "framework/quality/hex_metrics.h"
 #include "framework/quality/wedge_metrics.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
 
 namespace cooperage::cooper {
@@ -12,44 +16,75 @@ namespace cooperage::cooper {
 void make_elements(const SweepInput& in, std::vector<mesh::Hex>& hexes,
                    std::vector<mesh::Wedge>& wedges) {
   const int n = in.cap_nodes;
-  hexes.clear();
-  wedges.clear();
-  hexes.reserve(in.quads.size() * static_cast<std::size_t>(in.layers));
-  wedges.reserve(in.tris.size() * static_cast<std::size_t>(in.layers));
-  for (int j = 0; j < in.layers; ++j) {
-    const int lo = j * n;
+  const std::size_t nq = in.quads.size(), nt = in.tris.size();
+  const std::size_t layers = static_cast<std::size_t>(std::max(0, in.layers));
+  hexes.resize(nq * layers);
+  wedges.resize(nt * layers);
+  // Layer j's elements occupy a fixed slice: filled in parallel, the same
+  // arrays for any thread count.
+  tbb::parallel_for(std::size_t{0}, layers, [&](std::size_t j) {
+    const int lo = static_cast<int>(j) * n;
     const int hi = lo + n;
     // Bottom face counter-clockwise about the direction to the next layer.
-    for (const auto& q : in.quads) {
-      hexes.push_back({q[0] + lo, q[1] + lo, q[2] + lo, q[3] + lo, q[0] + hi, q[1] + hi,
-                       q[2] + hi, q[3] + hi});
+    for (std::size_t k = 0; k < nq; ++k) {
+      const auto& q = in.quads[k];
+      hexes[j * nq + k] = {q[0] + lo, q[1] + lo, q[2] + lo, q[3] + lo,
+                           q[0] + hi, q[1] + hi, q[2] + hi, q[3] + hi};
     }
-    for (const auto& t : in.tris) {
-      wedges.push_back({t[0] + lo, t[1] + lo, t[2] + lo, t[0] + hi, t[1] + hi, t[2] + hi});
+    for (std::size_t k = 0; k < nt; ++k) {
+      const auto& t = in.tris[k];
+      wedges[j * nt + k] = {t[0] + lo, t[1] + lo, t[2] + lo, t[0] + hi, t[1] + hi, t[2] + hi};
     }
-  }
+  });
 }
+
+namespace {
+
+// Worst value and first element at or below the limit over a range; the
+// combination (min, min) is order-free, so the parallel result is exact.
+struct Worst {
+  double value = 1.0;
+  long first_bad = -1;
+  void add(double sj, long e, double limit) {
+    value = std::min(value, sj);
+    if (sj <= limit && (first_bad < 0 || e < first_bad)) first_bad = e;
+  }
+  void join(const Worst& o) {
+    value = std::min(value, o.value);
+    if (o.first_bad >= 0 && (first_bad < 0 || o.first_bad < first_bad)) first_bad = o.first_bad;
+  }
+};
+
+}  // namespace
 
 double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<mesh::Hex>& hexes,
                            const std::vector<mesh::Wedge>& wedges, double limit, long* first_bad) {
-  double worst = 1.0;
-  long bad = -1;
-  quality::HexNodes h;
-  for (std::size_t e = 0; e < hexes.size(); ++e) {
-    for (std::size_t c = 0; c < 8; ++c) h[c] = points[static_cast<std::size_t>(hexes[e][c])];
-    const double sj = quality::hex_scaled_jacobian(h);
-    if (sj <= limit && bad < 0) bad = static_cast<long>(e);
-    worst = std::min(worst, sj);
-  }
-  quality::WedgeNodes w;
-  for (std::size_t e = 0; e < wedges.size(); ++e) {
-    for (std::size_t c = 0; c < 6; ++c) w[c] = points[static_cast<std::size_t>(wedges[e][c])];
-    const double sj = quality::wedge_scaled_jacobian(w);
-    if (sj <= limit && bad < 0) bad = static_cast<long>(hexes.size() + e);
-    worst = std::min(worst, sj);
-  }
-  if (first_bad) *first_bad = bad;
-  return worst;
+  const std::size_t nh = hexes.size();
+  const Worst worst = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, nh + wedges.size(), 4096), Worst{},
+      [&](const tbb::blocked_range<std::size_t>& range, Worst w) {
+        for (std::size_t e = range.begin(); e != range.end(); ++e) {
+          double sj;
+          if (e < nh) {
+            quality::HexNodes h;
+            for (std::size_t c = 0; c < 8; ++c) h[c] = points[static_cast<std::size_t>(hexes[e][c])];
+            sj = quality::hex_scaled_jacobian(h);
+          } else {
+            quality::WedgeNodes p;
+            const auto& wedge = wedges[e - nh];
+            for (std::size_t c = 0; c < 6; ++c) p[c] = points[static_cast<std::size_t>(wedge[c])];
+            sj = quality::wedge_scaled_jacobian(p);
+          }
+          w.add(sj, static_cast<long>(e), limit);
+        }
+        return w;
+      },
+      [](Worst a, const Worst& b) {
+        a.join(b);
+        return a;
+      });
+  if (first_bad) *first_bad = worst.first_bad;
+  return worst.value;
 }
 
 }  // namespace cooperage::cooper

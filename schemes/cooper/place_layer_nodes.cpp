@@ -2,6 +2,9 @@
 // sec. 6.2 the two-sided blend); ALGORITHMS.md sec. 3.
 #include "schemes/cooper/sweep_barrel.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -92,30 +95,38 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   }
   const double tolerance = 1e-9 * (hi - lo).norm();
   std::vector<Vec3> res_u;
-  std::vector<Vec3> res_l;
 
+  // Target interior nodes are independent of each other: placed in parallel
+  // (each node's value does not depend on the thread count).
   Vec3* target = &points[J * n];
   const bool correct_target = residuals(to_target, upper, lower, B, res_u) > tolerance;
   const bool fixed = in.has_fixed_target.size() == n;
-  for (std::size_t i = B; i < n; ++i) {
-    if (fixed && in.has_fixed_target[i]) {
-      target[i] = in.fixed_target[i];
-      continue;
-    }
-    Vec3 y = to_target.apply(in.source[i]);
-    if (correct_target) y += interpolate_residual(in.source[i], in.source, B, res_u);
-    target[i] = in.project_target ? in.project_target(y) : y;
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(B, n, 1024),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        if (fixed && in.has_fixed_target[i]) {
+                          target[i] = in.fixed_target[i];
+                          continue;
+                        }
+                        Vec3 y = to_target.apply(in.source[i]);
+                        if (correct_target) {
+                          y += interpolate_residual(in.source[i], in.source, B, res_u);
+                        }
+                        target[i] = in.project_target ? in.project_target(y) : y;
+                      }
+                    });
 
-  // x_ij = x^U_ij (1 - s_j) + x^L_ij s_j.
-  for (std::size_t j = 1; j < J; ++j) {
+  // x_ij = x^U_ij (1 - s_j) + x^L_ij s_j. Layers are independent: one task
+  // per layer; a failing layer is reported by its index (the lowest one), so
+  // the message does not depend on scheduling either.
+  std::vector<char> failed(J + 1, 0);
+  tbb::parallel_for(std::size_t{1}, J, [&](std::size_t j) {
     const Vec3* layer = &ring[j * B];
     const AffineMap from_upper = least_squares_map(upper, layer, B, in.loop_starts);
     const AffineMap from_lower = least_squares_map(lower, layer, B, in.loop_starts);
     if (!from_upper.ok || !from_lower.ok) {
-      why = "the least-squares map to layer " + std::to_string(j) + " from the " +
-            (from_upper.ok ? "target" : "source") + " loops is singular or inverting (det A <= 0)";
-      return false;
+      failed[j] = from_upper.ok ? 2 : 1;
+      return;
     }
     const double sj = s[j];
     const Eigen::Matrix3d Au = (1.0 - sj) * from_upper.A;
@@ -124,12 +135,19 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
     // (1 - s) [A_U (x - xu) + yc] + s [A_L (t - xl) + yc] with yc shared.
     Vec3* out = &points[j * n];
     for (std::size_t i = B; i < n; ++i) out[i] = Au * in.source[i] + Al * target[i] + c;
-    const bool cu = residuals(from_upper, upper, layer, B, res_u) > tolerance;
-    const bool cl = residuals(from_lower, lower, layer, B, res_l) > tolerance;
+    std::vector<Vec3> ru, rl;  // this layer's residuals
+    const bool cu = residuals(from_upper, upper, layer, B, ru) > tolerance;
+    const bool cl = residuals(from_lower, lower, layer, B, rl) > tolerance;
     if (cu || cl) {
-      for (std::size_t k = 0; k < B; ++k) res_u[k] = (1.0 - sj) * res_u[k] + sj * res_l[k];
-      for (std::size_t i = B; i < n; ++i) out[i] += interpolate_residual(in.source[i], in.source, B, res_u);
+      for (std::size_t k = 0; k < B; ++k) ru[k] = (1.0 - sj) * ru[k] + sj * rl[k];
+      for (std::size_t i = B; i < n; ++i) out[i] += interpolate_residual(in.source[i], in.source, B, ru);
     }
+  });
+  for (std::size_t j = 1; j < J; ++j) {
+    if (!failed[j]) continue;
+    why = "the least-squares map to layer " + std::to_string(j) + " from the " +
+          (failed[j] == 2 ? "target" : "source") + " loops is singular or inverting (det A <= 0)";
+    return false;
   }
   return true;
 }
