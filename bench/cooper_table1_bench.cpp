@@ -1,0 +1,48 @@
+// The paper's Table 1 for Cooperage: cooper on the many-to-one examples at
+// three sizes each (the journal's size, half and a quarter): elements and
+// elements per second, model built from the journal beforehand, one thread.
+//   build/bin/cooperage_bench --benchmark_filter='CooperTable1'
+#include "bench_models.h"
+#include "peak_memory.h"
+
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/mesher.h"
+#include "selector/select_schemes.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace {
+
+using namespace cooperage;
+
+const char* const kModels[] = {"cylinder_boss", "block_two_bosses_hole", "block_appendages",
+                               "stepped_block", "plate_three_holes"};
+
+void BM_CooperTable1(benchmark::State& state) {
+  const std::string name = kModels[state.range(0)];
+  const io::Job job =
+      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/" + name + ".xml");
+  const geom::Model model = pipeline::build_geometry(job);
+  io::MeshSettings settings = *job.mesh;
+  const double size = *settings.size / static_cast<double>(state.range(1));
+  settings.size = size;
+  const pipeline::MeshOptions options = selector::mesh_options(3, 1);
+  size_t hexes = 0;
+  for (auto _ : state) {
+    const auto r = pipeline::mesh_model(model, settings, bench::builtin_registry(), options);
+    hexes = r.mesh.hex_count();
+  }
+  state.SetLabel(name + " size " + std::to_string(size));
+  state.counters["elements"] = static_cast<double>(hexes);
+  state.counters["elements_per_s"] =
+      benchmark::Counter(static_cast<double>(hexes), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
+}
+BENCHMARK(BM_CooperTable1)
+    ->ArgsProduct({{0, 1, 2, 3, 4}, {1, 2, 4}})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
