@@ -88,6 +88,22 @@ TEST_F(RunCommand, ManyToOneSweepIsByteIdenticalForOneAndTwoThreads) {
   }
 }
 
+TEST_F(RunCommand, EveryShippedExampleMeshesAndWritesItsExports) {
+  // The README promises that each example meshes with `cooperage run`.
+  size_t examples = 0;
+  for (const auto& entry : fs::directory_iterator(kSource + "/examples")) {
+    if (entry.path().extension() != ".xml") continue;
+    ++examples;
+    const std::string copy = path(entry.path().filename().string());
+    fs::copy_file(entry.path(), copy, fs::copy_options::overwrite_existing);
+    const auto r = run_command(kCli + " run -q " + copy);
+    EXPECT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.err << r.out;
+    EXPECT_NE(r.out.find("inverted"), std::string::npos) << entry.path();  // the table
+    EXPECT_EQ(r.out.find("FAILED"), std::string::npos) << entry.path() << r.out;
+  }
+  EXPECT_GE(examples, 10u);
+}
+
 TEST_F(RunCommand, ProgressGoesToStderrWithoutQuiet) {
   fs::copy_file(kSource + "/examples/two_bricks.xml", path("two_bricks.xml"));
   const auto r = run_command(kCli + " run " + path("two_bricks.xml"));
