@@ -79,6 +79,41 @@ TEST(Selector, PlateWithHolesGoesToCooperOneToOne) {
   }
 }
 
+TEST(Selector, PlateWithRoundHolesGoesToCooperOneToOneWithAPavedSource) {
+  occ::Workbench bench;
+  bench.brick("plate", {0, 0, 0}, {10, 6, 1});
+  std::vector<std::string> inputs{"plate"};
+  for (int i = 0; i < 3; ++i) {
+    bench.cylinder("h" + std::to_string(i), {2.5 * (i + 1), 3, -1}, {0, 0, 1}, 0.8, 3);
+    inputs.push_back("h" + std::to_string(i));
+  }
+  bench.cut("part", inputs);
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  const Selection s = select_schemes(model, f.registry, sized(0.25));
+  EXPECT_EQ(volume(s, 1).scheme, "cooper");
+  EXPECT_NE(volume(s, 1).candidates[1].applicability.why.find("one-barrel"), std::string::npos)
+      << volume(s, 1).candidates[1].applicability.why;
+  int paved = 0;
+  for (const auto& c : s.surfaces) paved += c.scheme == "pave";
+  EXPECT_EQ(paved, 1);  // the source cap; the target is projected
+}
+
+TEST(Selector, CylinderWithBossGoesToCooperManyToOne) {
+  occ::Workbench bench;
+  bench.cylinder("body", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
+  bench.cylinder("boss", {0, 0, 3}, {0, 0, 1}, 1.0, 1.5);
+  bench.fuse("part", {"body", "boss"});
+  const geom::Model model = bench.build_model();
+  Fixture f;
+  const Selection s = select_schemes(model, f.registry, sized(0.25));
+  EXPECT_EQ(volume(s, 1).scheme, "cooper");
+  const auto& why = volume(s, 1).candidates[1].applicability.why;
+  EXPECT_NE(why.find("many-to-one"), std::string::npos) << why;
+  // Many-to-one ranks below one-to-one sweeps.
+  EXPECT_LT(volume(s, 1).candidates[1].applicability.score, 0.5);
+}
+
 TEST(Selector, LShapedPlanarFaceGoesToSubmap) {
   occ::Workbench bench;
   bench.prism("l", {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}}, {},
