@@ -160,14 +160,23 @@ std::string check_pair(const geom::Model& model, int volume_id, const std::vecto
 // The first surface scheme of map, submap, pave that meshes the cap, or why not.
 std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& registry, int surface,
                             std::string& why) {
+  // The best-scoring quad scheme (scores are the scaled Jacobian each can
+  // reach, so a corner map/submap would squash goes to pave); ties keep the
+  // order map, submap, pave.
   std::string reasons;
+  std::string best;
+  double best_score = -1.0;
   for (const char* name : {"map", "submap", "pave"}) {
     const scheme::SurfaceScheme* s = registry.surface_scheme(name);
     if (!s) continue;
     const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
-    if (a.ok) return name;
-    reasons += std::string(reasons.empty() ? "" : "; ") + name + ": " + a.why;
+    if (a.ok && a.score > best_score) {
+      best = name;
+      best_score = a.score;
+    }
+    if (!a.ok) reasons += std::string(reasons.empty() ? "" : "; ") + name + ": " + a.why;
   }
+  if (!best.empty()) return best;
   if (!registry.surface_scheme("pave")) {
     why = "source cap surface " + std::to_string(surface) +
           " needs pave, which is not available (" + reasons + ")";
