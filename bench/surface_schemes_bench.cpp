@@ -1,10 +1,15 @@
-// Surface schemes on the same faces: map vs submap on a rectangle, submap on
-// a comb at three sizes. Reports quads per second (the scheme's mesh() alone;
+// Surface schemes on the same faces: map vs submap vs pave on a rectangle,
+// submap on a comb at three sizes. Reports quads per second (the scheme's mesh() alone;
 // curves are meshed before timing) and peak memory.
 #include "bench_models.h"
 #include "peak_memory.h"
 
+#include "framework/quality/quad_metrics.h"
+#include "framework/quality/summary.h"
+
 #include <benchmark/benchmark.h>
+
+#include <vector>
 
 namespace {
 
@@ -21,6 +26,22 @@ void run_surface_scheme(benchmark::State& state, const geom::Model& model, int s
     quads = m.quads.size();
     benchmark::DoNotOptimize(m.coords.data());
   }
+  // Quality of the last mesh, against the surface normal.
+  const scheme::EntityMesh m = s->mesh(view, {size});
+  std::vector<double> sj;
+  sj.reserve(m.quads.size());
+  for (const auto& q : m.quads) {
+    quality::QuadNodes p;
+    geom::Vec3 c = geom::Vec3::Zero();
+    for (int k = 0; k < 4; ++k) {
+      p[static_cast<size_t>(k)] = m.coords[static_cast<size_t>(q[static_cast<size_t>(k)])];
+      c += p[static_cast<size_t>(k)] / 4.0;
+    }
+    sj.push_back(quality::quad_scaled_jacobian(p, model.surface(surface).geometry->project(c).normal));
+  }
+  const auto summary = quality::summarize(quality::Metric::ScaledJacobian, sj);
+  state.counters["min_SJ"] = summary.min;
+  state.counters["median_SJ"] = summary.median;
   state.counters["quads"] = static_cast<double>(quads);
   state.counters["quads_per_s"] =
       benchmark::Counter(static_cast<double>(quads), benchmark::Counter::kIsIterationInvariantRate);
@@ -41,6 +62,13 @@ void BM_SubmapRectangle(benchmark::State& state) {
                      10.0 / static_cast<double>(state.range(0)));
 }
 BENCHMARK(BM_SubmapRectangle)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void BM_PaveRectangle(benchmark::State& state) {
+  static const geom::Model model = bench::rectangle_plate(10, 10);
+  run_surface_scheme(state, model, bench::top_surface(model), "pave",
+                     10.0 / static_cast<double>(state.range(0)));
+}
+BENCHMARK(BM_PaveRectangle)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 // A comb with 5 teeth (area 24) at sizes 1/4, 1/16, 1/64 of a unit.
 void BM_SubmapComb(benchmark::State& state) {
