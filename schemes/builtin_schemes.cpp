@@ -39,6 +39,8 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
     if (!v.sources.empty() || !v.targets.empty() || v.direction) {
       cooper_options.hints[v.id] = {v.sources, v.targets, v.direction};
     }
+    // Mixed is rejected by pipeline::check_settings before meshing.
+    if (v.elements == io::ElementKind::Wedge) cooper_options.elements[v.id] = cooper::Elements::Wedge;
   }
   registry.add(cooper::make_cooper(registry, std::move(cooper_options)));
 }

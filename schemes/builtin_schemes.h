@@ -12,7 +12,8 @@ namespace cooperage {
 struct BuiltinOptions {
   /// Hard vertex classifications for submap (journal <vertex_type>).
   std::vector<io::VertexTypeSetting> vertex_types;
-  /// Volume settings: cooper takes their sweep hints (sources, targets, direction).
+  /// Volume settings: cooper takes their sweep hints (sources, targets,
+  /// direction) and element kinds (elements="wedge").
   std::vector<io::VolumeSetting> volumes;
 };
 

@@ -114,8 +114,20 @@ class Selector {
 
   void choose_volume(int id) {
     const scheme::VolumeView view{model_, id, nullptr};
-    Choice choice{3, id, evaluate(registry_.volume_schemes(), view), {}, {}, false, false};
     const auto* pin = find_setting(settings_.volumes, id);
+    // elements="wedge": only schemes that make wedges are candidates.
+    const bool wedge = pin && pin->elements == io::ElementKind::Wedge;
+    std::vector<const scheme::VolumeScheme*> schemes;
+    for (const scheme::VolumeScheme* s : registry_.volume_schemes()) {
+      if (!wedge || s->makes_wedges()) {
+        schemes.push_back(s);
+      } else if (pin->scheme == s->name()) {
+        throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
+                           "volume scheme \"" + pin->scheme + "\" (" + place(pin->where) +
+                               ") makes hexes only, but elements=\"wedge\"");
+      }
+    }
+    Choice choice{3, id, evaluate(schemes, view), {}, {}, false, false};
     std::vector<const Candidate*> order;
     if (pin && pin->scheme != "auto") {
       const Candidate* c = find_candidate(choice.candidates, pin->scheme);
@@ -135,7 +147,8 @@ class Selector {
       order = ranked(choice.candidates);
       if (order.empty()) {
         throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
-                           "no hex scheme applies (" + all_reasons(choice.candidates) + ")");
+                           std::string(wedge ? "no wedge scheme" : "no hex scheme") +
+                               " applies (" + all_reasons(choice.candidates) + ")");
       }
     }
     std::string conflicts;

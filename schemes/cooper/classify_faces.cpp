@@ -157,9 +157,26 @@ std::string check_pair(const geom::Model& model, int volume_id, const std::vecto
   return {};
 }
 
-// The first surface scheme of map, submap, pave that meshes the cap, or why not.
+// Wedge mode: "tri" when it meshes the cap, or why not.
+std::string tri_cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
+                           std::string& why) {
+  const scheme::SurfaceScheme* tri = registry.surface_scheme("tri");
+  if (!tri) {
+    why = "source cap surface " + std::to_string(surface) +
+          " needs the tri scheme for wedges, which is not available";
+    return {};
+  }
+  const scheme::Applicability a = tri->applicable(scheme::SurfaceView{model, surface, nullptr});
+  if (a.ok) return "tri";
+  why = "tri does not mesh source cap surface " + std::to_string(surface) + " (" + a.why + ")";
+  return {};
+}
+
+// The first surface scheme of map, submap, pave that meshes the cap, or why
+// not; only "tri" when `tri_caps` (wedge mode).
 std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& registry, int surface,
-                            std::string& why) {
+                            std::string& why, bool tri_caps = false) {
+  if (tri_caps) return tri_cap_scheme(model, registry, surface, why);
   // The best-scoring quad scheme (scores are the scaled Jacobian each can
   // reach, so a corner map/submap would squash goes to pave); ties keep the
   // order map, submap, pave.
@@ -206,7 +223,8 @@ bool better_source(const FaceInfo& x, const FaceInfo& y) {
 
 // cite: Blacker 1996, sec. 3 (volume classification into sides and caps).
 Classification classify_faces(const geom::Model& model, int volume_id,
-                              const scheme::Registry& registry, const SweepHints& hints) {
+                              const scheme::Registry& registry, const SweepHints& hints,
+                              bool tri_caps) {
   Classification out;
   const std::string vname = volume_name(volume_id);
   std::vector<int> ids = model.surfaces_of(volume_id);
@@ -344,10 +362,10 @@ Classification classify_faces(const geom::Model& model, int volume_id,
       std::swap(src, tgt);
     }
     std::string scheme_why;
-    std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why);
+    std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why, tri_caps);
     if (scheme.empty() && !hinted) {
       std::string other_why;
-      const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why);
+      const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why, tri_caps);
       if (!other.empty()) {
         std::swap(src, tgt);
         scheme = other;

@@ -39,7 +39,7 @@ struct Classification {
   double score = 0.0;        ///< in [0, 1]
   int source = 0;            ///< source cap surface
   int target = 0;            ///< target cap surface
-  std::string source_scheme; ///< "map", "submap" or "pave"
+  std::string source_scheme; ///< "map", "submap" or "pave"; "tri" with tri_caps
   std::vector<SideFace> sides;  ///< ascending surface id
 };
 
@@ -56,8 +56,11 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// candidate cap pairs are ranked by (direction hint,) loops, curves, area,
 /// ids; the source is the cap with more loops, then curves, then area, then
 /// the lower id, unless only the other one has a surface scheme.
+/// \param[in] tri_caps   wedge mode: the source cap is meshed by the registry's
+///                       "tri" (triangles, swept into wedges) instead of map/submap/pave
 Classification classify_faces(const geom::Model& model, int volume_id,
-                              const scheme::Registry& registry, const SweepHints& hints = {});
+                              const scheme::Registry& registry, const SweepHints& hints = {},
+                              bool tri_caps = false);
 
 namespace detail {
 

@@ -16,6 +16,9 @@ namespace {
 
 std::string volume_name(int id) { return "volume " + std::to_string(id); }
 
+constexpr const char* kWedgeOneToOneOnly =
+    "wedge mode supports one-to-one sweeps only in this release";
+
 [[noreturn]] void fail(int volume_id, const std::string& message) {
   throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
 }
@@ -30,11 +33,17 @@ const mesh::SurfaceMeshData& meshed(const mesh::MeshDB& db, int volume_id, int s
 
 }  // namespace
 
+Elements CooperScheme::elements(int volume_id) const {
+  const auto it = options_.elements.find(volume_id);
+  return it == options_.elements.end() ? Elements::Hex : it->second;
+}
+
 Classification CooperScheme::classify(const scheme::VolumeView& view) const {
   const auto it = options_.hints.find(view.volume_id);
   static const SweepHints none;
   return classify_faces(view.model, view.volume_id, *registry_,
-                        it == options_.hints.end() ? none : it->second);
+                        it == options_.hints.end() ? none : it->second,
+                        elements(view.volume_id) == Elements::Wedge);
 }
 
 ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
@@ -50,6 +59,9 @@ ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
 scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
   if (c.ok) return scheme::Applicability::yes(c.score, c.why);
+  if (elements(view.volume_id) == Elements::Wedge) {
+    return scheme::Applicability::no(c.why + "; " + kWedgeOneToOneOnly);
+  }
   const ManyToOne m = classify_many(view);
   if (m.ok) return scheme::Applicability::yes(m.score, m.why);
   if (m.needs_decomposition) return scheme::Applicability::no(m.why);
@@ -60,7 +72,7 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
                              intervals::IntervalProblem& problem) const {
   const Classification c = classify(view);
   if (!c.ok) {
-    constrain_many(view, problem);
+    if (elements(view.volume_id) == Elements::Hex) constrain_many(view, problem);
     return;
   }
   const std::string tag = volume_name(view.volume_id) + " (cooper)";
@@ -137,6 +149,7 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
   scheme::SurfaceRoles roles;
   if (!c.ok) {
+    if (elements(view.volume_id) == Elements::Wedge) return roles;
     const ManyToOne m = classify_many(view);
     if (!m.ok) return roles;
     for (const SideFace& side : m.sides) roles[side.surface] = "submap";
@@ -168,6 +181,10 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
   if (!view.mesh) fail(vid, "cooper needs the meshed side and source surfaces");
   const mesh::MeshDB& db = *view.mesh;
   const Classification c = classify(view);
+  if (!c.ok && elements(vid) == Elements::Wedge) {
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid),
+                       c.why + "; " + kWedgeOneToOneOnly);
+  }
   if (!c.ok) {
     const ManyToOne m = classify_many(view);
     if (m.ok) return sweep_many_to_one(view, m, options_.polygon_mesher.get());

@@ -4,6 +4,9 @@
 // bosses, shoulders and through holes along one axis; classify_barrels.h,
 // sweep_many_to_one.h). Sides are submapped, the source caps are meshed by
 // map / submap / pave, the target cap is meshed here (kMeshedByVolume).
+// Wedge mode (Blacker 1996, abstract: "a wedge/hexahedral element mix ...
+// by simply allowing triangle ... cap meshes"): the source cap is meshed by
+// "tri" and the one-to-one sweep makes wedges; many-to-one is not offered.
 #pragma once
 
 #include "framework/scheme/polygon_mesher.h"
@@ -19,6 +22,12 @@
 
 namespace cooperage::cooper {
 
+/// The elements cooper makes in a volume.
+enum class Elements {
+  Hex,    ///< quad caps (map / submap / pave) swept into hexes
+  Wedge,  ///< triangle caps ("tri") swept into wedges; one-to-one only
+};
+
 struct CooperOptions {
   /// Journal hints per volume id (sources, targets, direction).
   std::map<int, SweepHints> hints;
@@ -26,6 +35,8 @@ struct CooperOptions {
   /// sec. 6.1); null: barrels with subcaps on both ends are not applicable.
   /// The registration code wraps pave's 2D core (pave::pave_2d) here.
   std::shared_ptr<const scheme::PolygonMesher> polygon_mesher;
+  /// Element kind per volume id (journal `elements=`); absent: Hex.
+  std::map<int, Elements> elements;
 };
 
 class CooperScheme final : public scheme::VolumeScheme {
@@ -36,15 +47,17 @@ class CooperScheme final : public scheme::VolumeScheme {
       : registry_(&registry), options_(std::move(options)) {}
 
   std::string_view name() const override { return "cooper"; }
+  bool makes_wedges() const override { return true; }
   /// classify_faces(): a one-barrel volume (two caps, submappable sides,
-  /// convex end caps, a source cap scheme). Never meshes.
+  /// convex end caps, a source cap scheme: "tri" in wedge mode), else (hex
+  /// mode only) classify_barrels(). Never meshes.
   scheme::Applicability applicable(const scheme::VolumeView& view) const override;
   /// Per side: source-boundary sum == target-boundary sum; every linking
   /// chain of the volume the same count (Blacker 1996, sec. 3-4).
   void constrain(const scheme::VolumeView& view,
                  intervals::IntervalProblem& problem) const override;
-  /// Sides -> "submap" (always, one code path), source -> its scheme,
-  /// target -> scheme::kMeshedByVolume. Empty when not applicable.
+  /// Sides -> "submap" (always, one code path), source -> its scheme ("tri"
+  /// in wedge mode), target -> scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   /// Barrel formation, projection, elements. Throws MeshingError
   /// (MeshingFailed) naming the volume: ribs that do not end on the target
@@ -56,6 +69,8 @@ class CooperScheme final : public scheme::VolumeScheme {
   void set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
                  std::optional<geom::Vec3> direction = std::nullopt);
   const CooperOptions& options() const { return options_; }
+  /// The element kind of a volume (Hex unless set in the options).
+  Elements elements(int volume_id) const;
   /// Sets the 2D mesher of imprinted subcaps (see CooperOptions).
   void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher) {
     options_.polygon_mesher = std::move(mesher);
