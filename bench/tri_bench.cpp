@@ -4,8 +4,7 @@
 // BM_TriFace/<n>: n ~ thousands of triangles; the scheme's mesh() alone is
 // timed (curves meshed before). Counters: tris, tris_per_s, min_angle_deg,
 // peak_MB.
-// Not here yet: BM_WedgeSweep (triangle caps swept into wedges): cooper does
-// not sweep triangle caps through the pipeline yet.
+// Triangle caps swept into wedges: BM_WedgeSweep in cooper_table1_bench.cpp.
 #include "bench_models.h"
 #include "face_models.h"
 #include "peak_memory.h"
