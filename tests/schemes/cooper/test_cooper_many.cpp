@@ -446,37 +446,6 @@ TEST(CooperMany, Fig3aIsRejectedNamingTheFacesAndMeshesAfterAWebcut) {
   expect_many_to_one(pieces, r, 32.0 + 1.0 + 1.0, "fig3a_after_webcut");
 }
 
-// Table-1-style timing (paper sec. 7), off by default:
-//   test_cooper --gtest_also_run_disabled_tests --gtest_filter='*Timing*'
-TEST(CooperMany, DISABLED_TimingTable) {
-  struct Model {
-    const char* name;
-    void (*build)(occ::Workbench&);
-  };
-  const Model models[] = {{"square_boss", square_boss},
-                          {"two_bosses_and_hole", two_bosses_and_hole},
-                          {"stacked_bosses", stacked_bosses},
-                          {"appendages_top_and_bottom", appendages_top_and_bottom},
-                          {"straddling_step", straddling_step}};
-  const auto registry = with_polygon_mesher();
-  for (const Model& m : models) {
-    occ::Workbench wb;
-    m.build(wb);
-    const geom::Model model = wb.build_model();
-    for (double size : {0.25, 0.1, 0.05}) {
-      const auto r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options(3, 1));
-      double volume_seconds = 0, total = 0;
-      for (const auto& t : r.timings) {
-        total += t.seconds;
-        if (t.dim == 3) volume_seconds += t.seconds;
-      }
-      std::printf("[timing] %-28s size %.2f: %8zu hexes, cooper %.3f s (%.0f hexes/s), surfaces+cooper %.3f s\n",
-                  m.name, size, r.mesh.hex_count(), volume_seconds,
-                  static_cast<double>(r.mesh.hex_count()) / std::max(volume_seconds, 1e-9), total);
-    }
-  }
-}
-
 // The journals shipped for the examples mesh as the tests above do.
 TEST(CooperMany, JournalsMeshThroughThePipeline) {
   const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
