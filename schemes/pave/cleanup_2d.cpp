@@ -6,6 +6,36 @@
 namespace cooperage::pave::detail {
 namespace {
 
+/// Node -> the quads using it, in quad order, as compressed rows (one
+/// allocation instead of one vector per node).
+struct QuadsOf {
+  std::vector<int> start, items;
+  struct Row {
+    const int* b;
+    const int* e;
+    const int* begin() const { return b; }
+    const int* end() const { return e; }
+    size_t size() const { return static_cast<size_t>(e - b); }
+    int operator[](size_t k) const { return b[k]; }
+  };
+  QuadsOf(size_t n, const std::vector<Quad>& quads) : start(n + 1, 0) {
+    for (const Quad& q : quads) {
+      for (int v : q) {
+        if (v >= 0) ++start[static_cast<size_t>(v) + 1];
+      }
+    }
+    for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    items.resize(static_cast<size_t>(start[n]));
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int k = 0; k < static_cast<int>(quads.size()); ++k) {
+      for (int v : quads[static_cast<size_t>(k)]) {
+        if (v >= 0) items[static_cast<size_t>(fill[static_cast<size_t>(v)]++)] = k;
+      }
+    }
+  }
+  Row operator[](size_t i) const { return Row{items.data() + start[i], items.data() + start[i + 1]}; }
+};
+
 /// Drops nodes no quad uses (never fixed ones), keeping the node order.
 void compact(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::vector<char>& fixed) {
   const size_t n = pts.size();
@@ -34,10 +64,8 @@ void compact(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::v
 
 int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::vector<char>& fixed) {
   const size_t n = pts.size();
-  std::vector<std::vector<int>> of(n);
-  for (int k = 0; k < static_cast<int>(quads.size()); ++k) {
-    for (int v : quads[static_cast<size_t>(k)]) of[static_cast<size_t>(v)].push_back(k);
-  }
+  const QuadsOf of(n, quads);
+  std::vector<Quad> trial;
   std::vector<char> touched(quads.size(), 0), dead(quads.size(), 0);
   int collapsed = 0;
   for (int k = 0; k < static_cast<int>(quads.size()); ++k) {
@@ -46,8 +74,8 @@ int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quad
       const Quad q = quads[static_cast<size_t>(k)];
       const int a = q[static_cast<size_t>(r)], b = q[static_cast<size_t>(r + 1)];
       const int c = q[static_cast<size_t>(r + 2)], d = q[static_cast<size_t>((r + 3) % 4)];
-      const auto& qa = of[static_cast<size_t>(a)];
-      const auto& qc = of[static_cast<size_t>(c)];
+      const QuadsOf::Row qa = of[static_cast<size_t>(a)];
+      const QuadsOf::Row qc = of[static_cast<size_t>(c)];
       if (fixed[static_cast<size_t>(a)] || fixed[static_cast<size_t>(c)] || qa.size() != 3 || qc.size() != 3) continue;
       if (of[static_cast<size_t>(b)].size() + of[static_cast<size_t>(d)].size() < 9) continue;
       bool free_ok = true;
@@ -58,7 +86,7 @@ int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quad
       // four quads stay valid.
       const Eigen::Vector2d saved = pts[static_cast<size_t>(a)];
       pts[static_cast<size_t>(a)] = 0.5 * (saved + pts[static_cast<size_t>(c)]);
-      std::vector<Quad> trial;
+      trial.clear();
       for (int x : qa) {
         if (x != k) trial.push_back(quads[static_cast<size_t>(x)]);
       }
@@ -106,12 +134,7 @@ int remove_doublets(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads,
   const size_t n = pts.size();
   int removed = 0;
   for (int pass = 0; pass < 4; ++pass) {
-    std::vector<std::vector<int>> of(n);
-    for (int k = 0; k < static_cast<int>(quads.size()); ++k) {
-      for (int v : quads[static_cast<size_t>(k)]) {
-        if (v >= 0) of[static_cast<size_t>(v)].push_back(k);
-      }
-    }
+    const QuadsOf of(n, quads);
     std::vector<char> dead(quads.size(), 0);
     int here = 0;
     for (size_t i = 0; i < n; ++i) {

@@ -58,35 +58,47 @@ struct CanonicalFrame {
 /// other edge once in each direction, and the quads' area is the loops' area.
 void check_tiling(const std::vector<V2>& P, const std::vector<std::vector<int>>& loops,
                   const std::vector<detail::Quad>& quads) {
-  std::unordered_map<std::uint64_t, int> used;
-  used.reserve(quads.size() * 4);
+  // The directed quad edges in compressed rows by their start node (a hash
+  // map of all edges thrashes the cache on large meshes; a row holds ~4).
+  const size_t n = P.size();
+  std::vector<int> start(n + 1, 0);
+  for (const auto& q : quads) {
+    for (int v : q) ++start[static_cast<size_t>(v) + 1];
+  }
+  for (size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<int> to(static_cast<size_t>(start[n]));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  auto has = [&](int a, int b) {
+    for (int k = start[static_cast<size_t>(a)]; k < fill[static_cast<size_t>(a)]; ++k) {
+      if (to[static_cast<size_t>(k)] == b) return true;
+    }
+    return false;
+  };
   double area = 0.0;
   for (const auto& q : quads) {
     for (int c = 0; c < 4; ++c) {
-      const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(q[static_cast<size_t>(c)])) << 32) |
-                                static_cast<std::uint32_t>(q[static_cast<size_t>((c + 1) % 4)]);
-      if (++used[key] > 1) failed("two quads share an edge in the same direction");
+      const int a = q[static_cast<size_t>(c)], b = q[static_cast<size_t>((c + 1) % 4)];
+      if (has(a, b)) failed("two quads share an edge in the same direction");
+      to[static_cast<size_t>(fill[static_cast<size_t>(a)]++)] = b;
     }
     area += 0.5 * detail::cross2(P[static_cast<size_t>(q[2])] - P[static_cast<size_t>(q[0])],
                                  P[static_cast<size_t>(q[3])] - P[static_cast<size_t>(q[1])]);
   }
-  auto key_of = [](int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-  };
   size_t boundary_edges = 0;
   double loop_area = 0.0;
   for (const auto& l : loops) {
     for (size_t k = 0; k < l.size(); ++k) {
       const int a = l[k], b = l[(k + 1) % l.size()];
-      if (!used.count(key_of(a, b)) || used.count(key_of(b, a))) failed("a boundary edge is not covered exactly once");
+      if (!has(a, b) || has(b, a)) failed("a boundary edge is not covered exactly once");
       loop_area += 0.5 * detail::cross2(P[static_cast<size_t>(a)], P[static_cast<size_t>(b)]);
       ++boundary_edges;
     }
   }
   size_t unpaired = 0;
-  for (const auto& [key, count] : used) {
-    const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
-    if (!used.count(key_of(b, a))) ++unpaired;
+  for (size_t a = 0; a < n; ++a) {
+    for (int k = start[a]; k < fill[a]; ++k) {
+      if (!has(to[static_cast<size_t>(k)], static_cast<int>(a))) ++unpaired;
+    }
   }
   if (unpaired != boundary_edges) failed("the quads leave a gap or overlap (free interior edge)");
   if (std::abs(area - loop_area) > 1e-9 * std::max(std::abs(loop_area), 1e-300) + 1e-12) {

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 
 namespace cooperage::pave::detail {
 
@@ -12,20 +11,35 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
                             const std::vector<int>& min_cells) {
   const auto& P = tri.points;
   const auto& T = tri.tris;
-  // Directed edge (a -> b) -> triangle and the index of a.
-  std::unordered_map<std::uint64_t, std::pair<int, int>> half;
-  half.reserve(T.size() * 3);
-  auto key = [](int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
+  // Directed edge (a -> b) -> triangle and the index of a, as rows by a
+  // (compressed; a hash map here thrashes the cache on large meshes). Within
+  // a row the half-edges keep the triangle order, so a lookup finds the
+  // first one, as an emplace-only map would.
+  struct Half {
+    int b, t, i;
   };
-  for (int t = 0; t < static_cast<int>(T.size()); ++t) {
-    for (int i = 0; i < 3; ++i) {
+  std::vector<int> half_start(P.size() + 1, 0);
+  for (const auto& v : T) {
+    for (int x : v) ++half_start[static_cast<size_t>(x) + 1];
+  }
+  for (size_t x = 0; x < P.size(); ++x) half_start[x + 1] += half_start[x];
+  std::vector<Half> half(static_cast<size_t>(half_start[P.size()]));
+  {
+    std::vector<int> fill(half_start.begin(), half_start.end() - 1);
+    for (int t = 0; t < static_cast<int>(T.size()); ++t) {
       const auto& v = T[static_cast<size_t>(t)];
-      half.emplace(key(v[static_cast<size_t>(i)], v[static_cast<size_t>((i + 1) % 3)]),
-                   std::make_pair(t, i));
+      for (int i = 0; i < 3; ++i) {
+        half[static_cast<size_t>(fill[static_cast<size_t>(v[static_cast<size_t>(i)])]++)] =
+            Half{v[static_cast<size_t>((i + 1) % 3)], t, i};
+      }
     }
   }
+  auto find_half = [&](int a, int b) -> const Half* {
+    for (int k = half_start[static_cast<size_t>(a)]; k < half_start[static_cast<size_t>(a) + 1]; ++k) {
+      if (half[static_cast<size_t>(k)].b == b) return &half[static_cast<size_t>(k)];
+    }
+    return nullptr;
+  };
   struct Candidate {
     double score;
     int t, s;
@@ -36,11 +50,11 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     const auto& v = T[static_cast<size_t>(t)];
     for (size_t i = 0; i < 3; ++i) {
       const int a = v[i], b = v[(i + 1) % 3], c = v[(i + 2) % 3];
-      auto it = half.find(key(b, a));
-      if (it == half.end() || it->second.first < t) continue;  // boundary, or seen
-      const int s = it->second.first;
+      const Half* it = find_half(b, a);
+      if (it == nullptr || it->t < t) continue;  // boundary, or seen
+      const int s = it->t;
       const auto& w = T[static_cast<size_t>(s)];
-      const int d = w[static_cast<size_t>((it->second.second + 2) % 3)];
+      const int d = w[static_cast<size_t>((it->i + 2) % 3)];
       // Triangles (a, b, c) and (b, a, d) form the quad (a, d, b, c).
       const Cell q{a, d, b, c};
       const double sj = scaled_jacobian_2d(P, q);
@@ -76,11 +90,30 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
   }
   // Augmenting paths of length 3: a free triangle t next to s, whose partner
   // s' has a free neighbour u, becomes (t, s) + (s', u): one more quad.
-  std::vector<std::vector<int>> of(T.size());
-  for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
-    of[static_cast<size_t>(cands[static_cast<size_t>(k)].t)].push_back(k);
-    of[static_cast<size_t>(cands[static_cast<size_t>(k)].s)].push_back(k);
+  // of(t): the candidates holding triangle t, in candidate order (compressed rows).
+  std::vector<int> of_start(T.size() + 1, 0);
+  for (const Candidate& c : cands) {
+    ++of_start[static_cast<size_t>(c.t) + 1];
+    ++of_start[static_cast<size_t>(c.s) + 1];
   }
+  for (size_t t = 0; t < T.size(); ++t) of_start[t + 1] += of_start[t];
+  std::vector<int> of_items(static_cast<size_t>(of_start[T.size()]));
+  {
+    std::vector<int> fill(of_start.begin(), of_start.end() - 1);
+    for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
+      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].t)]++)] = k;
+      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].s)]++)] = k;
+    }
+  }
+  struct Row {
+    const int* b;
+    const int* e;
+    const int* begin() const { return b; }
+    const int* end() const { return e; }
+  };
+  auto of = [&](int t) {
+    return Row{of_items.data() + of_start[static_cast<size_t>(t)], of_items.data() + of_start[static_cast<size_t>(t) + 1]};
+  };
   auto other = [&](int k, int t) {
     const Candidate& c = cands[static_cast<size_t>(k)];
     return c.t == t ? c.s : c.t;
@@ -90,12 +123,12 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     for (int t = 0; t < static_cast<int>(T.size()); ++t) {
       if (match[static_cast<size_t>(t)] >= 0) continue;
       bool done = false;
-      for (int kts : of[static_cast<size_t>(t)]) {
+      for (int kts : of(t)) {
         const int s2 = other(kts, t);
         const int kss = match[static_cast<size_t>(s2)];
         if (kss < 0) continue;  // s2 free too: cannot happen after greedy unless blocked
         const int sp = other(kss, s2);
-        for (int ku : of[static_cast<size_t>(sp)]) {
+        for (int ku : of(sp)) {
           const int u = other(ku, sp);
           if (u == t || u == s2 || match[static_cast<size_t>(u)] >= 0) continue;
           merge(kss, -1);

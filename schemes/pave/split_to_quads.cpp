@@ -1,10 +1,12 @@
 #include "schemes/pave/split_to_quads.h"
 
+#include <algorithm>
+
 namespace cooperage::pave::detail {
 
 void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vector2d>& coarse_points,
                     std::vector<int> fine_of_coarse,
-                    std::unordered_map<std::uint64_t, int>& edge_midpoint,
+                    const std::unordered_map<std::uint64_t, int>& edge_midpoint,
                     std::vector<Eigen::Vector2d>& fine_points, std::vector<Quad>& quads,
                     const std::unordered_set<std::uint64_t>& no_midpoint) {
   auto add = [&](const Eigen::Vector2d& x) {
@@ -16,14 +18,46 @@ void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vec
     if (f < 0) f = add(coarse_points[static_cast<size_t>(c)]);
     return f;
   };
+  // The cells' edges in compressed rows by their lower end, each with its
+  // midpoint (-2: not decided yet). A hash map of all edges thrashes the
+  // cache on large meshes; the rows hold a few edges each.
+  const size_t n_coarse = coarse_points.size();
+  std::vector<int> row(n_coarse + 1, 0);
+  for (const Cell& c : cells) {
+    const int n = c[3] < 0 ? 3 : 4;
+    for (int k = 0; k < n; ++k) {
+      ++row[static_cast<size_t>(std::min(c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % n)])) + 1];
+    }
+  }
+  for (size_t i = 0; i < n_coarse; ++i) row[i + 1] += row[i];
+  std::vector<int> other(static_cast<size_t>(row[n_coarse]), -1);
+  std::vector<int> value(other.size(), -2);
+  {
+    std::vector<int> fill(row.begin(), row.end() - 1);
+    for (const Cell& c : cells) {
+      const int n = c[3] < 0 ? 3 : 4;
+      for (int k = 0; k < n; ++k) {
+        const int a = c[static_cast<size_t>(k)], b = c[static_cast<size_t>((k + 1) % n)];
+        const size_t lo = static_cast<size_t>(std::min(a, b));
+        const int hi = std::max(a, b);
+        bool seen = false;
+        for (int j = row[lo]; j < fill[lo]; ++j) seen = seen || other[static_cast<size_t>(j)] == hi;
+        if (!seen) other[static_cast<size_t>(fill[lo]++)] = hi;
+      }
+    }
+  }
   auto mid = [&](int a, int b) {
+    const size_t lo = static_cast<size_t>(std::min(a, b));
+    const int hi = std::max(a, b);
+    int slot = row[lo];
+    while (other[static_cast<size_t>(slot)] != hi) ++slot;
+    int& m = value[static_cast<size_t>(slot)];
+    if (m != -2) return m;
     const std::uint64_t k = undirected_key(a, b);
-    if (!no_midpoint.empty() && no_midpoint.count(k)) return -1;
+    if (!no_midpoint.empty() && no_midpoint.count(k)) return m = -1;
     auto it = edge_midpoint.find(k);
-    if (it != edge_midpoint.end()) return it->second;
-    const int m = add(0.5 * (coarse_points[static_cast<size_t>(a)] + coarse_points[static_cast<size_t>(b)]));
-    edge_midpoint.emplace(k, m);
-    return m;
+    if (it != edge_midpoint.end()) return m = it->second;
+    return m = add(0.5 * (coarse_points[static_cast<size_t>(a)] + coarse_points[static_cast<size_t>(b)]));
   };
   quads.reserve(quads.size() + cells.size() * 4);
   for (const Cell& c : cells) {

@@ -28,14 +28,15 @@ inline std::uint64_t undirected_key(int a, int b) {
 /// \param[in]     cells           coarse cells over coarse point ids
 /// \param[in]     coarse_points   coarse point positions
 /// \param[in]     fine_of_coarse  fine node of each coarse point, -1 for a new node
-/// \param[in,out] edge_midpoint   coarse edge key -> fine node (given for loop edges; interior edges are added)
+/// \param[in]     edge_midpoint   coarse edge key -> fine node (given for loop edges; the
+///                                other edges' midpoints are new nodes, not added here)
 /// \param[in,out] fine_points     fine node positions; new nodes are appended
 /// \param[out]    quads           counter-clockwise fine quads
 /// \param[in]     no_midpoint     coarse edges without midpoint (parity_paths.h); their
 ///                                cells become 1, 2 or 3 quads
 void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vector2d>& coarse_points,
                     std::vector<int> fine_of_coarse,
-                    std::unordered_map<std::uint64_t, int>& edge_midpoint,
+                    const std::unordered_map<std::uint64_t, int>& edge_midpoint,
                     std::vector<Eigen::Vector2d>& fine_points, std::vector<Quad>& quads,
                     const std::unordered_set<std::uint64_t>& no_midpoint = {});
 
