@@ -32,7 +32,15 @@ struct FaceInfo {
   double side_score = 0;
   std::string side_why;
   std::vector<scheme::LoopCorner> corners;  // outer loop
+  // Composite cap: faces filling hole loops of this one (subcaps), and the
+  // indices of this face's loops that remain the cap boundary.
+  std::vector<int> subcaps;
+  std::vector<int> boundary_loops;
 };
+
+// Largest deviation from 180 degrees tolerated between a cap and a subcap
+// filling one of its hole loops (coplanar, or nearly so).
+constexpr double kSubcapFlatness = 15.0;
 
 enum class Role { Source, Target, Link };
 
@@ -204,6 +212,30 @@ std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& re
   return {};
 }
 
+// True when single-loop surface `face` of `volume_id` also bounds another
+// volume in which it fills a hole loop of another face: a subcap there,
+// meshed by its own surface scheme as part of that volume's composite
+// source cap, so it should not be this volume's (volume-meshed) target.
+bool subcap_elsewhere(const geom::Model& model, int volume_id, int face) {
+  const geom::Surface& s = model.surface(face);
+  if (s.loops.size() != 1) return false;
+  std::set<int> own;
+  for (const auto& use : s.loops.front().uses) own.insert(use.curve);
+  for (int w : s.volumes) {
+    if (w == volume_id) continue;
+    for (int h : model.surfaces_of(w)) {
+      if (h == face) continue;
+      const auto& loops = model.surface(h).loops;
+      for (size_t l = 1; l < loops.size(); ++l) {
+        std::set<int> hole;
+        for (const auto& use : loops[l].uses) hole.insert(use.curve);
+        if (hole == own) return true;
+      }
+    }
+  }
+  return false;
+}
+
 // -1, 0, 1: areas equal within a relative tolerance count as equal, so that
 // round-off (e.g. after a rigid transform) never decides.
 int compare_area(double x, double y) {
@@ -288,6 +320,71 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     }
   }
 
+  // Composite caps (Blacker 1996, sec. 4-5: a cap made of subcaps): a face
+  // with hole loops each filled by one face of the volume (one loop, exactly
+  // the hole's curves, coplanar across them) becomes one cap whose boundary
+  // is its unfilled loops; the subcaps touch no side.
+  SweepHints local_hints = hints;
+  {
+    std::set<int> absorbed;
+    for (FaceInfo& host : faces) {
+      if (host.loops < 2 || absorbed.count(host.id)) continue;
+      const auto& loops = model.surface(host.id).loops;
+      std::vector<int> keep;
+      std::vector<int> subcaps;
+      for (size_t l = 0; l < loops.size(); ++l) {
+        int filler = 0;
+        if (l > 0) {
+          std::set<int> hole;
+          for (const auto& use : loops[l].uses) hole.insert(use.curve);
+          for (const FaceInfo& g : faces) {
+            if (g.id == host.id || g.loops != 1 || !g.subcaps.empty() || g.curve_set != hole ||
+                absorbed.count(g.id)) {
+              continue;
+            }
+            bool flat = true;
+            for (int c : hole) {
+              const double a = cap_dihedral_degrees(model, volume_id, host.id, g.id, c);
+              flat = flat && std::abs(a - 180.0) <= kSubcapFlatness;
+            }
+            if (flat) {
+              filler = g.id;
+              break;
+            }
+          }
+        }
+        if (filler) {
+          subcaps.push_back(filler);
+        } else {
+          keep.push_back(static_cast<int>(l));
+        }
+      }
+      if (subcaps.empty()) continue;
+      host.subcaps = subcaps;
+      host.boundary_loops = keep;
+      host.loops = static_cast<int>(keep.size());
+      host.curves = 0;
+      host.curve_set.clear();
+      for (int l : keep) {
+        for (const auto& use : loops[static_cast<size_t>(l)].uses) host.curve_set.insert(use.curve);
+        host.curves += static_cast<int>(loops[static_cast<size_t>(l)].uses.size());
+      }
+      for (int g : subcaps) absorbed.insert(g);
+      for (int g : subcaps) {
+        // A hint naming a subcap names its composite cap.
+        for (int& id : local_hints.sources) id = id == g ? host.id : id;
+        if (std::find(hints.targets.begin(), hints.targets.end(), g) != hints.targets.end()) {
+          out.why = vname + ": hinted target surface " + std::to_string(g) +
+                    " is a subcap of surface " + std::to_string(host.id) +
+                    "; a composite cap can only be the source";
+          return out;
+        }
+      }
+    }
+    faces.erase(std::remove_if(faces.begin(), faces.end(),
+                               [&](const FaceInfo& f) { return absorbed.count(f.id) > 0; }),
+                faces.end());
+  }
   std::vector<int> forced;  // faces that cannot be sides are caps
   std::string forced_why;
   for (const auto& f : faces) {
@@ -316,12 +413,12 @@ Classification classify_faces(const geom::Model& model, int volume_id,
       const FaceInfo& b = faces[j];
       bool ok = true;
       for (int id : forced) ok = ok && (id == a.id || id == b.id);
-      for (int id : hints.sources) ok = ok && (id == a.id || id == b.id);
-      for (int id : hints.targets) ok = ok && (id == a.id || id == b.id);
+      for (int id : local_hints.sources) ok = ok && (id == a.id || id == b.id);
+      for (int id : local_hints.targets) ok = ok && (id == a.id || id == b.id);
       if (!ok) continue;
       double align = 0;
-      if (hints.direction && hints.direction->norm() > 0) {
-        const geom::Vec3 d = hints.direction->normalized();
+      if (local_hints.direction && local_hints.direction->norm() > 0) {
+        const geom::Vec3 d = local_hints.direction->normalized();
         for (const FaceInfo* f : {&a, &b}) {
           const geom::Surface& s = model.surface(f->id);
           const geom::Vec3 centre = 0.5 * (s.box.min + s.box.max);
@@ -356,14 +453,56 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     // Source: the hinted one, else the cap not better left to the other.
     const FaceInfo* src = better_source(*p.a, *p.b) ? p.a : p.b;
     const FaceInfo* tgt = src == p.a ? p.b : p.a;
-    const bool hinted = !hints.sources.empty() || !hints.targets.empty();
-    if ((!hints.sources.empty() && hints.sources.front() != src->id) ||
-        (!hints.targets.empty() && hints.targets.front() == src->id)) {
+    const bool hinted = !local_hints.sources.empty() || !local_hints.targets.empty();
+    // A face that is a subcap of a neighbour's composite cap is meshed by its
+    // surface scheme there: make it this volume's source, not its target.
+    if (subcap_elsewhere(model, volume_id, tgt->id) &&
+        !subcap_elsewhere(model, volume_id, src->id)) {
       std::swap(src, tgt);
+    }
+    if ((!local_hints.sources.empty() && local_hints.sources.front() != src->id) ||
+        (!local_hints.targets.empty() && local_hints.targets.front() == src->id)) {
+      std::swap(src, tgt);
+    }
+    // A composite cap is always the source: the target's mesh is the swept
+    // one, a single face (its subcaps are meshed by their own schemes, e.g.
+    // a face shared with a neighbouring volume).
+    if (!p.a->subcaps.empty() && !p.b->subcaps.empty()) {
+      if (first_failure.empty()) {
+        first_failure = "caps " + std::to_string(p.a->id) + " and " + std::to_string(p.b->id) +
+                        " both have subcaps; the target cap must be a single face";
+      }
+      continue;
+    }
+    const bool composite = !p.a->subcaps.empty() || !p.b->subcaps.empty();
+    if (composite) {
+      const FaceInfo* host = p.a->subcaps.empty() ? p.b : p.a;
+      if (src != host) {
+        if (!local_hints.targets.empty() && local_hints.targets.front() == host->id) {
+          if (first_failure.empty()) {
+            first_failure = "hinted target surface " + std::to_string(host->id) +
+                            " has subcaps; a composite cap can only be the source";
+          }
+          continue;
+        }
+        std::swap(src, tgt);
+      }
     }
     std::string scheme_why;
     std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why, tri_caps);
-    if (scheme.empty() && !hinted) {
+    std::vector<std::string> subcap_schemes;
+    for (int g : src->subcaps) {
+      if (scheme.empty()) break;
+      std::string why_g;
+      const std::string sg = cap_scheme_impl(model, registry, g, why_g, tri_caps);
+      if (sg.empty()) {
+        scheme.clear();
+        scheme_why = "subcap " + std::to_string(g) + " of source cap " + std::to_string(src->id) +
+                     ": " + why_g;
+      }
+      subcap_schemes.push_back(sg);
+    }
+    if (scheme.empty() && !hinted && !composite) {
       std::string other_why;
       const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why, tri_caps);
       if (!other.empty()) {
@@ -379,6 +518,9 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     out.source = src->id;
     out.target = tgt->id;
     out.source_scheme = scheme;
+    out.source_subcaps = src->subcaps;
+    out.source_subcap_schemes = subcap_schemes;
+    out.source_loops = src->boundary_loops;
     // Swap the side curve roles when the source is the second cap.
     if (src != p.a) {
       for (auto& s : sides) std::swap(s.source_curves, s.target_curves);
@@ -388,8 +530,12 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     out.score = 0.5 + 0.4 * std::clamp(worst, 0.0, 1.0);
     out.sides = std::move(sides);
     std::ostringstream w;
-    w << vname << ": one-barrel sweep from surface " << out.source << " (" << scheme
-      << ") to surface " << out.target << " along " << out.sides.size() << " side faces";
+    w << vname << ": one-barrel sweep from surface " << out.source << " (" << scheme << ")";
+    for (size_t k = 0; k < out.source_subcaps.size(); ++k) {
+      w << (k ? ", " : " with subcaps ") << out.source_subcaps[k] << " ("
+        << out.source_subcap_schemes[k] << ")";
+    }
+    w << " to surface " << out.target << " along " << out.sides.size() << " side faces";
     out.why = w.str();
     return out;
   }

@@ -2,6 +2,8 @@
 // into side faces (jointly submappable, linking the caps) and caps, with the
 // end caps' dihedral angles below pi. Part I accepts one barrel: exactly two
 // caps, the source and the target, every other face a side linking them.
+// The source cap may be composite: a face plus coplanar faces filling its
+// hole loops (subcaps touching no side, Blacker 1996, sec. 4-5).
 // A priori: never meshes (asks the registry's surface schemes applicable()).
 #pragma once
 
@@ -40,6 +42,16 @@ struct Classification {
   int source = 0;            ///< source cap surface
   int target = 0;            ///< target cap surface
   std::string source_scheme; ///< "map", "submap" or "pave"; "tri" with tri_caps
+  /// Composite source cap (Blacker 1996, sec. 4-5: a cap made of subcaps):
+  /// faces of the volume, coplanar with `source`, each filling one hole
+  /// loop of it and touching no side; meshed by their own surface schemes
+  /// (`source_subcap_schemes`, same order) and swept with the source as one
+  /// cap mesh. Empty for a single-face source cap.
+  std::vector<int> source_subcaps;
+  std::vector<std::string> source_subcap_schemes;
+  /// Indices of the source surface's loops that bound the cap (the loops
+  /// not filled by subcaps); empty: all of them.
+  std::vector<int> source_loops;
   std::vector<SideFace> sides;  ///< ascending surface id
 };
 

@@ -159,6 +159,9 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   }
   for (const SideFace& side : c.sides) roles[side.surface] = "submap";
   roles[c.source] = c.source_scheme;
+  for (size_t k = 0; k < c.source_subcaps.size(); ++k) {
+    roles[c.source_subcaps[k]] = c.source_subcap_schemes[k];
+  }
   roles[c.target] = scheme::kMeshedByVolume;
   return roles;
 }
@@ -204,6 +207,12 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
     side_list += (side_list.empty() ? "" : ", ") + std::to_string(side.surface);
   }
   barrel_in.upper_loops = loop_nodes(model, db, vid, c.source);
+  if (!c.source_loops.empty()) {
+    // A composite source cap: its boundary is the loops not filled by subcaps.
+    std::vector<std::vector<int>> kept;
+    for (int l : c.source_loops) kept.push_back(barrel_in.upper_loops[static_cast<size_t>(l)]);
+    barrel_in.upper_loops = std::move(kept);
+  }
   std::vector<std::vector<int>> target_loops = loop_nodes(model, db, vid, c.target);
   for (const auto& loop : target_loops) {
     barrel_in.stop_nodes.insert(barrel_in.stop_nodes.end(), loop.begin(), loop.end());
@@ -226,12 +235,21 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
   }
 
   // Local cap nodes: rib starts in rib order, then interior source nodes.
-  const mesh::SurfaceMeshData& cap = meshed(db, vid, c.source, "source");
+  // A composite source cap is the union of its faces' meshes (they share the
+  // nodes of the filled hole loops).
+  std::vector<int> cap_faces{c.source};
+  cap_faces.insert(cap_faces.end(), c.source_subcaps.begin(), c.source_subcaps.end());
+  std::vector<const mesh::SurfaceMeshData*> cap_meshes;
+  size_t cap_elements = 0;
+  for (int f : cap_faces) {
+    cap_meshes.push_back(&meshed(db, vid, f, f == c.source ? "source" : "source subcap"));
+    cap_elements += cap_meshes.back()->quads.size() + cap_meshes.back()->tris.size();
+  }
   SweepInput in;
   in.layers = barrel.layers;
   in.boundary = static_cast<int>(barrel.ribs.size());
   std::unordered_map<int, int> local;
-  local.reserve(cap.quads.size() + cap.tris.size() + barrel.ribs.size());
+  local.reserve(cap_elements + barrel.ribs.size());
   std::vector<int> cap_global;
   for (const auto& loop : barrel_in.upper_loops) {
     in.loop_starts.push_back(cap_global.size());
@@ -247,16 +265,19 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
   };
   // Source elements are oriented with the natural normal; the sweep wants
   // them counter-clockwise about the direction into the volume.
-  const bool outward = model.sense_in(c.source, vid) == geom::Sense::Forward;
-  for (const auto& q : cap.quads) {
-    mesh::Quad l{local_of(q[0]), local_of(q[1]), local_of(q[2]), local_of(q[3])};
-    if (outward) std::swap(l[1], l[3]);
-    in.quads.push_back(l);
-  }
-  for (const auto& t : cap.tris) {
-    mesh::Tri l{local_of(t[0]), local_of(t[1]), local_of(t[2])};
-    if (outward) std::swap(l[1], l[2]);
-    in.tris.push_back(l);
+  for (size_t f = 0; f < cap_faces.size(); ++f) {
+    const mesh::SurfaceMeshData& cap = *cap_meshes[f];
+    const bool outward = model.sense_in(cap_faces[f], vid) == geom::Sense::Forward;
+    for (const auto& q : cap.quads) {
+      mesh::Quad l{local_of(q[0]), local_of(q[1]), local_of(q[2]), local_of(q[3])};
+      if (outward) std::swap(l[1], l[3]);
+      in.quads.push_back(l);
+    }
+    for (const auto& t : cap.tris) {
+      mesh::Tri l{local_of(t[0]), local_of(t[1]), local_of(t[2])};
+      if (outward) std::swap(l[1], l[2]);
+      in.tris.push_back(l);
+    }
   }
   in.cap_nodes = static_cast<int>(cap_global.size());
   in.source.reserve(cap_global.size());

@@ -1,0 +1,254 @@
+// Cooper one-to-one with a composite source cap (Blacker 1996, sec. 4-5: one
+// barrel whose cap consists of subcaps): a cap face with a hole loop filled
+// by a coplanar face of the same volume (e.g. the face under a boss after a
+// webcut, or the imprint of a smaller brick on a larger one). The subcaps
+// are meshed by their own surface schemes, the union is swept to the single
+// target face; the composite side is always the source.
+#include "support/mesh_checks.h"
+
+#include "framework/geometry/occ/workbench.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+#include "schemes/cooper/classify_faces.h"
+#include "schemes/cooper/cooper_scheme.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+
+namespace cooperage::cooper {
+namespace {
+
+std::unique_ptr<scheme::Registry> builtin() {
+  auto r = std::make_unique<scheme::Registry>();
+  register_builtin_schemes(*r);
+  return r;
+}
+
+io::MeshSettings sized(double size) {
+  io::MeshSettings s;
+  s.size = size;
+  return s;
+}
+
+struct Summary {
+  double volume = 0;
+  double min_sj = 1;
+  size_t hexes = 0;
+};
+
+// Conformity over all volumes: every hex face used once or twice; the faces
+// used once are exactly the quads of surfaces bounding one volume; the quads
+// of a surface between two volumes are used twice; no duplicate nodes.
+Summary check_mesh(const geom::Model& model, const mesh::MeshDB& db) {
+  Summary s;
+  for (const auto& [id, vol] : db.volumes()) {
+    EXPECT_TRUE(vol.wedges.empty());
+    for (const auto& h : vol.hexes) {
+      const auto p = testing::hex_points(db, h);
+      s.volume += testing::hex_volume(p);
+      s.min_sj = std::min(s.min_sj, testing::hex_scaled_jacobian(p));
+      ++s.hexes;
+    }
+  }
+  const auto faces = testing::hex_face_counts(db);
+  size_t once = 0;
+  for (const auto& [key, n] : faces) {
+    EXPECT_LE(n, 2);
+    if (n == 1) ++once;
+  }
+  size_t boundary_quads = 0;
+  for (const auto& [sid, m] : db.surfaces()) {
+    const int expected = static_cast<int>(model.surface(sid).volumes.size()) == 2 ? 2 : 1;
+    for (const auto& q : m.quads) {
+      auto it = faces.find(testing::face_key(q));
+      if (it == faces.end()) {
+        ADD_FAILURE() << "a quad of surface " << sid << " is no hex face";
+        continue;
+      }
+      EXPECT_EQ(it->second, expected) << "surface " << sid;
+      if (expected == 1) ++boundary_quads;
+    }
+  }
+  EXPECT_EQ(once, boundary_quads);
+  EXPECT_EQ(testing::duplicate_node_pairs(db, 1e-9), 0);
+  EXPECT_GT(s.min_sj, 0.0);
+  return s;
+}
+
+// The surface of `volume` with the given number of loops (the first one).
+int surface_with_loops(const geom::Model& model, int volume, size_t loops) {
+  for (int id : model.surfaces_of(volume)) {
+    if (model.surface(id).loops.size() == loops) return id;
+  }
+  return 0;
+}
+
+// The surface shared by volumes 1 and 2.
+int shared_surface(const geom::Model& model) {
+  for (const auto& s : model.surfaces()) {
+    if (s.volumes.size() == 2) return s.id;
+  }
+  return 0;
+}
+
+// Cylinder r 2 h 3 with a coaxial boss r 1 h 1.5, webcut at the boss's base:
+// volume 1's top cap is the shoulder annulus plus the disk under the boss.
+geom::Model webcut_boss() {
+  occ::Workbench wb;
+  wb.cylinder("body", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
+  wb.cylinder("boss", {0, 0, 3}, {0, 0, 1}, 1.0, 1.5);
+  wb.fuse("part", {"body", "boss"});
+  wb.webcut("part", {0, 0, 3}, {0, 0, 1});
+  return wb.build_model();
+}
+
+// A 4 x 4 x 1 brick below a 2 x 2 x 1 brick inside its top face (imprinted
+// and merged): volume 1's top cap is a face with a square hole plus the
+// shared square.
+geom::Model touching_bricks() {
+  occ::Workbench wb;
+  wb.brick("base", {0, 0, 0}, {4, 4, 1});
+  wb.brick("top", {1, 1, 1}, {2, 2, 1});
+  return wb.build_model();
+}
+
+TEST(CooperCompositeCaps, WebcutBossBodyClassifiesWithASubcap) {
+  const geom::Model model = webcut_boss();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  const auto registry = builtin();
+  const int annulus = surface_with_loops(model, 1, 2);
+  const int disk = shared_surface(model);
+  ASSERT_NE(annulus, 0);
+  ASSERT_NE(disk, 0);
+  const Classification c = classify_faces(model, 1, *registry);
+  ASSERT_TRUE(c.ok) << c.why;
+  EXPECT_EQ(c.source, annulus);
+  EXPECT_EQ(c.source_subcaps, std::vector<int>{disk});
+  ASSERT_EQ(c.source_subcap_schemes.size(), 1u);
+  EXPECT_FALSE(c.source_subcap_schemes[0].empty());
+  EXPECT_EQ(c.source_loops, std::vector<int>{0});
+  EXPECT_EQ(c.sides.size(), 1u);
+  EXPECT_NE(c.why.find("subcaps"), std::string::npos) << c.why;
+  // The roles mesh the subcap with its own surface scheme.
+  const scheme::SurfaceRoles roles =
+      registry->volume_scheme("cooper")->roles(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_EQ(roles.at(disk), c.source_subcap_schemes[0]);
+  EXPECT_EQ(roles.at(annulus), c.source_scheme);
+  EXPECT_EQ(roles.at(c.target), scheme::kMeshedByVolume);
+}
+
+TEST(CooperCompositeCaps, WebcutBossMeshesConformally) {
+  const geom::Model model = webcut_boss();
+  const auto registry = builtin();
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  const double exact = model.volume(1).volume + model.volume(2).volume;
+  EXPECT_NEAR(s.volume, exact, 0.02 * exact);  // chords of the circles
+  EXPECT_GE(s.min_sj, 0.3);
+  EXPECT_EQ(r.mesh.volumes().size(), 2u);
+  std::printf("[cooper composite] webcut boss: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
+              s.min_sj);
+}
+
+TEST(CooperCompositeCaps, TouchingBricksFlipSoTheCompositeIsTheSource) {
+  const geom::Model model = touching_bricks();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  const auto registry = builtin();
+  const int holed = surface_with_loops(model, 1, 2);
+  const int square = shared_surface(model);
+  ASSERT_NE(holed, 0);
+  ASSERT_NE(square, 0);
+  const Classification c = classify_faces(model, 1, *registry);
+  ASSERT_TRUE(c.ok) << c.why;
+  // The bottom face ties with the composite (one loop, four curves, same
+  // area) and has the lower id, yet the composite is the source.
+  EXPECT_EQ(c.source, holed);
+  EXPECT_EQ(c.source_subcaps, std::vector<int>{square});
+  EXPECT_EQ(c.sides.size(), 4u);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, 16.0 + 4.0, 20.0 * 1e-9);
+  EXPECT_GE(s.min_sj, 0.99);
+  std::printf("[cooper composite] touching bricks: %zu hexes, min scaled Jacobian %.4f\n",
+              s.hexes, s.min_sj);
+}
+
+TEST(CooperCompositeCaps, HintsNamingTheSubcap) {
+  const geom::Model model = touching_bricks();
+  const auto registry = builtin();
+  const int holed = surface_with_loops(model, 1, 2);
+  const int square = shared_surface(model);
+  // A source hint naming the subcap names its composite cap.
+  SweepHints src;
+  src.sources = {square};
+  const Classification a = classify_faces(model, 1, *registry, src);
+  ASSERT_TRUE(a.ok) << a.why;
+  EXPECT_EQ(a.source, holed);
+  // The composite cap cannot be the target.
+  SweepHints tgt;
+  tgt.targets = {square};
+  const Classification b = classify_faces(model, 1, *registry, tgt);
+  EXPECT_FALSE(b.ok);
+  EXPECT_NE(b.why.find("subcap"), std::string::npos) << b.why;
+  SweepHints host;
+  host.targets = {holed};
+  const Classification h = classify_faces(model, 1, *registry, host);
+  EXPECT_FALSE(h.ok);
+  EXPECT_NE(h.why.find("composite cap can only be the source"), std::string::npos) << h.why;
+}
+
+TEST(CooperCompositeCaps, TwoSubcapsOnOneCap) {
+  // A 6 x 4 x 1 brick with two small bricks on its top face: one composite
+  // cap with two subcaps.
+  occ::Workbench wb;
+  wb.brick("base", {0, 0, 0}, {6, 4, 1});
+  wb.brick("a", {1, 1, 1}, {1.5, 2, 1});
+  wb.brick("b", {3.5, 1, 1}, {2, 2, 1});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 3u);
+  const auto registry = builtin();
+  const Classification c = classify_faces(model, 1, *registry);
+  ASSERT_TRUE(c.ok) << c.why;
+  EXPECT_EQ(c.source, surface_with_loops(model, 1, 3));
+  EXPECT_EQ(c.source_subcaps.size(), 2u);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, 24.0 + 3.0 + 4.0, 31.0 * 1e-9);
+  EXPECT_GE(s.min_sj, 0.99);
+}
+
+TEST(CooperCompositeCaps, SubcapsOnBothEndsAreRejectedWithAReason) {
+  // One small brick on top, one below: both caps of the base are composite;
+  // the target must be a single face (not supported in the one-to-one path).
+  occ::Workbench wb;
+  wb.brick("base", {0, 0, 0}, {6, 4, 1});
+  wb.brick("a", {1, 1, 1}, {1.5, 2, 1});
+  wb.brick("b", {3.5, 1, -1}, {2, 2, 1});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const Classification c = classify_faces(model, 1, *registry);
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.why.find("both have subcaps"), std::string::npos) << c.why;
+}
+
+TEST(CooperCompositeCaps, ASubcapOfAnotherVolumeAlone) {
+  // Volume 2 (the boss) is a plain one-to-one sweep: no subcaps.
+  const geom::Model model = webcut_boss();
+  const auto registry = builtin();
+  const Classification c = classify_faces(model, 2, *registry);
+  ASSERT_TRUE(c.ok) << c.why;
+  EXPECT_TRUE(c.source_subcaps.empty());
+  EXPECT_TRUE(c.source_loops.empty());
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
