@@ -4,6 +4,7 @@
 // webcut, or the imprint of a smaller brick on a larger one). The subcaps
 // are meshed by their own surface schemes, the union is swept to the single
 // target face; the composite side is always the source.
+#include "support/hex_mesh_check.h"
 #include "support/mesh_checks.h"
 
 #include "framework/geometry/occ/workbench.h"
@@ -33,49 +34,10 @@ io::MeshSettings sized(double size) {
   return s;
 }
 
-struct Summary {
-  double volume = 0;
-  double min_sj = 1;
-  size_t hexes = 0;
-};
+using Summary = testing::HexMeshSummary;
 
-// Conformity over all volumes: every hex face used once or twice; the faces
-// used once are exactly the quads of surfaces bounding one volume; the quads
-// of a surface between two volumes are used twice; no duplicate nodes.
 Summary check_mesh(const geom::Model& model, const mesh::MeshDB& db) {
-  Summary s;
-  for (const auto& [id, vol] : db.volumes()) {
-    EXPECT_TRUE(vol.wedges.empty());
-    for (const auto& h : vol.hexes) {
-      const auto p = testing::hex_points(db, h);
-      s.volume += testing::hex_volume(p);
-      s.min_sj = std::min(s.min_sj, testing::hex_scaled_jacobian(p));
-      ++s.hexes;
-    }
-  }
-  const auto faces = testing::hex_face_counts(db);
-  size_t once = 0;
-  for (const auto& [key, n] : faces) {
-    EXPECT_LE(n, 2);
-    if (n == 1) ++once;
-  }
-  size_t boundary_quads = 0;
-  for (const auto& [sid, m] : db.surfaces()) {
-    const int expected = static_cast<int>(model.surface(sid).volumes.size()) == 2 ? 2 : 1;
-    for (const auto& q : m.quads) {
-      auto it = faces.find(testing::face_key(q));
-      if (it == faces.end()) {
-        ADD_FAILURE() << "a quad of surface " << sid << " is no hex face";
-        continue;
-      }
-      EXPECT_EQ(it->second, expected) << "surface " << sid;
-      if (expected == 1) ++boundary_quads;
-    }
-  }
-  EXPECT_EQ(once, boundary_quads);
-  EXPECT_EQ(testing::duplicate_node_pairs(db, 1e-9), 0);
-  EXPECT_GT(s.min_sj, 0.0);
-  return s;
+  return testing::check_hex_mesh(model, db);
 }
 
 // The surface of `volume` with the given number of loops (the first one).
