@@ -1,6 +1,7 @@
 // The pipeline end to end on models from the CAD backend, checked against
 // geometry: counts, volumes, conformity, transformation invariance.
 #include "support/mesh_checks.h"
+#include "support/rigid_motion.h"
 
 #include "framework/core/error.h"
 
@@ -132,18 +133,12 @@ TEST(Mesher, TwoMergedBricksShareTheNodesOfTheirCommonFace) {
 }
 
 TEST(Mesher, RigidTransformGivesTheTransformedMesh) {
-  std::mt19937 rng(2024);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
-  const double angle = 180 * u(rng);
-  const Vec3 shift(5 * u(rng), 5 * u(rng), 5 * u(rng));
-
+  const auto motion = testing::RigidMotion::random(2024);
   auto build = [&](bool moved) {
     occ::Workbench bench;
     bench.revolve("q", {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}}, {0, 0, 0}, {0, 0, 1}, 90);
     if (moved) {
-      bench.rotate("q", {0, 0, 0}, axis, angle);
-      bench.translate("q", shift);
+      motion.apply(bench, "q");
     }
     return bench.build_model();
   };
@@ -153,12 +148,7 @@ TEST(Mesher, RigidTransformGivesTheTransformedMesh) {
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);  // same connectivity
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle * M_PI / 180, axis).toRotationMatrix();
-  double worst = 0;
-  for (size_t n = 0; n < r0.mesh.node_count(); ++n) {
-    const Vec3 expected = R * r0.mesh.node(static_cast<int>(n)) + shift;
-    worst = std::max(worst, (expected - r1.mesh.node(static_cast<int>(n))).norm());
-  }
+  const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
   EXPECT_LT(worst, 1e-9 * 10);  // 1e-9 relative to the model size (~10)
 }
 

@@ -2,6 +2,7 @@
 // holes, a curved axis, differently sized caps, orientation insensitivity,
 // barrel uniqueness, rejections, applicable() both ways and roles().
 #include "support/mesh_checks.h"
+#include "support/rigid_motion.h"
 
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
@@ -235,17 +236,12 @@ int end_face_at_angle_zero(const geom::Model& model) {
 }
 
 TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
-  std::mt19937 rng(1996);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
-  const double angle = 180 * u(rng);
-  const Vec3 shift(5 * u(rng), 5 * u(rng), 5 * u(rng));
+  const auto motion = testing::RigidMotion::random(1996);
   auto build = [&](bool moved) {
     occ::Workbench wb;
     wb.revolve("q", {{2, 0, 0}, {4, 0, 0}, {4, 0, 2}, {2, 0, 2}}, {0, 0, 0}, {0, 0, 1}, 90);
     if (moved) {
-      wb.rotate("q", {0, 0, 0}, axis, angle);
-      wb.translate("q", shift);
+      motion.apply(wb, "q");
     }
     return wb.build_model();
   };
@@ -263,12 +259,7 @@ TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle * M_PI / 180, axis).toRotationMatrix();
-  double worst = 0;
-  for (size_t n = 0; n < r0.mesh.node_count(); ++n) {
-    const Vec3 expected = R * r0.mesh.node(static_cast<int>(n)) + shift;
-    worst = std::max(worst, (expected - r1.mesh.node(static_cast<int>(n))).norm());
-  }
+  const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
   EXPECT_LT(worst, 1e-9 * 10);  // 1e-9 relative to the model size (~10)
 }
 

@@ -4,6 +4,7 @@
 // independent of the face order; Fig. 3a rejected and meshed after a webcut.
 #include "support/hex_mesh_check.h"
 #include "support/mesh_checks.h"
+#include "support/rigid_motion.h"
 
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
@@ -185,17 +186,12 @@ TEST(CooperMany, RoundBossOnCylinderWithPave) {
 }
 
 TEST(CooperMany, RigidTransformGivesTheTransformedMesh) {
-  std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const Vec3 axis = Vec3(u(rng), u(rng), u(rng)).normalized();
-  const double angle = 180 * u(rng);
-  const Vec3 shift(5 * u(rng), 5 * u(rng), 5 * u(rng));
+  const auto motion = testing::RigidMotion::random(2026);
   auto build = [&](bool moved) {
     occ::Workbench wb;
     square_boss(wb);
     if (moved) {
-      wb.rotate("part", {0, 0, 0}, axis, angle);
-      wb.translate("part", shift);
+      motion.apply(wb, "part");
     }
     return wb.build_model();
   };
@@ -205,12 +201,7 @@ TEST(CooperMany, RigidTransformGivesTheTransformedMesh) {
   const auto r1 = pipeline::mesh_model(m1, sized(0.25), *registry, selector::mesh_options());
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle * M_PI / 180, axis).toRotationMatrix();
-  double worst = 0;
-  for (size_t n = 0; n < r0.mesh.node_count(); ++n) {
-    const Vec3 expected = R * r0.mesh.node(static_cast<int>(n)) + shift;
-    worst = std::max(worst, (expected - r1.mesh.node(static_cast<int>(n))).norm());
-  }
+  const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
   EXPECT_LT(worst, 1e-8);
 }
 
