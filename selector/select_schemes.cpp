@@ -226,27 +226,6 @@ class Selector {
     selection_.surfaces.push_back(std::move(choice));
   }
 
-  // Curves named by an infeasibility message: "... (curves 1, 3, 7)".
-  static std::set<int> conflict_curves(const std::string& message) {
-    std::set<int> ids;
-    const auto at = message.rfind("(curves ");
-    if (at == std::string::npos) return ids;
-    std::string list = message.substr(at + 8);
-    size_t pos = 0;
-    while (pos < list.size()) {
-      size_t used = 0;
-      try {
-        ids.insert(std::stoi(list.substr(pos), &used));
-      } catch (const std::exception&) {
-        break;
-      }
-      pos += used;
-      while (pos < list.size() && (list[pos] == ',' || list[pos] == ' ')) ++pos;
-      if (pos < list.size() && list[pos] == ')') break;
-    }
-    return ids;
-  }
-
   // The automatic surface choice to relax for a conflict on `curves`: the
   // lowest-scoring one that has a next candidate; nullptr when none.
   Choice* relaxable(const std::set<int>& curves) {
@@ -278,10 +257,8 @@ class Selector {
         intervals::solve(pipeline::build_interval_problem(model_, registry_, selection_.plan(),
                                                           settings_));
         return;
-      } catch (const MeshingError& e) {
-        if (e.code() != ErrorCode::Infeasible) throw;
-        Choice* c = round < options_.max_relaxations ? relaxable(conflict_curves(e.message()))
-                                                     : nullptr;
+      } catch (const intervals::IntervalConflict& e) {
+        Choice* c = round < options_.max_relaxations ? relaxable(e.curves()) : nullptr;
         if (!c) {
           throw MeshingError(ErrorCode::Infeasible, e.entity(),
                              e.message() +

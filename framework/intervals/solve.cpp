@@ -258,8 +258,8 @@ std::vector<bool> deletion_filter(const Component& comp, const std::vector<Item>
   }
   std::string curves;
   for (int id : curve_ids) curves += (curves.empty() ? "" : ", ") + std::to_string(id);
-  throw MeshingError(ErrorCode::Infeasible,
-                     "interval constraints cannot all hold: " + list + " (curves " + curves + ")");
+  throw IntervalConflict("interval constraints cannot all hold: " + list + " (curves " + curves + ")",
+                         std::move(curve_ids));
 }
 
 /// A cheap feasible start, if there is one of this form: every free column

@@ -55,10 +55,28 @@
 #pragma once
 
 #include <map>
+#include <set>
+#include <string>
+#include <utility>
 
+#include "framework/core/error.h"
 #include "framework/intervals/interval_problem.h"
 
 namespace cooperage::intervals {
+
+/// The Infeasible error of solve(), carrying the curves of the irreducible
+/// conflict as data, so callers (the selector's relaxation) need not read the
+/// message text.
+class IntervalConflict : public MeshingError {
+ public:
+  IntervalConflict(const std::string& message, std::set<int> curves)
+      : MeshingError(ErrorCode::Infeasible, message), curves_(std::move(curves)) {}
+  /// Ids of the curves the conflicting constraints and bounds involve.
+  const std::set<int>& curves() const { return curves_; }
+
+ private:
+  std::set<int> curves_;
+};
 
 struct SolveOptions {
   double soft_weight = 10.0;     ///< objective weight of Soft curves (Default = 1)
@@ -80,8 +98,10 @@ struct IntervalSolution {
 /// \param[in] options weights and solver limits
 /// \return counts satisfying every constraint, minimising the cost above
 /// \throws MeshingError(InvalidInput) for a constraint naming an unknown curve;
-///         MeshingError(Infeasible) naming the curves and constraints of an
-///         infeasible component (the first one, by smallest curve id).
+///         IntervalConflict (code Infeasible) naming the curves and
+///         constraints of an infeasible component (the first one, by
+///         smallest curve id); Infeasible also when CBC's time limit ends
+///         without a solution.
 IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& options = {});
 
 }  // namespace cooperage::intervals

@@ -225,6 +225,12 @@ TEST(IntervalSolve, InfeasibleHardCountsNameTheConflict) {
   EXPECT_TRUE(contains(message, "curve 3 fixed at 6 (hard)")) << message;
   EXPECT_FALSE(contains(message, "surface 4")) << message;
   EXPECT_TRUE(contains(message, "(curves 1, 3)")) << message;
+  try {
+    solve(p);
+    ADD_FAILURE() << "expected an IntervalConflict";
+  } catch (const IntervalConflict& e) {
+    EXPECT_EQ(e.curves(), (std::set<int>{1, 3}));
+  }
 }
 
 TEST(IntervalSolve, InfeasibleParityAndBoundsAreNarrowed) {
