@@ -61,9 +61,10 @@ int run_journal(const std::string& file, int threads, bool quiet) {
   return finish_run(io::read_journal(file), 3, threads, quiet);
 }
 
-// `cooperage mesh MODEL --size S -o OUT`: a journal built on the fly.
+// `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]`: a
+// journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             bool no_imprint, int threads, bool quiet) {
+             bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   io::Job job;
   job.file = model;
@@ -74,6 +75,17 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   job.imprint_merge = !no_imprint;
   job.mesh = io::MeshSettings{};
   job.mesh->size = size;
+  if (elements != io::ElementKind::Hex) {
+    // Volume settings need the volume ids: the model is read once more here.
+    const geom::Model m = pipeline::load_any(model, !no_imprint);
+    for (const geom::Volume& v : m.volumes()) {
+      io::VolumeSetting setting;
+      setting.id = v.id;
+      setting.elements = elements;
+      setting.where = {"command line", 0, "--elements"};
+      job.mesh->volumes.push_back(setting);
+    }
+  }
   job.exports.push_back({output, {"command line", 0, "-o"}});
   return finish_run(job, dim, threads, quiet);
 }
@@ -112,6 +124,7 @@ int main(int argc, char** argv) {
   double mesh_size = 0;
   int mesh_dim = 3;
   bool mesh_no_imprint = false;
+  std::string mesh_elements = "hex";
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
   mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
   mesh->add_option("--size", mesh_size, "Element size, in the model's length unit")->required();
@@ -119,6 +132,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({2, 3}));
   mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
+  mesh->add_option("--elements", mesh_elements,
+                   "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
+                   "caps swept into hexes and wedges")
+      ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
   mesh->add_option("--threads", threads, "Worker threads (0: all cores)")
       ->check(CLI::NonNegativeNumber);
   mesh->add_flag("-q,--quiet", quiet, "No progress output");
@@ -161,7 +178,11 @@ int main(int argc, char** argv) {
                            plan_json, std::cout);
     }
     if (*mesh) {
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, threads, quiet);
+      const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
+                                       : mesh_elements == "mixed" ? io::ElementKind::Mixed
+                                                                  : io::ElementKind::Hex;
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, elements,
+                      threads, quiet);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

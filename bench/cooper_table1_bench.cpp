@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 namespace {
@@ -104,30 +105,53 @@ BENCHMARK(BM_BossCutIntoOneToOne)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMill
 
 namespace {
 
-// Wedges per second: the plate with three round holes in wedge mode (tri
-// source cap, cooper one-to-one) at sizes 0.25, 0.125, 0.0625.
-void BM_WedgeSweep(benchmark::State& state) {
-  const io::Job job =
-      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/plate_wedges.xml");
+// Elements per second of a journal at its size / range(0), with volume 1's
+// element kind set when `kind` is given; counters for hexes and wedges.
+void run_elements(benchmark::State& state, const char* example,
+                  std::optional<io::ElementKind> kind = std::nullopt) {
+  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/" + example);
   const geom::Model model = pipeline::build_geometry(job);
   io::MeshSettings settings = *job.mesh;
   settings.size = *settings.size / static_cast<double>(state.range(0));
+  if (kind) {
+    io::VolumeSetting v;
+    v.id = 1;
+    v.elements = *kind;
+    settings.volumes = {v};
+  }
   // The element kind reaches cooper through the registration options.
   scheme::Registry registry;
   register_builtin_schemes(registry, builtin_options(settings));
   const pipeline::MeshOptions options = selector::mesh_options(3, 1);
-  size_t wedges = 0;
-  double min_sj = 0;
+  size_t wedges = 0, hexes = 0;
+  double min_sj = 1;
   for (auto _ : state) {
     const auto r = pipeline::mesh_model(model, settings, registry, options);
     wedges = r.mesh.wedge_count();
-    min_sj = r.quality.blocks.front().find("scaled_jacobian")->min;
+    hexes = r.mesh.hex_count();
+    min_sj = 1;
+    for (const auto& block : r.quality.blocks) min_sj = std::min(min_sj, block.find("scaled_jacobian")->min);
   }
   state.counters["wedges"] = static_cast<double>(wedges);
-  state.counters["wedges_per_s"] =
-      benchmark::Counter(static_cast<double>(wedges), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["hexes"] = static_cast<double>(hexes);
+  state.counters["elements_per_s"] = benchmark::Counter(static_cast<double>(wedges + hexes),
+                                                        benchmark::Counter::kIsIterationInvariantRate);
   state.counters["min_SJ"] = min_sj;
 }
+
+// Wedges per second: the plate with three round holes in wedge mode (tri
+// source cap, cooper one-to-one) at sizes 0.25, 0.125, 0.0625.
+void BM_WedgeSweep(benchmark::State& state) { run_elements(state, "plate_wedges.xml"); }
 BENCHMARK(BM_WedgeSweep)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
+
+// Many-to-one in wedge mode: the cylinder with a boss (two tri cap stacks).
+void BM_WedgeManyToOne(benchmark::State& state) {
+  run_elements(state, "cylinder_boss.xml", io::ElementKind::Wedge);
+}
+BENCHMARK(BM_WedgeManyToOne)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// Mixed mode: the 20-degree blade (quad-dominant cap, hexes and wedges).
+void BM_MixedSweep(benchmark::State& state) { run_elements(state, "sharp_corner_mixed.xml"); }
+BENCHMARK(BM_MixedSweep)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
 
 }  // namespace

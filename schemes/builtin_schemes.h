@@ -13,7 +13,7 @@ struct BuiltinOptions {
   /// Hard vertex classifications for submap (journal <vertex_type>).
   std::vector<io::VertexTypeSetting> vertex_types;
   /// Volume settings: cooper takes their sweep hints (sources, targets,
-  /// direction) and element kinds (elements="wedge").
+  /// direction) and element kinds (elements="wedge" / "mixed").
   std::vector<io::VolumeSetting> volumes;
 };
 
@@ -21,8 +21,9 @@ struct BuiltinOptions {
 BuiltinOptions builtin_options(const io::MeshSettings& settings);
 
 /// Surface schemes, most preferred first: map, submap, pave, tri (triangles,
-/// only when pinned). Volume schemes: map, then cooper (which asks the registry for submap/map/pave by name, so the
-/// registry must outlive it).
+/// only when pinned or a cooper role), quad_dominant (quads and triangles,
+/// likewise). Volume schemes: map, then cooper (which asks the registry for
+/// submap/map/pave/tri/quad_dominant by name, so the registry must outlive it).
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options = {});
 
 }  // namespace cooperage

@@ -115,8 +115,9 @@ class Selector {
   void choose_volume(int id) {
     const scheme::VolumeView view{model_, id, nullptr};
     const auto* pin = find_setting(settings_.volumes, id);
-    // elements="wedge": only schemes that make wedges are candidates.
-    const bool wedge = pin && pin->elements == io::ElementKind::Wedge;
+    // elements="wedge" / "mixed": only schemes that make wedges are candidates.
+    const bool wedge = pin && pin->elements != io::ElementKind::Hex;
+    const std::string kind = pin && pin->elements == io::ElementKind::Mixed ? "mixed" : "wedge";
     std::vector<const scheme::VolumeScheme*> schemes;
     for (const scheme::VolumeScheme* s : registry_.volume_schemes()) {
       if (!wedge || s->makes_wedges()) {
@@ -124,7 +125,7 @@ class Selector {
       } else if (pin->scheme == s->name()) {
         throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
                            "volume scheme \"" + pin->scheme + "\" (" + place(pin->where) +
-                               ") makes hexes only, but elements=\"wedge\"");
+                               ") makes hexes only, but elements=\"" + kind + "\"");
       }
     }
     Choice choice{3, id, evaluate(schemes, view), {}, {}, false, false};
@@ -147,7 +148,7 @@ class Selector {
       order = ranked(choice.candidates);
       if (order.empty()) {
         throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
-                           std::string(wedge ? "no wedge scheme" : "no hex scheme") +
+                           (wedge ? "no " + kind + " scheme" : std::string("no hex scheme")) +
                                " applies (" + all_reasons(choice.candidates) + ")");
       }
     }

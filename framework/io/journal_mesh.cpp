@@ -77,8 +77,9 @@ SurfaceSetting read_surface(const Element& e) {
   SurfaceSetting s;
   s.id = e.required_integer("id", 1);
   s.sizing = read_sizing(e, false);
-  static const char* const kSchemes[] = {"auto", "map", "submap", "pave", "tri"};
-  if (auto i = e.choice("scheme", {"auto", "map", "submap", "pave", "tri"})) s.scheme = kSchemes[*i];
+  static const char* const kSchemes[] = {"auto", "map", "submap", "pave", "tri", "quad_dominant"};
+  if (auto i = e.choice("scheme", {"auto", "map", "submap", "pave", "tri", "quad_dominant"}))
+    s.scheme = kSchemes[*i];
   if (!s.sizing.size && !e.has("scheme")) e.fail("sets nothing; give size or scheme");
   s.where = e.where();
   return s;

@@ -36,14 +36,10 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
     }
     for (int s : v.sources) check_id(v.where, "surface", s, model.surfaces().size());
     for (int s : v.targets) check_id(v.where, "surface", s, model.surfaces().size());
-    if (v.elements == io::ElementKind::Mixed) {
-      throw MeshingError(ErrorCode::NotSupported,
-                         at(v.where) + "elements=\"mixed\" (a wedge/hex mix) is not supported "
-                                       "in this release; use \"hex\" or \"wedge\"");
-    }
-    if (v.elements == io::ElementKind::Wedge && v.scheme == "map") {
+    if (v.elements != io::ElementKind::Hex && v.scheme == "map") {
+      const char* kind = v.elements == io::ElementKind::Wedge ? "wedge" : "mixed";
       throw MeshingError(ErrorCode::InvalidInput,
-                         at(v.where) + "elements=\"wedge\" with scheme=\"map\": a volume map "
+                         at(v.where) + "elements=\"" + kind + "\" with scheme=\"map\": a volume map "
                                        "makes hexes only; use scheme=\"cooper\" or \"auto\"");
     }
   }

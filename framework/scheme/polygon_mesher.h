@@ -6,6 +6,8 @@
 // paving algorithm is currently used"). The pave scheme's 2D core
 // (schemes/pave/pave_2d.h, pave::pave_2d) is the intended implementation;
 // the registration code wraps it and hands it to the schemes that need it.
+// In wedge and mixed mode cooper uses triangle and quad-dominant
+// implementations (framework/mesh2d), so a mesh may carry triangles too.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,21 +17,24 @@
 
 namespace cooperage::scheme {
 
-/// A 2D quad mesh: the boundary nodes first, in the input order (loop by
-/// loop) and at exactly their input positions; quads counter-clockwise.
+/// A 2D polygon mesh: the boundary nodes first, in the input order (loop by
+/// loop) and at exactly their input positions; quads and triangles
+/// counter-clockwise (triangles only from triangle / quad-dominant meshers).
 struct QuadMesh2D {
   std::vector<Eigen::Vector2d> points;
   std::vector<std::array<int, 4>> quads;
   int boundary_count = 0;
+  std::vector<std::array<int, 3>> tris{};
 };
 
 class PolygonMesher {
  public:
   virtual ~PolygonMesher() = default;
-  /// Meshes the domain bounded by `loops` with quads, adding no node on the
-  /// boundary. \param[in] loops outer loop counter-clockwise first, then
-  /// holes clockwise; each a closed ring without repetition, every loop with
-  /// an even number of nodes. Throws MeshingError on failure.
+  /// Meshes the domain bounded by `loops` (quads, or triangles / both for
+  /// the wedge and mixed meshers), adding no node on the boundary.
+  /// \param[in] loops outer loop counter-clockwise first, then holes
+  /// clockwise; each a closed ring without repetition (an all-quad mesher
+  /// needs an even number of nodes in every loop). Throws MeshingError on failure.
   virtual QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const = 0;
 };
 

@@ -101,8 +101,8 @@ class VolumeScheme {
   virtual SurfaceRoles roles(const VolumeView& view) const = 0;
   /// Meshes the volume; its surfaces are meshed in view.mesh. Throws MeshingError.
   virtual EntityMesh mesh(const VolumeView& view, const MeshParams& params) const = 0;
-  /// Whether the scheme can make wedges (journal `elements="wedge"`); the
-  /// selector offers only such schemes for wedge volumes.
+  /// Whether the scheme can make wedges (journal `elements="wedge"` or
+  /// "mixed"); the selector offers only such schemes for those volumes.
   virtual bool makes_wedges() const { return false; }
 };
 

@@ -165,26 +165,52 @@ std::string check_pair(const geom::Model& model, int volume_id, const std::vecto
   return {};
 }
 
-// Wedge mode: "tri" when it meshes the cap, or why not.
-std::string tri_cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                           std::string& why) {
-  const scheme::SurfaceScheme* tri = registry.surface_scheme("tri");
-  if (!tri) {
-    why = "source cap surface " + std::to_string(surface) +
-          " needs the tri scheme for wedges, which is not available";
+// Wedge and mixed mode: `name` ("tri", "quad_dominant") when it meshes
+// the cap, or why not.
+std::string named_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
+                             int surface, const char* name, const char* purpose,
+                             std::string& why) {
+  const scheme::SurfaceScheme* s = registry.surface_scheme(name);
+  if (!s) {
+    why = "source cap surface " + std::to_string(surface) + " needs the " + name +
+          " scheme for " + purpose + ", which is not available";
     return {};
   }
-  const scheme::Applicability a = tri->applicable(scheme::SurfaceView{model, surface, nullptr});
-  if (a.ok) return "tri";
-  why = "tri does not mesh source cap surface " + std::to_string(surface) + " (" + a.why + ")";
+  const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
+  if (a.ok) return name;
+  why = std::string(name) + " does not mesh source cap surface " + std::to_string(surface) +
+        " (" + a.why + ")";
   return {};
 }
 
-// The first surface scheme of map, submap, pave that meshes the cap, or why
-// not; only "tri" when `tri_caps` (wedge mode).
+// Mixed mode: map or submap where they reach the mixed quad quality (their
+// score is the scaled Jacobian they reach), else quad_dominant. Pave is
+// left out: it makes quads at any cost, where mixed mode wants triangles.
+std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
+                             int surface, std::string& why) {
+  std::string best;
+  double best_score = -1.0;
+  for (const char* name : {"map", "submap"}) {
+    const scheme::SurfaceScheme* s = registry.surface_scheme(name);
+    if (!s) continue;
+    const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
+    if (a.ok && a.score >= kMixedMinQuadQuality && a.score > best_score) {
+      best = name;
+      best_score = a.score;
+    }
+  }
+  if (!best.empty()) return best;
+  return named_cap_scheme(model, registry, surface, "quad_dominant", "a wedge/hex mix", why);
+}
+
+// The cap scheme of an element kind: hex mode the best of map, submap,
+// pave; wedge mode "tri"; mixed mode see mixed_cap_scheme.
 std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& registry, int surface,
-                            std::string& why, bool tri_caps = false) {
-  if (tri_caps) return tri_cap_scheme(model, registry, surface, why);
+                            std::string& why, Elements elements = Elements::Hex) {
+  if (elements == Elements::Wedge) {
+    return named_cap_scheme(model, registry, surface, "tri", "wedges", why);
+  }
+  if (elements == Elements::Mixed) return mixed_cap_scheme(model, registry, surface, why);
   // The best-scoring quad scheme (scores are the scaled Jacobian each can
   // reach, so a corner map/submap would squash goes to pave); ties keep the
   // order map, submap, pave.
@@ -256,7 +282,7 @@ bool better_source(const FaceInfo& x, const FaceInfo& y) {
 // cite: Blacker 1996, sec. 3 (volume classification into sides and caps).
 Classification classify_faces(const geom::Model& model, int volume_id,
                               const scheme::Registry& registry, const SweepHints& hints,
-                              bool tri_caps) {
+                              Elements elements) {
   Classification out;
   const std::string vname = volume_name(volume_id);
   std::vector<int> ids = model.surfaces_of(volume_id);
@@ -489,12 +515,12 @@ Classification classify_faces(const geom::Model& model, int volume_id,
       }
     }
     std::string scheme_why;
-    std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why, tri_caps);
+    std::string scheme = cap_scheme_impl(model, registry, src->id, scheme_why, elements);
     std::vector<std::string> subcap_schemes;
     for (int g : src->subcaps) {
       if (scheme.empty()) break;
       std::string why_g;
-      const std::string sg = cap_scheme_impl(model, registry, g, why_g, tri_caps);
+      const std::string sg = cap_scheme_impl(model, registry, g, why_g, elements);
       if (sg.empty()) {
         scheme.clear();
         scheme_why = "subcap " + std::to_string(g) + " of source cap " + std::to_string(src->id) +
@@ -504,7 +530,7 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     }
     if (scheme.empty() && !hinted && !composite) {
       std::string other_why;
-      const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why, tri_caps);
+      const std::string other = cap_scheme_impl(model, registry, tgt->id, other_why, elements);
       if (!other.empty()) {
         std::swap(src, tgt);
         scheme = other;
@@ -557,6 +583,11 @@ std::string check_side(const geom::Model& model, int side,
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why) {
   return cap_scheme_impl(model, registry, surface, why);
+}
+
+std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
+                       std::string& why, Elements elements) {
+  return cap_scheme_impl(model, registry, surface, why, elements);
 }
 
 }  // namespace detail

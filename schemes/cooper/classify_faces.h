@@ -10,6 +10,7 @@
 #include "framework/geometry/model.h"
 #include "framework/scheme/registry.h"
 #include "framework/scheme/vertex_angles.h"
+#include "schemes/cooper/elements.h"
 
 #include <optional>
 #include <set>
@@ -41,7 +42,9 @@ struct Classification {
   double score = 0.0;        ///< in [0, 1]
   int source = 0;            ///< source cap surface
   int target = 0;            ///< target cap surface
-  std::string source_scheme; ///< "map", "submap" or "pave"; "tri" with tri_caps
+  /// "map", "submap" or "pave"; wedge mode "tri"; mixed mode "map",
+  /// "submap" or "quad_dominant" (see Elements::Mixed)
+  std::string source_scheme;
   /// Composite source cap (Blacker 1996, sec. 4-5: a cap made of subcaps):
   /// faces of the volume, coplanar with `source`, each filling one hole
   /// loop of it and touching no side; meshed by their own surface schemes
@@ -68,11 +71,12 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// candidate cap pairs are ranked by (direction hint,) loops, curves, area,
 /// ids; the source is the cap with more loops, then curves, then area, then
 /// the lower id, unless only the other one has a surface scheme.
-/// \param[in] tri_caps   wedge mode: the source cap is meshed by the registry's
-///                       "tri" (triangles, swept into wedges) instead of map/submap/pave
+/// \param[in] elements   the cap schemes: hex mode map/submap/pave; wedge mode
+///                       the registry's "tri" (triangles, swept into wedges);
+///                       mixed mode map/submap or "quad_dominant" (Elements::Mixed)
 Classification classify_faces(const geom::Model& model, int volume_id,
                               const scheme::Registry& registry, const SweepHints& hints = {},
-                              bool tri_caps = false);
+                              Elements elements = Elements::Hex);
 
 namespace detail {
 
@@ -90,6 +94,10 @@ std::string check_side(const geom::Model& model, int side,
 /// cap surface, or "" with `why` set.
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why);
+/// The cap scheme of an element kind: hex mode as above, wedge mode "tri",
+/// mixed mode map/submap reaching kMixedMinQuadQuality, else "quad_dominant".
+std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
+                       std::string& why, Elements elements);
 
 }  // namespace detail
 

@@ -16,9 +16,6 @@ namespace {
 
 std::string volume_name(int id) { return "volume " + std::to_string(id); }
 
-constexpr const char* kWedgeOneToOneOnly =
-    "wedge mode supports one-to-one sweeps only in this release";
-
 [[noreturn]] void fail(int volume_id, const std::string& message) {
   throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
 }
@@ -42,16 +39,38 @@ Classification CooperScheme::classify(const scheme::VolumeView& view) const {
   const auto it = options_.hints.find(view.volume_id);
   static const SweepHints none;
   return classify_faces(view.model, view.volume_id, *registry_,
-                        it == options_.hints.end() ? none : it->second,
-                        elements(view.volume_id) == Elements::Wedge);
+                        it == options_.hints.end() ? none : it->second, elements(view.volume_id));
 }
 
+const scheme::PolygonMesher* CooperScheme::polygon_mesher(int volume_id) const {
+  switch (elements(volume_id)) {
+    case Elements::Wedge: return options_.triangle_mesher.get();
+    case Elements::Mixed: return options_.quad_dominant_mesher.get();
+    case Elements::Hex: break;
+  }
+  return options_.polygon_mesher.get();
+}
+
+// Barrels do not depend on the element kind; the caps' schemes do (wedge
+// and mixed mode replace the quad schemes classify_barrels chose).
 ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
   const auto it = options_.hints.find(view.volume_id);
   static const SweepHints none;
-  return classify_barrels(view.model, view.volume_id, *registry_,
-                          it == options_.hints.end() ? none : it->second,
-                          options_.polygon_mesher != nullptr);
+  ManyToOne m = classify_barrels(view.model, view.volume_id, *registry_,
+                                 it == options_.hints.end() ? none : it->second,
+                                 polygon_mesher(view.volume_id) != nullptr);
+  const Elements kind = elements(view.volume_id);
+  if (!m.ok || kind == Elements::Hex) return m;
+  for (auto& [cap, scheme] : m.cap_schemes) {
+    std::string why;
+    scheme = detail::cap_scheme(view.model, *registry_, cap, why, kind);
+    if (scheme.empty()) {
+      m.ok = false;
+      m.why = volume_name(view.volume_id) + ": " + why;
+      return m;
+    }
+  }
+  return m;
 }
 
 // One-to-one (part I) first; else many-to-one (part II) at a lower score, so
@@ -59,9 +78,6 @@ ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
 scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
   if (c.ok) return scheme::Applicability::yes(c.score, c.why);
-  if (elements(view.volume_id) == Elements::Wedge) {
-    return scheme::Applicability::no(c.why + "; " + kWedgeOneToOneOnly);
-  }
   const ManyToOne m = classify_many(view);
   if (m.ok) return scheme::Applicability::yes(m.score, m.why);
   if (m.needs_decomposition) return scheme::Applicability::no(m.why);
@@ -72,7 +88,7 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
                              intervals::IntervalProblem& problem) const {
   const Classification c = classify(view);
   if (!c.ok) {
-    if (elements(view.volume_id) == Elements::Hex) constrain_many(view, problem);
+    constrain_many(view, problem);
     return;
   }
   const std::string tag = volume_name(view.volume_id) + " (cooper)";
@@ -114,9 +130,10 @@ void CooperScheme::constrain_many(const scheme::VolumeView& view,
   }
   // Even loops where imprinted subcaps are meshed in 2D (pave's 2D core
   // needs every loop even): both real caps of a barrel with subcaps on both
-  // ends (Blacker 1996, sec. 5.3, 6.1: even parity for all-quad).
+  // ends (Blacker 1996, sec. 5.3, 6.1: even parity for all-quad). The
+  // triangle and quad-dominant meshers of wedge and mixed mode need none.
   for (const BarrelPlan& b : m.barrels) {
-    if (b.lower_inflow.empty()) continue;
+    if (b.lower_inflow.empty() || elements(view.volume_id) != Elements::Hex) continue;
     for (int cap : {b.upper, b.lower}) {
       const auto& loops = view.model.surface(cap).loops;
       for (size_t l = 0; l < loops.size(); ++l) {
@@ -149,7 +166,6 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   const Classification c = classify(view);
   scheme::SurfaceRoles roles;
   if (!c.ok) {
-    if (elements(view.volume_id) == Elements::Wedge) return roles;
     const ManyToOne m = classify_many(view);
     if (!m.ok) return roles;
     for (const SideFace& side : m.sides) roles[side.surface] = "submap";
@@ -184,13 +200,9 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
   if (!view.mesh) fail(vid, "cooper needs the meshed side and source surfaces");
   const mesh::MeshDB& db = *view.mesh;
   const Classification c = classify(view);
-  if (!c.ok && elements(vid) == Elements::Wedge) {
-    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid),
-                       c.why + "; " + kWedgeOneToOneOnly);
-  }
   if (!c.ok) {
     const ManyToOne m = classify_many(view);
-    if (m.ok) return sweep_many_to_one(view, m, options_.polygon_mesher.get());
+    if (m.ok) return sweep_many_to_one(view, m, polygon_mesher(vid));
     throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(vid),
                        m.needs_decomposition ? m.why : c.why + "; as many-to-one: " + m.why);
   }

@@ -4,9 +4,12 @@
 // bosses, shoulders and through holes along one axis; classify_barrels.h,
 // sweep_many_to_one.h). Sides are submapped, the source caps are meshed by
 // map / submap / pave, the target cap is meshed here (kMeshedByVolume).
-// Wedge mode (Blacker 1996, abstract: "a wedge/hexahedral element mix ...
-// by simply allowing triangle ... cap meshes"): the source cap is meshed by
-// "tri" and the one-to-one sweep makes wedges; many-to-one is not offered.
+// Wedge and mixed mode (Blacker 1996, abstract: "a wedge/hexahedral element
+// mix ... by simply allowing triangle and/or mixed triangle/quadrilateral
+// cap meshes"): every cap stack is meshed by "tri" (wedge) or map / submap /
+// "quad_dominant" (mixed), imprinted pieces of caps by the triangle or
+// quad-dominant polygon mesher; the sweep makes wedges from triangles and
+// hexes from quads, one-to-one and many-to-one (elements.h).
 #pragma once
 
 #include "framework/scheme/polygon_mesher.h"
@@ -14,6 +17,7 @@
 #include "framework/scheme/scheme.h"
 #include "schemes/cooper/classify_barrels.h"
 #include "schemes/cooper/classify_faces.h"
+#include "schemes/cooper/elements.h"
 
 #include <map>
 #include <memory>
@@ -22,12 +26,6 @@
 
 namespace cooperage::cooper {
 
-/// The elements cooper makes in a volume.
-enum class Elements {
-  Hex,    ///< quad caps (map / submap / pave) swept into hexes
-  Wedge,  ///< triangle caps ("tri") swept into wedges; one-to-one only
-};
-
 struct CooperOptions {
   /// Journal hints per volume id (sources, targets, direction).
   std::map<int, SweepHints> hints;
@@ -35,6 +33,10 @@ struct CooperOptions {
   /// sec. 6.1); null: barrels with subcaps on both ends are not applicable.
   /// The registration code wraps pave's 2D core (pave::pave_2d) here.
   std::shared_ptr<const scheme::PolygonMesher> polygon_mesher;
+  /// The same for wedge mode (triangles) and mixed mode (quad-dominant);
+  /// the registration code wraps framework/mesh2d here.
+  std::shared_ptr<const scheme::PolygonMesher> triangle_mesher;
+  std::shared_ptr<const scheme::PolygonMesher> quad_dominant_mesher;
   /// Element kind per volume id (journal `elements=`); absent: Hex.
   std::map<int, Elements> elements;
 };
@@ -49,15 +51,16 @@ class CooperScheme final : public scheme::VolumeScheme {
   std::string_view name() const override { return "cooper"; }
   bool makes_wedges() const override { return true; }
   /// classify_faces(): a one-barrel volume (two caps, submappable sides,
-  /// convex end caps, a source cap scheme: "tri" in wedge mode), else (hex
-  /// mode only) classify_barrels(). Never meshes.
+  /// convex end caps, a source cap scheme of the element kind), else
+  /// classify_barrels() with the caps' schemes of the element kind. Never meshes.
   scheme::Applicability applicable(const scheme::VolumeView& view) const override;
   /// Per side: source-boundary sum == target-boundary sum; every linking
   /// chain of the volume the same count (Blacker 1996, sec. 3-4).
   void constrain(const scheme::VolumeView& view,
                  intervals::IntervalProblem& problem) const override;
-  /// Sides -> "submap" (always, one code path), source -> its scheme ("tri"
-  /// in wedge mode), target -> scheme::kMeshedByVolume. Empty when not applicable.
+  /// Sides -> "submap" (always, one code path), source caps -> their scheme
+  /// ("tri" in wedge mode, map/submap/"quad_dominant" in mixed mode), target
+  /// -> scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   /// Barrel formation, projection, elements. Throws MeshingError
   /// (MeshingFailed) naming the volume: ribs that do not end on the target
@@ -71,7 +74,7 @@ class CooperScheme final : public scheme::VolumeScheme {
   const CooperOptions& options() const { return options_; }
   /// The element kind of a volume (Hex unless set in the options).
   Elements elements(int volume_id) const;
-  /// Sets the 2D mesher of imprinted subcaps (see CooperOptions).
+  /// Sets the 2D mesher of imprinted subcaps in hex mode (see CooperOptions).
   void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher) {
     options_.polygon_mesher = std::move(mesher);
   }
@@ -79,6 +82,8 @@ class CooperScheme final : public scheme::VolumeScheme {
  private:
   Classification classify(const scheme::VolumeView& view) const;
   ManyToOne classify_many(const scheme::VolumeView& view) const;
+  /// The polygon mesher of the volume's element kind (null: none given).
+  const scheme::PolygonMesher* polygon_mesher(int volume_id) const;
   void constrain_many(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const;
 
   const scheme::Registry* registry_;

@@ -8,6 +8,8 @@
 #include "schemes/cooper/form_barrels.h"
 #include "schemes/cooper/sweep_many_to_one.h"
 
+#include <algorithm>
+#include <array>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -25,6 +27,35 @@ struct VirtualCap {
   std::vector<mesh::Quad> quads;
   std::vector<mesh::Tri> tris;
 };
+
+// The elements of a barrel's upper end of one kind (quads N = 4, triangles
+// N = 3), each with where its image on the lower end goes.
+template <size_t N>
+struct CapFaces {
+  std::vector<std::array<int, N>> faces;
+  std::vector<char> arriving;     ///< over a subcap arriving on the lower end
+  std::vector<int> lower_region;  ///< from-middle barrel below it, or -1
+  void add(const std::array<int, N>& f, bool arrives, int region) {
+    faces.push_back(f);
+    arriving.push_back(arrives ? 1 : 0);
+    lower_region.push_back(region);
+  }
+};
+
+// The same face seen from the other side: first node kept, order reversed.
+template <size_t N>
+std::array<int, N> reversed(std::array<int, N> f) {
+  std::reverse(f.begin() + 1, f.end());
+  return f;
+}
+
+// An element with its nodes renumbered through `node`.
+template <size_t N>
+std::array<int, N> renumbered(const std::array<int, N>& e, const std::vector<int>& node) {
+  std::array<int, N> out;
+  for (size_t k = 0; k < N; ++k) out[k] = node[static_cast<size_t>(e[k])];
+  return out;
+}
 
 class Builder {
  public:

@@ -22,9 +22,32 @@ double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
   return worst;
 }
 
-// cite: Blacker 1996, sec. 6.1 (smoothing the subcaps of one exterior face).
+double min_tri_corner_quality(const std::vector<mesh::Vec3>& points,
+                              const std::vector<mesh::Tri>& tris, const mesh::Vec3& normal) {
+  double worst = 1.0;
+  for (const auto& t : tris) {
+    for (size_t k = 0; k < 3; ++k) {
+      const mesh::Vec3& p = points[static_cast<size_t>(t[k])];
+      const mesh::Vec3 a = points[static_cast<size_t>(t[(k + 1) % 3])] - p;
+      const mesh::Vec3 b = points[static_cast<size_t>(t[(k + 2) % 3])] - p;
+      const double la = a.norm(), lb = b.norm();
+      if (la == 0 || lb == 0) return -1.0;
+      worst = std::min(worst, a.cross(b).dot(normal) / (la * lb));
+    }
+  }
+  return worst;
+}
+
 bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
                 const std::vector<char>& movable, const mesh::Vec3& normal,
+                const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations) {
+  return smooth_cap(points, quads, {}, movable, normal, project, iterations);
+}
+
+// cite: Blacker 1996, sec. 6.1 (smoothing the subcaps of one exterior face).
+bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
+                const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
+                const mesh::Vec3& normal,
                 const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations) {
   std::vector<std::vector<int>> nbr(points.size());
   for (const auto& q : quads) {
@@ -33,11 +56,18 @@ bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& 
       nbr[static_cast<size_t>(q[k])].push_back(q[(k + 3) % 4]);
     }
   }
+  for (const auto& t : tris) {
+    for (size_t k = 0; k < 3; ++k) {
+      nbr[static_cast<size_t>(t[k])].push_back(t[(k + 1) % 3]);
+      nbr[static_cast<size_t>(t[k])].push_back(t[(k + 2) % 3]);
+    }
+  }
   for (auto& n : nbr) {
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
   }
-  const double before = min_quad_corner_quality(points, quads, normal);
+  const double before_quads = min_quad_corner_quality(points, quads, normal);
+  const double before_tris = min_tri_corner_quality(points, tris, normal);
   std::vector<mesh::Vec3> trial = points;
   for (int it = 0; it < iterations; ++it) {
     for (size_t i = 0; i < trial.size(); ++i) {
@@ -48,7 +78,10 @@ bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& 
       trial[i] = project ? project(x) : x;
     }
   }
-  if (min_quad_corner_quality(trial, quads, normal) < before) return false;
+  if (min_quad_corner_quality(trial, quads, normal) < before_quads ||
+      min_tri_corner_quality(trial, tris, normal) < before_tris) {
+    return false;
+  }
   points.swap(trial);
   return true;
 }

@@ -17,6 +17,10 @@ namespace cooperage::cooper {
 double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
                                const std::vector<mesh::Quad>& quads, const mesh::Vec3& normal);
 
+/// The same over the corners of triangles (wedge and mixed caps).
+double min_tri_corner_quality(const std::vector<mesh::Vec3>& points,
+                              const std::vector<mesh::Tri>& tris, const mesh::Vec3& normal);
+
 /// Laplacian smoothing of the `movable` nodes of a quad mesh, each step
 /// followed by `project` (closest point on the face). The result is kept only
 /// when the minimum corner quality does not drop; returns whether it was.
@@ -24,6 +28,11 @@ double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
 /// \param[in] normal       the face normal the quads are counter-clockwise about
 bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
                 const std::vector<char>& movable, const mesh::Vec3& normal,
+                const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations = 8);
+/// The same for a mesh of quads and triangles (neither quality may drop).
+bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
+                const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
+                const mesh::Vec3& normal,
                 const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations = 8);
 
 }  // namespace cooperage::cooper

@@ -19,7 +19,7 @@ BarrelReport Builder::sweep_out(size_t b, bool flip) {
   std::vector<int> lower_nodes;
   const Barrel barrel = ribs(b, bin, lower_nodes);  // from the real cap to the middle
   const VirtualCap& cap = virtual_[b];
-  if (cap.quads.empty() || !cap.tris.empty()) fail(vid_, name + ": its virtual cap was not meshed");
+  if (cap.quads.empty() && cap.tris.empty()) fail(vid_, name + ": its virtual cap was not meshed");
   const size_t B = barrel.ribs.size();
   const size_t J = static_cast<size_t>(barrel.layers);
   SweepInput in;
@@ -37,9 +37,13 @@ BarrelReport Builder::sweep_out(size_t b, bool flip) {
     in.loop_starts.push_back(r);
     for (size_t k = 0; k < loop.size(); ++k, ++r) index_of(existing(barrel.ribs[r].back()));
   }
-  for (mesh::Quad q : cap.quads) {
-    if (flip) std::swap(q[1], q[3]);
+  for (const mesh::Quad& face : cap.quads) {
+    const mesh::Quad q = flip ? reversed(face) : face;
     in.quads.push_back({index_of(q[0]), index_of(q[1]), index_of(q[2]), index_of(q[3])});
+  }
+  for (const mesh::Tri& face : cap.tris) {
+    const mesh::Tri t = flip ? reversed(face) : face;
+    in.tris.push_back({index_of(t[0]), index_of(t[1]), index_of(t[2])});
   }
   in.cap_nodes = static_cast<int>(cap_entity.size());
   for (int n : cap_entity) in.source.push_back(out_.coords[static_cast<size_t>(n)]);
@@ -66,19 +70,16 @@ BarrelReport Builder::sweep_out(size_t b, bool flip) {
       }
     }
   }
-  for (const auto& h : sweep.hexes) {
-    mesh::Hex x;
-    for (size_t k = 0; k < 8; ++k) x[k] = node[static_cast<size_t>(h[k])];
-    out_.hexes.push_back(x);
-  }
+  for (const auto& h : sweep.hexes) out_.hexes.push_back(renumbered(h, node));
+  for (const auto& w : sweep.wedges) out_.wedges.push_back(renumbered(w, node));
   const bool outward = model_.sense_in(p.upper, vid_) == geom::Sense::Forward;
   const size_t top = J * n;
-  for (const auto& q : in.quads) {
-    mesh::Quad f;
-    for (size_t c = 0; c < 4; ++c) f[c] = node[top + static_cast<size_t>(q[c])];
-    if (!outward) std::swap(f[1], f[3]);
-    out_.surface_quads[p.upper].push_back(f);
-  }
+  auto on_top = [&](auto f) {
+    for (auto& c : f) c = node[top + static_cast<size_t>(c)];
+    return outward ? f : reversed(f);
+  };
+  for (const auto& q : in.quads) out_.surface_quads[p.upper].push_back(on_top(q));
+  for (const auto& t : in.tris) out_.surface_tris[p.upper].push_back(on_top(t));
   return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
 }
 

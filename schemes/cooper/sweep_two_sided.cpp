@@ -184,11 +184,11 @@ BarrelReport Builder::two_sided(size_t b) {
     return n;
   };
 
-  // Cap stacks (sec. 6.1): the upper end's elements, one stack at a time.
-  std::vector<mesh::Quad> cap_quads;       // CCW about d, EntityMesh-local
-  std::vector<char> arriving;              // per cap quad: over a subcap arriving below
-  std::vector<int> lower_region;           // per cap quad: from-middle barrel below it, or -1
-  std::vector<mesh::Quad> upper_surface;   // the part that is the real upper cap
+  // Cap stacks (sec. 6.1): the upper end's elements, one stack at a time;
+  // quads and (wedge / mixed mode) triangles alike.
+  CapFaces<4> cap_quads;
+  CapFaces<3> cap_tris;
+  VirtualCap upper_surface;                // the part that is the real upper cap
   std::map<int, int> fixed;                // upper local node -> existing lower local node
   const double level = to_lower.from_centre.dot(d);
   for (const auto& [ua, lb] : imp.matches) {
@@ -198,19 +198,15 @@ BarrelReport Builder::two_sided(size_t b) {
     }
     if (virtual_of_cap.count(ua)) {  // an inflowing subcap on the upper end: its own mesh
       const VirtualCap& vc = virtual_[static_cast<size_t>(virtual_of_cap.at(ua))];
-      if (!vc.tris.empty()) fail(vid_, name + ": triangle subcaps are not supported here");
-      cap_quads.insert(cap_quads.end(), vc.quads.begin(), vc.quads.end());
-      arriving.resize(cap_quads.size(), 0);
-      lower_region.resize(cap_quads.size(), -1);
+      for (const auto& q : vc.quads) cap_quads.add(q, false, -1);
+      for (const auto& t : vc.tris) cap_tris.add(t, false, -1);
       continue;
     }
     if (virtual_of_cap.count(lb)) {  // a subcap arriving on the lower end: project it up
       const VirtualCap& vc = virtual_[static_cast<size_t>(virtual_of_cap.at(lb))];
       std::map<int, int> image;
-      for (const auto& q : vc.quads) {
-        mesh::Quad f;
-        for (size_t k = 0; k < 4; ++k) {
-          const int w = q[k];
+      auto lift = [&](auto f) {
+        for (auto& w : f) {
           auto it = image.find(w);
           if (it == image.end()) {
             int n;
@@ -224,13 +220,17 @@ BarrelReport Builder::two_sided(size_t b) {
             it = image.emplace(w, n).first;
             fixed[n] = w;
           }
-          f[k] = it->second;
+          w = it->second;
         }
-        std::swap(f[1], f[3]);  // it was made sweeping the other way
-        cap_quads.push_back(f);
-        arriving.push_back(1);
-        lower_region.push_back(-1);
-        upper_surface.push_back(f);
+        return reversed(f);  // it was made sweeping the other way
+      };
+      for (const auto& q : vc.quads) {
+        cap_quads.add(lift(q), true, -1);
+        upper_surface.quads.push_back(cap_quads.faces.back());
+      }
+      for (const auto& t : vc.tris) {
+        cap_tris.add(lift(t), true, -1);
+        upper_surface.tris.push_back(cap_tris.faces.back());
       }
       continue;
     }
@@ -251,12 +251,15 @@ BarrelReport Builder::two_sided(size_t b) {
       fail(vid_, name + ": meshing the imprinted part of cap " + std::to_string(p.upper) + ": " + ex.what());
     }
     // The stack this piece belongs to: inside a from-middle footprint on
-    // either end (a point inside its first quad decides).
+    // either end (a point inside its first element decides).
     int up_region = -1, lo_region = -1;
-    if (!m.quads.empty()) {
+    if (!m.quads.empty() || !m.tris.empty()) {
       Vec2 c = Vec2::Zero();
-      for (int k : m.quads.front()) c += m.points[static_cast<size_t>(k)];
-      c /= 4.0;
+      if (!m.quads.empty()) {
+        for (int k : m.quads.front()) c += m.points[static_cast<size_t>(k)] / 4.0;
+      } else {
+        for (int k : m.tris.front()) c += m.points[static_cast<size_t>(k)] / 3.0;
+      }
       up_region = region_of(region_up, c);
       lo_region = region_of(region_lo, c);
     }
@@ -270,17 +273,15 @@ BarrelReport Builder::two_sided(size_t b) {
         on_upper.insert(node[k]);
       }
     }
+    VirtualCap& home = up_region >= 0 ? virtual_[static_cast<size_t>(up_region)]  // swept out later
+                                      : upper_surface;
     for (const auto& q : m.quads) {
-      const mesh::Quad f{node[static_cast<size_t>(q[0])], node[static_cast<size_t>(q[1])],
-                         node[static_cast<size_t>(q[2])], node[static_cast<size_t>(q[3])]};
-      cap_quads.push_back(f);
-      arriving.push_back(0);
-      lower_region.push_back(lo_region);
-      if (up_region >= 0) {
-        virtual_[static_cast<size_t>(up_region)].quads.push_back(f);  // swept out later
-      } else {
-        upper_surface.push_back(f);
-      }
+      cap_quads.add(renumbered(q, node), false, lo_region);
+      home.quads.push_back(cap_quads.faces.back());
+    }
+    for (const auto& t : m.tris) {
+      cap_tris.add(renumbered(t, node), false, lo_region);
+      home.tris.push_back(cap_tris.faces.back());
     }
   }
   // The subcaps forming the real upper cap are smoothed together (sec. 6.1).
@@ -288,25 +289,29 @@ BarrelReport Builder::two_sided(size_t b) {
     std::map<int, int> idx;
     std::vector<Vec3> pts;
     std::vector<char> movable;
-    std::vector<mesh::Quad> quads;
-    std::vector<mesh::Quad> all = upper_surface;
+    VirtualCap all = upper_surface;
     for (const auto& [i, loop] : region_up) {
-      all.insert(all.end(), virtual_[static_cast<size_t>(i)].quads.begin(), virtual_[static_cast<size_t>(i)].quads.end());
+      const VirtualCap& vc = virtual_[static_cast<size_t>(i)];
+      all.quads.insert(all.quads.end(), vc.quads.begin(), vc.quads.end());
+      all.tris.insert(all.tris.end(), vc.tris.begin(), vc.tris.end());
     }
-    for (const auto& q : all) {
-      mesh::Quad l;
-      for (size_t k = 0; k < 4; ++k) {
-        auto [it, added] = idx.emplace(q[k], static_cast<int>(pts.size()));
+    auto local_face = [&](auto f) {
+      for (auto& k : f) {
+        auto [it, added] = idx.emplace(k, static_cast<int>(pts.size()));
         if (added) {
-          pts.push_back(out_.coords[static_cast<size_t>(q[k])]);
-          movable.push_back(on_upper.count(q[k]) ? 1 : 0);
+          pts.push_back(out_.coords[static_cast<size_t>(k)]);
+          movable.push_back(on_upper.count(k) ? 1 : 0);
         }
-        l[k] = it->second;
+        k = it->second;
       }
-      quads.push_back(l);
-    }
+      return f;
+    };
+    std::vector<mesh::Quad> quads;
+    std::vector<mesh::Tri> tris;
+    for (const auto& q : all.quads) quads.push_back(local_face(q));
+    for (const auto& t : all.tris) tris.push_back(local_face(t));
     auto project = [&](const Vec3& x) { return upper_geometry->project(x).point; };
-    if (smooth_cap(pts, quads, movable, d, project)) {
+    if (smooth_cap(pts, quads, tris, movable, d, project)) {
       for (const auto& [n, i] : idx) out_.coords[static_cast<size_t>(n)] = pts[static_cast<size_t>(i)];
     }
   }
@@ -328,7 +333,8 @@ BarrelReport Builder::two_sided(size_t b) {
     return it->second;
   };
   for (const auto& rib : barrel.ribs) index_of(existing(rib.front()));
-  for (const auto& q : cap_quads) in.quads.push_back({index_of(q[0]), index_of(q[1]), index_of(q[2]), index_of(q[3])});
+  for (const auto& q : cap_quads.faces) in.quads.push_back({index_of(q[0]), index_of(q[1]), index_of(q[2]), index_of(q[3])});
+  for (const auto& t : cap_tris.faces) in.tris.push_back({index_of(t[0]), index_of(t[1]), index_of(t[2])});
   in.cap_nodes = static_cast<int>(cap_entity.size());
   in.has_fixed_target.assign(cap_entity.size(), 0);
   in.fixed_target.assign(cap_entity.size(), Vec3::Zero());
@@ -366,30 +372,31 @@ BarrelReport Builder::two_sided(size_t b) {
       }
     }
   }
-  for (const auto& h : sweep.hexes) {
-    mesh::Hex x;
-    for (size_t k = 0; k < 8; ++k) x[k] = node[static_cast<size_t>(h[k])];
-    out_.hexes.push_back(x);
-  }
+  for (const auto& h : sweep.hexes) out_.hexes.push_back(renumbered(h, node));
+  for (const auto& w : sweep.wedges) out_.wedges.push_back(renumbered(w, node));
   // Surface meshes of the two real caps, with their natural normals.
   const bool upper_outward = model_.sense_in(p.upper, vid_) == geom::Sense::Forward;
-  for (mesh::Quad f : upper_surface) {
-    if (upper_outward) std::swap(f[1], f[3]);
-    out_.surface_quads[p.upper].push_back(f);
-  }
+  for (const auto& f : upper_surface.quads) out_.surface_quads[p.upper].push_back(upper_outward ? reversed(f) : f);
+  for (const auto& f : upper_surface.tris) out_.surface_tris[p.upper].push_back(upper_outward ? reversed(f) : f);
   const bool lower_outward = model_.sense_in(p.lower, vid_) == geom::Sense::Forward;
   const size_t top = J * n;
-  for (size_t k = 0; k < in.quads.size(); ++k) {
-    if (arriving[k]) continue;  // the face of an arriving subcap, not of the real lower cap
-    mesh::Quad f;
-    for (size_t c = 0; c < 4; ++c) f[c] = node[top + static_cast<size_t>(in.quads[k][c])];
-    if (lower_region[k] >= 0) {  // a virtual subcap swept out later (from the middle)
-      virtual_[static_cast<size_t>(lower_region[k])].quads.push_back(f);
-      continue;
+  auto place_lower = [&](const auto& cap, const auto& local_faces, auto& surface, auto virtual_faces) {
+    for (size_t k = 0; k < local_faces.size(); ++k) {
+      if (cap.arriving[k]) continue;  // the face of an arriving subcap, not of the real lower cap
+      auto f = local_faces[k];
+      for (auto& c : f) c = node[top + static_cast<size_t>(c)];
+      if (cap.lower_region[k] >= 0) {  // a virtual subcap swept out later (from the middle)
+        virtual_faces(static_cast<size_t>(cap.lower_region[k])).push_back(f);
+        continue;
+      }
+      surface.push_back(lower_outward ? f : reversed(f));
     }
-    if (!lower_outward) std::swap(f[1], f[3]);
-    out_.surface_quads[p.lower].push_back(f);
-  }
+  };
+  place_lower(cap_quads, in.quads, out_.surface_quads[p.lower],
+              [&](size_t i) -> std::vector<mesh::Quad>& { return virtual_[i].quads; });
+  place_lower(cap_tris, in.tris, out_.surface_tris[p.lower],
+              [&](size_t i) -> std::vector<mesh::Tri>& { return virtual_[i].tris; });
+  if (out_.surface_tris[p.lower].empty()) out_.surface_tris.erase(p.lower);
   return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
 }
 

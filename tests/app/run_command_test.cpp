@@ -169,6 +169,26 @@ TEST_F(RunCommand, MeshCommandMeshesAStepFileWithOnlyASize) {
   EXPECT_NE(q.out.find("304 elements"), std::string::npos) << q.out;
 }
 
+TEST_F(RunCommand, MeshCommandElementsOption) {
+  // A prism with a 20-degree corner: mixed gives hexes and wedges; wedge only wedges.
+  occ::Workbench bench;
+  bench.prism("blade", {{0, 0, 0}, {8, 0, 0}, {8, 2, 0}, {5.494954839, 2, 0}}, {}, {0, 0, 1});
+  bench.write(path("blade.step"));
+  for (const std::string kind : {"mixed", "wedge"}) {
+    const std::string out = path("blade_" + kind + ".vtu");
+    const auto r = run_command(kCli + " mesh " + path("blade.step") + " --size 0.5 --elements " +
+                               kind + " -q -o " + out);
+    ASSERT_EQ(r.exit_code, 0) << kind << ": " << r.err;
+    const auto q = run_command(kCli + " quality " + out);
+    ASSERT_EQ(q.exit_code, 0) << q.err;
+    EXPECT_NE(q.out.find("wedge"), std::string::npos) << kind << ": " << q.out;
+    EXPECT_EQ(q.out.find("hex") != std::string::npos, kind == "mixed") << kind << ": " << q.out;
+  }
+  const auto bad = run_command(kCli + " mesh " + path("blade.step") + " --size 0.5 --elements tet -o " +
+                               path("x.vtu"));
+  EXPECT_EQ(bad.exit_code, 2);
+}
+
 TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
   occ::Workbench bench;
   bench.brick("a", {0, 0, 0}, {1, 2, 3});

@@ -1,8 +1,9 @@
 // cooper in wedge mode (journal elements="wedge"; Blacker 1996, abstract:
 // "a wedge/hexahedral element mix ... by simply allowing triangle ... cap
 // meshes"): the source cap is meshed by "tri", the one-to-one sweep makes
-// wedges, side faces stay quads. Many-to-one is rejected in wedge mode, and
-// the journal checks reject "mixed" and wedge + volume map.
+// wedges, side faces stay quads. Many-to-one volumes give their caps to
+// "tri" in wedge mode (test_cooper_wedge_many.cpp meshes them), and the
+// journal checks reject wedge or mixed + volume map.
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
@@ -235,7 +236,7 @@ TEST(CooperWedge, ApplicableBothWays) {
   plate.cylinder("h", {2, 1.5, 0}, {0, 0, 1}, 0.5, 1);
   plate.cut("p", {"b", "h"});
   const geom::Model one = plate.build_model();
-  // A brick with a boss: many-to-one, applicable in hex mode only.
+  // A brick with a boss: many-to-one, applicable in both modes, tri caps in wedge mode.
   occ::Workbench boss;
   boss.brick("b", {0, 0, 0}, {4, 4, 2});
   boss.brick("boss", {1.5, 1.5, 2}, {1, 1, 1});
@@ -259,14 +260,21 @@ TEST(CooperWedge, ApplicableBothWays) {
 
   EXPECT_TRUE(hex_cooper->applicable({many, 1, nullptr}).ok);
   const scheme::Applicability a = wedge_cooper->applicable({many, 1, nullptr});
-  EXPECT_FALSE(a.ok);
-  EXPECT_NE(a.why.find("wedge mode supports one-to-one sweeps only in this release"),
-            std::string::npos)
-      << a.why;
-  EXPECT_TRUE(wedge_cooper->roles({many, 1, nullptr}).empty());
+  EXPECT_TRUE(a.ok) << a.why;
+  const scheme::SurfaceRoles many_roles = wedge_cooper->roles({many, 1, nullptr});
+  EXPECT_EQ(std::count_if(many_roles.begin(), many_roles.end(),
+                          [](const auto& r) { return r.second == "tri"; }),
+            2);  // the boss top and the shoulder
+  // Without the tri scheme, wedge mode does not apply, and says why.
+  scheme::Registry bare;
+  CooperOptions wedge_only;
+  wedge_only.elements[1] = Elements::Wedge;
+  const auto bare_cooper = make_cooper(bare, wedge_only);
+  const scheme::Applicability no = bare_cooper->applicable({one, 1, nullptr});
+  EXPECT_FALSE(no.ok);
 }
 
-TEST(CooperWedge, JournalChecksRejectMixedAndWedgeMap) {
+TEST(CooperWedge, JournalChecksRejectWedgeAndMixedWithTheVolumeMap) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {2, 1, 1});
   const geom::Model model = wb.build_model();
@@ -281,9 +289,9 @@ TEST(CooperWedge, JournalChecksRejectMixedAndWedgeMap) {
       EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
     }
   };
-  expect_error(wedge_settings(0.5, "auto", io::ElementKind::Mixed), ErrorCode::NotSupported,
-               "elements=\"mixed\"");
   expect_error(wedge_settings(0.5, "map"), ErrorCode::InvalidInput, "makes hexes only");
+  expect_error(wedge_settings(0.5, "map", io::ElementKind::Mixed), ErrorCode::InvalidInput,
+               "elements=\"mixed\" with scheme=\"map\"");
 }
 
 }  // namespace
