@@ -2,6 +2,7 @@
 
 #include "framework/scheme/vertex_angles.h"
 #include "schemes/cooper/cap_dihedral.h"
+#include "schemes/cooper/stepped_ring.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +46,11 @@ struct Ring {
   std::vector<int> sides;  // indices into the side list
   int x = 0, y = 0;
   bool convex_x = false, convex_y = false;
+  // A segment of a stepped ring (sides spanning several caps): its upper
+  // cap and its own linking chains.
+  bool stepped = false;
+  int upper = 0;
+  std::vector<std::vector<int>> chains;
 };
 
 int find(std::vector<int>& parent, int i) {
@@ -138,6 +144,7 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
   std::vector<SideFace> side_faces(sides.size());
   std::vector<std::array<int, 2>> ends(sides.size());
   std::vector<std::array<bool, 2>> convex(sides.size());
+  std::vector<char> multi(sides.size(), 0);
   for (size_t s = 0; s < sides.size(); ++s) {
     const Face& f = *sides[s];
     std::vector<int> touched;
@@ -149,9 +156,13 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
         }
       }
     }
-    if (touched.size() != 2) {
+    if (touched.size() < 2) {
       return "side surface " + std::to_string(f.id) + " touches " + std::to_string(touched.size()) +
              " caps (" + join(touched) + "); a side links two caps along the axis " + vec_text(axis);
+    }
+    if (touched.size() > 2) {  // spans several barrels: split with its ring below
+      multi[s] = 1;
+      continue;
     }
     const Face& a = *cap_of(touched[0]);
     const Face& b = *cap_of(touched[1]);
@@ -186,32 +197,71 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
       }
     }
   }
-  std::map<int, Ring> rings;
-  for (size_t s = 0; s < sides.size(); ++s) {
-    const int root = find(parent, static_cast<int>(s));
-    auto [it, added] = rings.try_emplace(root);
-    Ring& r = it->second;
-    if (added) {
-      r.x = ends[s][0];
-      r.y = ends[s][1];
-      r.convex_x = convex[s][0];
-      r.convex_y = convex[s][1];
-    } else if (r.x != ends[s][0] || r.y != ends[s][1] || r.convex_x != convex[s][0] ||
-               r.convex_y != convex[s][1]) {
-      return "the side faces joined to surface " + std::to_string(sides[s]->id) +
-             " do not all link the same two caps in the same way";
+  std::map<int, std::vector<int>> components;
+  for (size_t s = 0; s < sides.size(); ++s) components[find(parent, static_cast<int>(s))].push_back(static_cast<int>(s));
+  std::vector<Ring> rings;
+  std::vector<char> stepped_side(sides.size(), 0);
+  std::map<int, SideFace> stepped_faces;  // surface -> its SideFace in a stepped ring
+  for (const auto& [root, members] : components) {
+    bool uniform = true;
+    for (int s : members) {
+      const size_t i = static_cast<size_t>(s), f = static_cast<size_t>(members.front());
+      uniform = uniform && !multi[i] && ends[i] == ends[f] && convex[i] == convex[f];
     }
-    r.sides.push_back(static_cast<int>(s));
+    if (uniform) {
+      Ring r;
+      r.sides = members;
+      const size_t f = static_cast<size_t>(members.front());
+      r.x = ends[f][0];
+      r.y = ends[f][1];
+      r.convex_x = convex[f][0];
+      r.convex_y = convex[f][1];
+      rings.push_back(r);
+      continue;
+    }
+    // Sides linking different caps, or one side touching three or more:
+    // split the ring at the level of every cap it touches (sec. 4, Fig. 8).
+    std::vector<int> ids;
+    for (int s : members) ids.push_back(sides[static_cast<size_t>(s)]->id);
+    std::vector<RingCap> ring_caps;
+    for (const Face* c : caps) ring_caps.push_back({c->id, c->curves});
+    // Levels along the direction in which every segment starts convex (the
+    // virtual caps at their lower ends); the axis sign is arbitrary.
+    SteppedRing st = split_stepped_ring(model, vid, axis, ids, ring_caps);
+    if (!st.why.empty()) {
+      SteppedRing flipped = split_stepped_ring(model, vid, -axis, ids, ring_caps);
+      if (flipped.why.empty()) st = std::move(flipped);
+    }
+    if (!st.why.empty()) return "the side faces joined to surface " + std::to_string(ids.front()) + ": " + st.why;
+    for (const SideFace& sf : st.sides) stepped_faces[sf.surface] = sf;
+    for (int s : members) stepped_side[static_cast<size_t>(s)] = 1;
+    for (const RingSegment& seg : st.segments) {
+      Ring r;
+      for (int s : members) {
+        if (std::binary_search(seg.sides.begin(), seg.sides.end(), sides[static_cast<size_t>(s)]->id)) r.sides.push_back(s);
+      }
+      r.x = seg.lower;
+      r.y = seg.upper;
+      r.convex_x = seg.convex_lower;
+      r.convex_y = seg.convex_upper;
+      r.stepped = true;
+      r.upper = seg.upper;
+      r.chains = seg.linking_chains;
+      rings.push_back(r);
+    }
   }
   // Barrels: rings grouped by the cap they start from (sec. 4).
   struct Group {
     int from = 0, other = 0;
     bool closed = false;
     std::vector<int> sides;
+    bool stepped = false;  // holds a segment of a stepped ring
+    int stepped_upper = 0;
+    std::vector<std::vector<int>> chains;  // the stepped segments' linking chains
   };
   std::map<int, Group> by_cap;  // start cap -> barrel
   std::map<int, std::vector<int>> inflow;  // cap -> start caps of open barrels into it
-  for (const auto& [root, r] : rings) {
+  for (const Ring& r : rings) {
     std::vector<int> ids;
     for (int s : r.sides) ids.push_back(sides[static_cast<size_t>(s)]->id);
     if (!r.convex_x && !r.convex_y) {
@@ -237,6 +287,11 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
                "polygon meshing), not supported";
       }
       g.sides.insert(g.sides.end(), r.sides.begin(), r.sides.end());
+      if (r.stepped) {
+        g.stepped = true;
+        g.stepped_upper = r.upper;
+        g.chains.insert(g.chains.end(), r.chains.begin(), r.chains.end());
+      }
     }
     if (!(r.convex_x && r.convex_y)) inflow[r.convex_x ? r.y : r.x].push_back(r.convex_x ? r.x : r.y);
   }
@@ -263,6 +318,10 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
       }
       std::sort(b.sides.begin(), b.sides.end());
       b.sides.erase(std::unique(b.sides.begin(), b.sides.end()), b.sides.end());
+    }
+    if (b.stepped && b.from != b.stepped_upper) {
+      return "the barrel from cap " + std::to_string(b.from) + " runs up a ring of sides that spans "
+             "several caps; only rings swept from their upper caps down are supported";
     }
     barrels.push_back(b);
   }
@@ -317,7 +376,15 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
     } else {
       p.into = g.other;
     }
+    p.flush = g.stepped && !g.closed;
+    p.linking_chains = g.chains;
     for (int s : g.sides) {
+      if (stepped_side[static_cast<size_t>(s)]) {
+        const SideFace& sf = stepped_faces.at(sides[static_cast<size_t>(s)]->id);
+        p.sides.push_back(sf.surface);
+        out.sides.push_back(sf);
+        continue;
+      }
       SideFace sf = side_faces[static_cast<size_t>(s)];
       if (ends[static_cast<size_t>(s)][0] != g.from) std::swap(sf.source_curves, sf.target_curves);
       p.sides.push_back(sf.surface);
@@ -330,6 +397,9 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
   }
   std::sort(out.sides.begin(), out.sides.end(),
             [](const SideFace& a, const SideFace& b) { return a.surface < b.surface; });
+  out.sides.erase(std::unique(out.sides.begin(), out.sides.end(),
+                              [](const SideFace& a, const SideFace& b) { return a.surface == b.surface; }),
+                  out.sides.end());
   // Subcaps arriving on both ends of a barrel that overlap (sec. 5.3): their
   // barrels are meshed from the middle, their real caps by cooper.
   for (BarrelPlan& m : out.barrels) {

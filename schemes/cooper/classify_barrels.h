@@ -36,6 +36,11 @@ struct BarrelPlan {
   int lower = 0;
   /// With lower == 0: the cap whose hole loop(s) the virtual lower cap fills.
   int into = 0;
+  /// With lower == 0: the virtual lower cap lies beside `into` rather than in
+  /// a hole loop of it (a step flush with an outer wall: the sides run on
+  /// past `into`'s level, sec. 4 Fig. 8); the barrel below starts from the
+  /// outer loop of `into` and this cap together.
+  bool flush = false;
   /// Meshed from the middle (sec. 6.1: a stack is meshed once, from any of
   /// its caps): an open barrel whose virtual cap overlaps a subcap arriving
   /// on the other end of the barrel it flows into (an intersection, sec.

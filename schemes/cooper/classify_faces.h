@@ -34,6 +34,10 @@ struct SideFace {
   /// Linking (sweep-direction) curves, as maximal chains between the caps,
   /// each in loop order.
   std::vector<std::vector<int>> linking_chains;
+  /// Touches more than two caps or spans a cap's level (a stepped ring,
+  /// part II): its runs balance by its own submap constraints, not as
+  /// source = target.
+  bool spans_caps = false;
 };
 
 struct Classification {

@@ -124,6 +124,7 @@ void CooperScheme::constrain_many(const scheme::VolumeView& view,
   if (!m.ok) return;
   const std::string tag = volume_name(view.volume_id) + " (cooper many-to-one)";
   for (const SideFace& side : m.sides) {
+    if (side.spans_caps) continue;  // balanced by its submap
     problem.add_equal(side.source_curves, side.target_curves,
                       tag + ": side surface " + std::to_string(side.surface) +
                           " upper cap boundary = lower cap boundary");

@@ -49,11 +49,13 @@ Barrel form_barrels(const BarrelInput& input) {
     for (int v : loop) n = std::max(n, v + 1);
   }
   for (int v : input.stop_nodes) n = std::max(n, v + 1);
+  for (int v : input.blocked_nodes) n = std::max(n, v + 1);
   const Graph g = build_graph(input.side_quads, n);
 
   std::vector<char> in_rib(static_cast<size_t>(n), 0);
   std::vector<char> stop(static_cast<size_t>(n), 0);
   for (int v : input.stop_nodes) stop[static_cast<size_t>(v)] = 1;
+  for (int v : input.blocked_nodes) in_rib[static_cast<size_t>(v)] = 1;
   std::vector<int> front;
   for (const auto& loop : input.upper_loops) {
     for (int v : loop) {

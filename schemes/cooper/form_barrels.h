@@ -20,6 +20,9 @@ struct BarrelInput {
   std::vector<std::vector<int>> upper_loops;
   /// Nodes of the other caps (sorted or not); a rib stops on reaching one.
   std::vector<int> stop_nodes;
+  /// Side nodes already in the ribs of a barrel above (a side face spanning
+  /// several barrels, sec. 4 Fig. 8): never taken by a rib.
+  std::vector<int> blocked_nodes;
 };
 
 struct Barrel {

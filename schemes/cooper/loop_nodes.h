@@ -5,6 +5,7 @@
 #include "framework/geometry/model.h"
 #include "framework/mesh/mesh_db.h"
 
+#include <array>
 #include <vector>
 
 namespace cooperage::cooper {
@@ -14,5 +15,11 @@ namespace cooperage::cooper {
 /// `volume_id` when a curve is not meshed or a loop is not closed.
 std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
                                          int volume_id, int surface_id);
+
+/// Boundary loops of a consistently oriented quad set (an upper cap made of
+/// a real cap and the virtual caps beside it, sec. 4 Fig. 8d): the edges used
+/// by one quad, chained in quad order, each loop starting at its smallest
+/// node. Empty when the boundary is not a set of simple loops.
+std::vector<std::vector<int>> quad_boundary_loops(const std::vector<std::array<int, 4>>& quads);
 
 }  // namespace cooperage::cooper

@@ -26,6 +26,7 @@ namespace cooperage::cooper::detail {
 struct VirtualCap {
   std::vector<mesh::Quad> quads;
   std::vector<mesh::Tri> tris;
+  std::vector<int> rib_nodes;  // MeshDB side nodes of its barrel's ribs above it (flush sides)
 };
 
 // The elements of a barrel's upper end of one kind (quads N = 4, triangles
@@ -72,6 +73,9 @@ class Builder {
   /// Side quads, rib loops of the upper cap, stop nodes and the expected rib
   /// ends of barrel b; the ribs.
   Barrel ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_nodes) const;
+  /// Rib loops of an upper cap with flush virtual caps beside it: the
+  /// boundary of the real cap's mesh and every inflowing virtual cap.
+  std::vector<std::vector<int>> flush_upper_loops(const BarrelPlan& p) const;
   BarrelReport barrel(size_t b);
   BarrelReport two_sided(size_t b);
   /// A barrel meshed from the middle: swept from its virtual cap (made by

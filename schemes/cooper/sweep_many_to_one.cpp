@@ -73,14 +73,32 @@ Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_no
     bin.side_quads.insert(bin.side_quads.end(), m.quads.begin(), m.quads.end());
   }
   std::set<int> filled;
+  bool flush = false;
   for (int i : p.inflow) {
     const auto c = lower_curves(plan_.barrels[static_cast<size_t>(i)]);
     filled.insert(c.begin(), c.end());
+    if (plan_.barrels[static_cast<size_t>(i)].flush) {
+      flush = true;
+      const auto& done = virtual_[static_cast<size_t>(i)].rib_nodes;
+      bin.blocked_nodes.insert(bin.blocked_nodes.end(), done.begin(), done.end());
+    }
   }
   const auto upper_loops = loop_nodes(model_, db_, vid_, p.upper);
   const auto& upper_geo = model_.surface(p.upper).loops;
-  for (size_t k = 0; k < upper_loops.size(); ++k) {
+  for (size_t k = 0; k < upper_loops.size() && !flush; ++k) {
     if (!filled.count(upper_geo[k].uses.front().curve)) bin.upper_loops.push_back(upper_loops[k]);
+  }
+  if (flush) {
+    // The combined cap's inner nodes (e.g. on the curve where the real cap
+    // meets the virtual one) lie on side faces too: no rib takes them.
+    bin.upper_loops = flush_upper_loops(p);
+    std::set<int> rim;
+    for (const auto& l : bin.upper_loops) rim.insert(l.begin(), l.end());
+    for (const auto& q : meshed(p.upper, "source cap").quads) {
+      for (int g : q) {
+        if (!rim.count(g)) bin.blocked_nodes.push_back(g);
+      }
+    }
   }
   const int lower_surface = p.lower ? p.lower : p.into;
   const auto lower_loops = loop_nodes(model_, db_, vid_, lower_surface);
@@ -99,11 +117,57 @@ Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_no
   for (const auto& rib : barrel.ribs) ends.push_back(rib.back());
   std::sort(ends.begin(), ends.end());
   std::sort(expected.begin(), expected.end());
-  if (!barrel.all_ribs_on_stop_nodes || ends != expected) {
+  if (!p.flush && (!barrel.all_ribs_on_stop_nodes || ends != expected)) {
     fail(vid_, name + ": the ribs do not end on the loops of cap " + std::to_string(lower_surface) +
                    " that the barrel's sides reach");
   }
   return barrel;
+}
+
+// cite: Blacker 1996, sec. 4, Fig. 8d (the lower cap of a barrel stopped by
+// an adjacent cap is combined with it into the next barrel's upper cap).
+std::vector<std::vector<int>> Builder::flush_upper_loops(const BarrelPlan& p) const {
+  std::vector<mesh::Quad> quads;
+  const bool outward = model_.sense_in(p.upper, vid_) == geom::Sense::Forward;
+  for (mesh::Quad q : meshed(p.upper, "source cap").quads) {
+    if (outward) std::swap(q[1], q[3]);
+    quads.push_back(q);
+  }
+  auto global = [&](int local) {
+    const int g = out_.global[static_cast<size_t>(local)];
+    return g >= 0 ? g : -2 - local;  // volume nodes: never on the boundary
+  };
+  for (int i : p.inflow) {
+    for (const auto& q : virtual_[static_cast<size_t>(i)].quads) {
+      quads.push_back({global(q[0]), global(q[1]), global(q[2]), global(q[3])});
+    }
+  }
+  auto loops = quad_boundary_loops(quads);
+  // Same direction as the real cap's loops (loop_nodes): compare a shared edge.
+  const auto real = loop_nodes(model_, db_, vid_, p.upper);
+  int sense = 0;
+  for (const auto& l : loops) {
+    for (size_t k = 0; k < l.size() && !sense; ++k) {
+      const int a = l[k], b = l[(k + 1) % l.size()];
+      for (const auto& r : real) {
+        const auto it = std::find(r.begin(), r.end(), a);
+        if (it == r.end()) continue;
+        const size_t i = static_cast<size_t>(it - r.begin());
+        if (r[(i + 1) % r.size()] == b) sense = 1;
+        if (r[(i + r.size() - 1) % r.size()] == b) sense = -1;
+      }
+    }
+  }
+  bool ok = sense != 0 && !loops.empty();
+  for (auto& l : loops) {
+    if (sense < 0) std::reverse(l.begin(), l.end());
+    for (int v : l) ok = ok && v >= 0;
+  }
+  if (!ok) {
+    fail(vid_, "cap " + std::to_string(p.upper) + " and the virtual caps beside it do not form an upper cap "
+               "bounded by side nodes");
+  }
+  return loops;
 }
 
 // cite: Blacker 1996, sec. 5.2 (subtraction onto a lower cap without
@@ -212,6 +276,7 @@ BarrelReport Builder::barrel(size_t b) {
     }
   } else {
     VirtualCap& v = virtual_[b];
+    for (const auto& rib : barrel.ribs) v.rib_nodes.insert(v.rib_nodes.end(), rib.begin(), rib.end() - 1);
     for (const auto& q : in.quads) {
       v.quads.push_back({node[top + static_cast<size_t>(q[0])], node[top + static_cast<size_t>(q[1])],
                          node[top + static_cast<size_t>(q[2])], node[top + static_cast<size_t>(q[3])]});

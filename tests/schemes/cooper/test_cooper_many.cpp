@@ -307,6 +307,64 @@ TEST(CooperMany, StepStraddlingTwoLowerRegionsIntersects) {
   expect_many_to_one(model, r, 58.0, "straddling_step");
 }
 
+// A step flush with the front wall (4 x 4 x 1 block, 2 x 2 x 1 step at the
+// front edge; volume 20): the front face touches the step top, the shoulder
+// and the bottom. Its ring of sides is split at the shoulder's level (sec. 4,
+// Fig. 8): the step's barrel stops there, its virtual cap lies beside the
+// shoulder, and the two together start the barrel to the bottom.
+void flush_step(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 1});
+  wb.brick("step", {1, 0, 1}, {2, 2, 1});
+  wb.fuse("part", {"b", "step"});
+}
+
+TEST(CooperMany, StepFlushWithAnOuterWallSplitsTheWallAtTheShoulder) {
+  occ::Workbench wb;
+  flush_step(wb);
+  const geom::Model model = wb.build_model();
+  ASSERT_NEAR(model.volume(1).volume, 20.0, 1e-6);
+  const auto registry = builtin();
+  SweepHints down;
+  down.direction = Vec3(0, 0, -1);
+  const ManyToOne m = classify_barrels(model, 1, *registry, down);
+  ASSERT_TRUE(m.ok) << m.why;
+  ASSERT_EQ(m.barrels.size(), 2u);
+  EXPECT_TRUE(m.barrels[0].flush);
+  EXPECT_EQ(m.barrels[1].inflow, std::vector<int>{0});
+  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  expect_many_to_one(model, r, 20.0, "flush_step");
+}
+
+// The classic stepped L (the step across the whole width, flush with three
+// walls; the side walls touch three caps): classified along z as two barrels
+// (one-to-one along x scores higher in the pipeline; a direction hint
+// selects z).
+TEST(CooperMany, ClassicStepFlushWithThreeWallsClassifiesAlongTheStep) {
+  occ::Workbench wb;
+  wb.brick("b", {0, 0, 0}, {4, 4, 1});
+  wb.brick("step", {0, 0, 1}, {4, 2, 1});
+  wb.fuse("part", {"b", "step"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  SweepHints down;
+  down.direction = Vec3(0, 0, -1);
+  const ManyToOne m = classify_barrels(model, 1, *registry, down);
+  ASSERT_TRUE(m.ok) << m.why;
+  ASSERT_EQ(m.barrels.size(), 2u);
+  EXPECT_TRUE(m.barrels[0].flush);
+  EXPECT_NEAR(std::abs(m.axis.z()), 1.0, 1e-9);
+  // Meshed along z when the journal hints the direction.
+  auto hinted = std::make_unique<scheme::Registry>();
+  hinted->add(map::make_surface_map());
+  hinted->add(submap::make_submap());
+  hinted->add(map::make_volume_map());
+  CooperOptions options;
+  options.hints[1] = down;
+  hinted->add(make_cooper(*hinted, options));
+  const auto r = pipeline::mesh_model(model, sized(0.25), *hinted, selector::mesh_options());
+  expect_many_to_one(model, r, 24.0, "classic_flush_step_along_z");
+}
+
 // A boss whose footprint contains the appendage's below: rejected, a priori.
 TEST(CooperMany, NestedFootprintsOnBothEndsAreRejectedWithAReason) {
   occ::Workbench wb;
@@ -399,6 +457,48 @@ TEST(CooperMany, Fig3aIsRejectedNamingTheFacesAndMeshesAfterAWebcut) {
   expect_many_to_one(pieces, r, 32.0 + 1.0 + 1.0, "fig3a_after_webcut");
 }
 
+// The cylinder with a coaxial boss of examples/cylinder_boss.xml.
+void cylinder_boss(occ::Workbench& wb) {
+  wb.cylinder("body", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
+  wb.cylinder("boss", {0, 0, 3}, {0, 0, 1}, 1.0, 1.5);
+  wb.fuse("part", {"body", "boss"});
+}
+
+// Orientation insensitivity for every geometry issue 7 requires: a seeded
+// rigid motion of the model gives the moved mesh, node for node, with the
+// same element count (one seed per geometry).
+TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
+  struct Case {
+    const char* name;
+    void (*build)(occ::Workbench&);
+    unsigned seed;
+  };
+  const std::vector<Case> cases = {{"cylinder_boss", cylinder_boss, 11},
+                                   {"two_bosses_and_hole", two_bosses_and_hole, 12},
+                                   {"appendages_top_and_bottom", appendages_top_and_bottom, 13},
+                                   {"straddling_step", straddling_step, 14}};
+  const auto registry = with_polygon_mesher(true);
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto motion = testing::RigidMotion::random(c.seed);
+    occ::Workbench still, moved;
+    c.build(still);
+    c.build(moved);
+    motion.apply(moved, "part");
+    const geom::Model m0 = still.build_model(), m1 = moved.build_model();
+    const auto r0 = pipeline::mesh_model(m0, sized(0.25), *registry, selector::mesh_options());
+    const auto r1 = pipeline::mesh_model(m1, sized(0.25), *registry, selector::mesh_options());
+    EXPECT_EQ(r0.plan.volumes.at(1).scheme, "cooper");
+    ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
+    ASSERT_EQ(r0.mesh.volume(1).hexes.size(), r1.mesh.volume(1).hexes.size());
+    EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
+    const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
+    EXPECT_LT(worst, 1e-7);
+    std::printf("[cooper II] %s moved (seed %u): %zu hexes, worst node distance %.2e\n", c.name, c.seed,
+                r0.mesh.volume(1).hexes.size(), worst);
+  }
+}
+
 // The journals shipped for the examples mesh as the tests above do.
 TEST(CooperMany, JournalsMeshThroughThePipeline) {
   const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
@@ -435,3 +535,4 @@ TEST(CooperMany, ExampleCylinderBossMeshes) {
 
 }  // namespace
 }  // namespace cooperage::cooper
+
