@@ -35,10 +35,10 @@ class CurveGeometry {
 
 /// Result of projecting a point onto a surface.
 struct SurfaceProjection {
-  Vec3 point;      ///< closest point on the bounded face
-  Vec3 normal;     ///< unit normal there, the surface's natural orientation
-  Vec2 uv;         ///< surface parameters of point
-  double distance; ///< |p - point|
+  Vec3 point = Vec3::Zero();   ///< closest point on the bounded face
+  Vec3 normal = Vec3::Zero();  ///< unit normal there, the surface's natural orientation
+  Vec2 uv = Vec2::Zero();      ///< surface parameters of point
+  double distance = 0.0;       ///< |p - point|
 };
 
 /// A parametric surface restricted to its face. The natural normal is the
