@@ -1,6 +1,6 @@
 #include "schemes/builtin_schemes.h"
 
-#include "framework/mesh2d/recombine.h"
+#include "framework/mesh/split_poor_quads.h"
 #include "framework/mesh2d/triangulate.h"
 
 #include "schemes/cooper/cooper_scheme.h"
@@ -8,6 +8,7 @@
 #include "schemes/map/volume_map.h"
 #include "schemes/pave/pave_2d.h"
 #include "schemes/pave/pave_scheme.h"
+#include "schemes/quad_dominant/quad_dominant_scheme.h"
 #include "schemes/submap/submap_scheme.h"
 #include "schemes/tri/tri_scheme.h"
 
@@ -24,29 +25,32 @@ class Pave2D final : public scheme::PolygonMesher {
   }
 };
 
-// The triangle (wedge mode) and quad-dominant (mixed mode) counterparts:
-// the tri scheme's 2D core, framework/mesh2d, without and with recombination.
+// The triangle counterpart for wedge mode: the tri scheme's 2D core,
+// framework/mesh2d.
 class Triangles2D final : public scheme::PolygonMesher {
  public:
-  explicit Triangles2D(bool recombine) : recombine_(recombine) {}
   scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
     mesh2d::Triangulation2D t = mesh2d::triangulate(loops);
     scheme::QuadMesh2D out;
     out.boundary_count = static_cast<int>(t.boundary_count);
-    if (!recombine_) {
-      out.points = std::move(t.points);
-      out.tris = std::move(t.triangles);
-      return out;
-    }
-    mesh2d::MixedMesh2D m = mesh2d::recombine(t);
-    out.points = std::move(m.points);
-    out.quads = std::move(m.quads);
-    out.tris = std::move(m.triangles);
+    out.points = std::move(t.points);
+    out.tris = std::move(t.triangles);
     return out;
   }
+};
 
- private:
-  bool recombine_;
+// The quad-dominant counterpart for mixed mode, as the quad_dominant scheme:
+// pave's quads, those below the mixed quad quality split into triangles.
+class QuadDominant2D final : public scheme::PolygonMesher {
+ public:
+  scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
+    pave::QuadMesh2D m = pave::pave_2d(loops);
+    std::vector<geom::Vec3> points;
+    points.reserve(m.points.size());
+    for (const Eigen::Vector2d& p : m.points) points.emplace_back(p.x(), p.y(), 0.0);
+    mesh::QuadDominant split = mesh::split_poor_quads(points, m.quads, cooper::kMixedMinQuadQuality);
+    return {std::move(m.points), std::move(split.quads), m.boundary_count, std::move(split.tris)};
+  }
 };
 
 }  // namespace
@@ -60,12 +64,14 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
   registry.add(submap::make_submap(options.vertex_types));
   registry.add(pave::make_pave());
   registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
-  registry.add(tri::make_quad_dominant());  // likewise; cooper's mixed caps
+  // Likewise; cooper's mixed caps: pave's quads, the poor ones split.
+  registry.add(std::make_unique<quad_dominant::QuadDominantScheme>(pave::make_pave(),
+                                                                   cooper::kMixedMinQuadQuality));
   registry.add(map::make_volume_map());
   cooper::CooperOptions cooper_options;
   cooper_options.polygon_mesher = std::make_shared<Pave2D>();
-  cooper_options.triangle_mesher = std::make_shared<Triangles2D>(false);
-  cooper_options.quad_dominant_mesher = std::make_shared<Triangles2D>(true);
+  cooper_options.triangle_mesher = std::make_shared<Triangles2D>();
+  cooper_options.quad_dominant_mesher = std::make_shared<QuadDominant2D>();
   for (const io::VolumeSetting& v : options.volumes) {
     if (!v.sources.empty() || !v.targets.empty() || v.direction) {
       cooper_options.hints[v.id] = {v.sources, v.targets, v.direction};

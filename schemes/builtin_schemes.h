@@ -21,8 +21,8 @@ struct BuiltinOptions {
 BuiltinOptions builtin_options(const io::MeshSettings& settings);
 
 /// Surface schemes, most preferred first: map, submap, pave, tri (triangles,
-/// only when pinned or a cooper role), quad_dominant (quads and triangles,
-/// likewise). Volume schemes: map, then cooper (which asks the registry for
+/// only when pinned or a cooper role), quad_dominant (pave's quads with the
+/// poor ones split into triangles, likewise). Volume schemes: map, then cooper (which asks the registry for
 /// submap/map/pave/tri/quad_dominant by name, so the registry must outlive it).
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options = {});
 

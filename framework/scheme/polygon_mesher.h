@@ -6,8 +6,9 @@
 // paving algorithm is currently used"). The pave scheme's 2D core
 // (schemes/pave/pave_2d.h, pave::pave_2d) is the intended implementation;
 // the registration code wraps it and hands it to the schemes that need it.
-// In wedge and mixed mode cooper uses triangle and quad-dominant
-// implementations (framework/mesh2d), so a mesh may carry triangles too.
+// In wedge mode cooper uses a triangle implementation (framework/mesh2d), in
+// mixed mode pave's 2D core with its poor quads split
+// (framework/mesh/split_poor_quads.h), so a mesh may carry triangles too.
 #pragma once
 
 #include <Eigen/Core>
@@ -33,8 +34,9 @@ class PolygonMesher {
   /// Meshes the domain bounded by `loops` (quads, or triangles / both for
   /// the wedge and mixed meshers), adding no node on the boundary.
   /// \param[in] loops outer loop counter-clockwise first, then holes
-  /// clockwise; each a closed ring without repetition (an all-quad mesher
-  /// needs an even number of nodes in every loop). Throws MeshingError on failure.
+  /// clockwise; each a closed ring without repetition (an all-quad mesher,
+  /// and the quad-dominant one built on it, needs an even number of nodes
+  /// in every loop). Throws MeshingError on failure.
   virtual QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const = 0;
 };
 

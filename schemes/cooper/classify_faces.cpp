@@ -184,8 +184,9 @@ std::string named_cap_scheme(const geom::Model& model, const scheme::Registry& r
 }
 
 // Mixed mode: map or submap where they reach the mixed quad quality (their
-// score is the scaled Jacobian they reach), else quad_dominant. Pave is
-// left out: it makes quads at any cost, where mixed mode wants triangles.
+// score is the scaled Jacobian they reach), else quad_dominant (pave with
+// its quads below that quality split into triangles). Plain pave is left
+// out: it keeps a poor quad where mixed mode wants two triangles.
 std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
                              int surface, std::string& why) {
   std::string best;

@@ -131,10 +131,11 @@ void CooperScheme::constrain_many(const scheme::VolumeView& view,
   }
   // Even loops where imprinted subcaps are meshed in 2D (pave's 2D core
   // needs every loop even): both real caps of a barrel with subcaps on both
-  // ends (Blacker 1996, sec. 5.3, 6.1: even parity for all-quad). The
-  // triangle and quad-dominant meshers of wedge and mixed mode need none.
+  // ends (Blacker 1996, sec. 5.3, 6.1: even parity for all-quad). Mixed mode
+  // meshes them with pave too (then splits poor quads); the triangle mesher
+  // of wedge mode needs none.
   for (const BarrelPlan& b : m.barrels) {
-    if (b.lower_inflow.empty() || elements(view.volume_id) != Elements::Hex) continue;
+    if (b.lower_inflow.empty() || elements(view.volume_id) == Elements::Wedge) continue;
     for (int cap : {b.upper, b.lower}) {
       const auto& loops = view.model.surface(cap).loops;
       for (size_t l = 0; l < loops.size(); ++l) {

@@ -33,8 +33,9 @@ struct CooperOptions {
   /// sec. 6.1); null: barrels with subcaps on both ends are not applicable.
   /// The registration code wraps pave's 2D core (pave::pave_2d) here.
   std::shared_ptr<const scheme::PolygonMesher> polygon_mesher;
-  /// The same for wedge mode (triangles) and mixed mode (quad-dominant);
-  /// the registration code wraps framework/mesh2d here.
+  /// The same for wedge mode (triangles; the registration code wraps
+  /// framework/mesh2d) and mixed mode (quad-dominant; pave's 2D core with
+  /// the quads below kMixedMinQuadQuality split, framework/mesh/split_poor_quads.h).
   std::shared_ptr<const scheme::PolygonMesher> triangle_mesher;
   std::shared_ptr<const scheme::PolygonMesher> quad_dominant_mesher;
   /// Element kind per volume id (journal `elements=`); absent: Hex.

@@ -11,13 +11,14 @@ enum class Elements {
   Hex,    ///< quad caps (map / submap / pave) swept into hexes
   Wedge,  ///< triangle caps ("tri") swept into wedges
   /// map / submap caps where they reach a scaled Jacobian of at least
-  /// kMixedMinQuadQuality, else "quad_dominant" caps (quads where good,
-  /// triangles where not), swept into hexes and wedges
+  /// kMixedMinQuadQuality, else "quad_dominant" caps (pave's quads, those
+  /// below kMixedMinQuadQuality split into two triangles), swept into hexes
+  /// and wedges
   Mixed,
 };
 
 /// Mixed mode: the quality a cap quad must reach (map / submap scores are
-/// the scaled Jacobian they reach; quad_dominant recombines to this bound).
+/// the scaled Jacobian they reach; quad_dominant splits quads below it).
 inline constexpr double kMixedMinQuadQuality = 0.5;
 
 }  // namespace cooperage::cooper

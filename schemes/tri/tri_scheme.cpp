@@ -25,12 +25,6 @@ scheme::Applicability TriScheme::applicable(const scheme::SurfaceView& view) con
         ": no boundary loops (a closed surface such as a full sphere or "
         "torus has no curve mesh to triangulate); tri needs at least one loop");
   }
-  if (recombine_) {
-    return scheme::Applicability::yes(
-        0.1, surface_name(s.id) + ": " + std::to_string(s.loops.size()) +
-                 " loop(s); quad_dominant meshes any face with loops (quads, triangles where "
-                 "no good quad fits)");
-  }
   return scheme::Applicability::yes(
       0.1, surface_name(s.id) + ": " + std::to_string(s.loops.size()) +
                " loop(s); tri triangulates any face with loops (triangles, not quads)");
@@ -76,46 +70,24 @@ scheme::EntityMesh TriScheme::mesh(const scheme::SurfaceView& view,
   }
   for (size_t i = t.boundary_count; i < t.points.size(); ++i)
     local[i] = out.add(space.point(t.points[i]));
-  const std::string scheme_name(name());
-  // Corner (a, b, c) turns counter-clockwise about the surface normal.
-  auto check = [&](int a, int b, int c) {
-    const Vec3& pa = out.coords[static_cast<size_t>(a)];
-    const Vec3& pb = out.coords[static_cast<size_t>(b)];
-    const Vec3& pc = out.coords[static_cast<size_t>(c)];
-    if (!((pb - pa).cross(pc - pa).dot(space.normal((pa + pb + pc) / 3.0)) > 0.0)) {
-      fail(sid, scheme_name +
-                    ": an element is inverted or flat against the surface normal (the face's "
-                    "parameterisation is too distorted)");
+  out.tris.reserve(t.triangles.size());
+  for (const auto& tri : t.triangles) {
+    const mesh::Tri e{local[static_cast<size_t>(tri[0])], local[static_cast<size_t>(tri[1])],
+                      local[static_cast<size_t>(tri[2])]};
+    const Vec3& a = out.coords[static_cast<size_t>(e[0])];
+    const Vec3& b = out.coords[static_cast<size_t>(e[1])];
+    const Vec3& c = out.coords[static_cast<size_t>(e[2])];
+    const Vec3 n = (b - a).cross(c - a);
+    if (!(n.dot(space.normal((a + b + c) / 3.0)) > 0.0)) {
+      fail(sid,
+           "tri: a triangle is inverted or flat against the surface normal (the face's "
+           "parameterisation is too distorted)");
     }
-  };
-  auto to_local = [&](int k) { return local[static_cast<size_t>(k)]; };
-  if (!recombine_) {
-    out.tris.reserve(t.triangles.size());
-    for (const auto& tri : t.triangles) {
-      const mesh::Tri e{to_local(tri[0]), to_local(tri[1]), to_local(tri[2])};
-      check(e[0], e[1], e[2]);
-      out.tris.push_back(e);
-    }
-    return out;
-  }
-  const mesh2d::MixedMesh2D m = mesh2d::recombine(t, *recombine_);
-  for (const auto& q : m.quads) {
-    const mesh::Quad e{to_local(q[0]), to_local(q[1]), to_local(q[2]), to_local(q[3])};
-    for (size_t k = 0; k < 4; ++k) check(e[k], e[(k + 1) % 4], e[(k + 3) % 4]);
-    out.quads.push_back(e);
-  }
-  for (const auto& tri : m.triangles) {
-    const mesh::Tri e{to_local(tri[0]), to_local(tri[1]), to_local(tri[2])};
-    check(e[0], e[1], e[2]);
     out.tris.push_back(e);
   }
   return out;
 }
 
 std::unique_ptr<scheme::SurfaceScheme> make_tri() { return std::make_unique<TriScheme>(); }
-
-std::unique_ptr<scheme::SurfaceScheme> make_quad_dominant() {
-  return std::make_unique<TriScheme>(mesh2d::RefineOptions{}, mesh2d::RecombineOptions{});
-}
 
 }  // namespace cooperage::tri

@@ -4,16 +4,11 @@
 // refinement (framework/mesh2d) in the face's distortion-aware 2D space
 // (face_space.h), interior nodes mapped back onto the surface. For the
 // wedge/hexahedral mix of Blacker 1996 (abstract: "or a wedge/hexahedral
-// element mix if desired"): triangle caps swept into wedges. Registered a
-// second time as "quad_dominant": the same triangulation with triangle pairs
-// recombined into quads where the quad is good (framework/mesh2d/recombine.h),
-// for the mixed caps swept into hexes and wedges.
+// element mix if desired"): triangle caps swept into wedges.
 #pragma once
 
 #include <memory>
-#include <optional>
 
-#include "framework/mesh2d/recombine.h"
 #include "framework/mesh2d/triangulate.h"
 #include "framework/scheme/scheme.h"
 
@@ -21,34 +16,26 @@ namespace cooperage::tri {
 
 class TriScheme final : public scheme::SurfaceScheme {
  public:
-  /// \param[in] recombine  set: quad-dominant ("quad_dominant"), else triangles ("tri")
-  explicit TriScheme(mesh2d::RefineOptions options = {},
-                     std::optional<mesh2d::RecombineOptions> recombine = std::nullopt)
-      : options_(options), recombine_(recombine) {}
-  std::string_view name() const override { return recombine_ ? "quad_dominant" : "tri"; }
+  explicit TriScheme(mesh2d::RefineOptions options = {}) : options_(options) {}
+  std::string_view name() const override { return "tri"; }
   /// Any face with at least one loop (a closed face such as a full sphere
   /// has no boundary to triangulate). Low score: triangles, not quads.
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   /// At least 3 intervals around every loop.
   void constrain(const scheme::SurfaceView& view,
                  intervals::IntervalProblem& problem) const override;
-  /// Triangles (quad_dominant: quads and the triangles left over) oriented
-  /// with the natural normal; boundary nodes are exactly
+  /// Triangles oriented with the natural normal; boundary nodes are exactly
   /// the curve nodes, interior nodes new. Sizes grade between the loops'
   /// spacings. Throws MeshingError(MeshingFailed, surface) when a curve is
   /// not meshed, the loops are invalid in the face's 2D space, or a
-  /// triangle or quad would come out inverted against the surface normal.
+  /// triangle would come out inverted against the surface normal.
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
                           const scheme::MeshParams& params) const override;
 
  private:
   mesh2d::RefineOptions options_;
-  std::optional<mesh2d::RecombineOptions> recombine_;
 };
 
 std::unique_ptr<scheme::SurfaceScheme> make_tri();
-/// The quad-dominant variant: quads of quality >= 0.5 (every angle within
-/// [30, 150] degrees in the face's 2D space), triangles where none is possible.
-std::unique_ptr<scheme::SurfaceScheme> make_quad_dominant();
 
 }  // namespace cooperage::tri

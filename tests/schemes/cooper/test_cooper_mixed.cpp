@@ -1,15 +1,18 @@
 // cooper in mixed mode (journal elements="mixed"): a prism whose profile has
-// a 20-degree corner. Its cap is meshed quad-dominant (triangle pairs merged
-// into quads with every angle within [30, 150] degrees), the sweep makes
-// hexes from quads and wedges from triangles in one conformal mesh.
-// Triangles appear only where a good quad does not fit: at the corner every
-// quad has a 20-degree angle. Hex mode, for comparison, must put a quad
-// there; the two minimum scaled Jacobians are measured and compared.
+// a 20-degree corner. Its cap is meshed quad_dominant (pave's quads, those
+// with a scaled Jacobian below kMixedMinQuadQuality split into two
+// triangles), the sweep makes hexes from quads and wedges from triangles in
+// one conformal mesh. Triangles appear only where a quad would be poor: at
+// the corner every quad has a 20-degree angle (sin 20 ~ 0.342). Hex mode,
+// for comparison, must put a quad there; the two minimum scaled Jacobians
+// are measured and compared. A rigid motion of the blade moves the mesh.
 #include "support/mixed_mesh_check.h"
+#include "support/rigid_motion.h"
 
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
+#include "schemes/cooper/elements.h"
 #include "selector/select_schemes.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +29,7 @@ namespace {
 using geom::Vec3;
 
 constexpr double kCorner = 20.0 * M_PI / 180.0;
+constexpr double kSize = 0.25;
 
 // Profile (0,0) (8,0) (8,2) (2/tan 20, 2): corners of 20, 90, 90 and 160
 // degrees; extruded 1 along z. Volume (8 + 8 - 2/tan 20) / 2 * 2 * 1.
@@ -36,7 +40,7 @@ void blade(occ::Workbench& wb) {
 
 pipeline::MeshResult mesh(const geom::Model& model, io::ElementKind elements) {
   io::MeshSettings s;
-  s.size = 0.25;
+  s.size = kSize;
   io::VolumeSetting v;
   v.id = 1;
   v.elements = elements;
@@ -44,6 +48,20 @@ pipeline::MeshResult mesh(const geom::Model& model, io::ElementKind elements) {
   scheme::Registry registry;
   register_builtin_schemes(registry, builtin_options(s));
   return pipeline::mesh_model(model, s, registry, selector::mesh_options());
+}
+
+Eigen::Vector2d xy(const mesh::MeshDB& db, int n) { return db.node(n).head<2>(); }
+
+// Scaled Jacobian of the 2D quad (a, b, c, d) in the order given: the
+// smallest corner sine, signed (counter-clockwise positive).
+double quad_sj_2d(const mesh::MeshDB& db, const std::array<int, 4>& q) {
+  double worst = 1.0;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d in = xy(db, q[k]) - xy(db, q[(k + 3) % 4]);
+    const Eigen::Vector2d out = xy(db, q[(k + 1) % 4]) - xy(db, q[k]);
+    worst = std::min(worst, (in.x() * out.y() - in.y() * out.x()) / (in.norm() * out.norm()));
+  }
+  return worst;
 }
 
 TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
@@ -60,14 +78,11 @@ TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
   ASSERT_GT(s.hexes, 0u);
   ASSERT_GT(s.wedges, 0u);
   EXPECT_GT(s.hex_wedge_quads, 0u);  // hexes and wedges meet on shared quads
-  // Quad-dominant: mostly hexes (the recombination of a Delaunay refinement
-  // leaves about one cap cell in eight a triangle, see test_recombine.cpp),
-  // and every hex has the recombination's quality.
-  EXPECT_LT(static_cast<double>(s.wedges), 0.2 * static_cast<double>(s.hexes + s.wedges));
-  EXPECT_GE(s.min_hex_sj, 0.5);
+  // A straight sweep of a planar cap: a hex's scaled Jacobian is its cap
+  // quad's, and every cap quad below the threshold was split.
+  EXPECT_GE(s.min_hex_sj, kMixedMinQuadQuality - 1e-9);
 
-  // The source cap: the one surface with triangles that is not the target;
-  // its quads and triangles, the corner node of the 20-degree angle.
+  // The source cap (meshed quad_dominant), the corner node of the 20-degree angle.
   int source = 0;
   for (const auto& [id, entry] : r.plan.surfaces) {
     if (entry.scheme == "quad_dominant") source = id;
@@ -76,46 +91,55 @@ TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
   const auto& cap = r.mesh.surface(source);
   EXPECT_FALSE(cap.quads.empty());
   ASSERT_FALSE(cap.tris.empty());
+  // Every cap quad reaches the threshold in the cap plane (the cap faces
+  // -z or +z; its elements turn the way its quads' total signed area says).
+  double signed_area = 0;
+  for (const auto& q : cap.quads) {
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d a = xy(r.mesh, q[k]), b = xy(r.mesh, q[(k + 1) % 4]);
+      signed_area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+  }
+  const double facing = std::copysign(1.0, signed_area);
+  for (const auto& q : cap.quads) {
+    const std::array<int, 4> ccw = facing > 0 ? q : std::array<int, 4>{q[3], q[2], q[1], q[0]};
+    EXPECT_GE(quad_sj_2d(r.mesh, ccw), kMixedMinQuadQuality - 1e-9);
+  }
   int corner = -1;
   for (const auto& t : cap.tris) {
     for (int n : t) {
-      if (r.mesh.node(n).head<2>().norm() < 1e-9) corner = n;
+      if (xy(r.mesh, n).norm() < 1e-9) corner = n;
     }
   }
   ASSERT_GE(corner, 0) << "no triangle at the 20-degree corner";
-  for (const auto& q : cap.quads) {
-    for (int n : q) EXPECT_NE(n, corner) << "a quad with the 20-degree angle";
+  // Triangles only where needed: (a) near the corner, within 3 element
+  // sizes of the tip (away from it pave's quads are good, so none is split
+  // there); (b) no two neighbouring triangles would make a quad of the
+  // threshold quality (else they would be a quad).
+  double farthest = 0;
+  for (const auto& t : cap.tris) {
+    for (int n : t) farthest = std::max(farthest, xy(r.mesh, n).norm());
   }
-  // Every triangle has a reason: no two neighbouring triangles would make a
-  // quad with all angles in [30, 150] (else they would have been merged).
+  EXPECT_LE(farthest, 3 * kSize) << "a cap triangle far from the 20-degree corner";
   std::map<std::pair<int, int>, int> apex;  // directed edge -> opposite node
   for (const auto& t : cap.tris) {
     for (int k = 0; k < 3; ++k) apex[{t[(k + 1) % 3], t[(k + 2) % 3]}] = t[k];
   }
-  const auto xy = [&](int n) { return Eigen::Vector2d(r.mesh.node(n).head<2>()); };
   for (const auto& [e, c] : apex) {
     const auto twin = apex.find({e.second, e.first});
     if (twin == apex.end()) continue;
-    const std::array<int, 4> q{c, e.first, twin->second, e.second};
-    const double orientation = std::copysign(
-        1.0, (xy(e.first) - xy(c)).x() * (xy(e.second) - xy(c)).y() -
-                 (xy(e.first) - xy(c)).y() * (xy(e.second) - xy(c)).x());
-    double worst = 1.0;
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector2d in = xy(q[k]) - xy(q[(k + 3) % 4]), out = xy(q[(k + 1) % 4]) - xy(q[k]);
-      worst = std::min(worst, orientation * (in.x() * out.y() - in.y() * out.x()) / (in.norm() * out.norm()));
+    std::array<int, 4> q{c, e.first, twin->second, e.second};
+    if (facing < 0) q = {q[3], q[2], q[1], q[0]};
+    EXPECT_LT(quad_sj_2d(r.mesh, q), kMixedMinQuadQuality) << "two cap triangles would make a good quad";
+  }
+  // The wedges are the cap triangles swept: all within 3 sizes of the tip edge.
+  for (const auto& [id, v] : r.mesh.volumes()) {
+    for (const auto& w : v.wedges) {
+      for (int n : w) EXPECT_LE(xy(r.mesh, n).norm(), 3 * kSize);
     }
-    EXPECT_LT(worst, 0.5) << "two cap triangles would make a good quad";
   }
-  // The tip has triangles (the corner one at least).
-  size_t near_tip = 0;
-  for (const auto& t : cap.tris) {
-    const Vec3 c = (r.mesh.node(t[0]) + r.mesh.node(t[1]) + r.mesh.node(t[2])) / 3.0;
-    if (c.head<2>().norm() < 1.0) ++near_tip;
-  }
-  EXPECT_GE(near_tip, 1u);
-  std::printf("[cooper mixed] blade: cap %zu quads + %zu triangles (%zu within 1.0 of the tip)\n",
-              cap.quads.size(), cap.tris.size(), near_tip);
+  std::printf("[cooper mixed] blade: cap %zu quads + %zu triangles, all within %.3f of the tip\n",
+              cap.quads.size(), cap.tris.size(), farthest);
 
   // Hex mode on the same solid must make a quad at the corner: the best it
   // can do there is sin 20 ~ 0.342.
@@ -127,11 +151,64 @@ TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
   // normalisation (2/sqrt 3) sin 20 ~ 0.395 at best) beats hex mode's worst hex.
   const double mixed_min = std::min(s.min_hex_sj, s.min_wedge_sj);
   EXPECT_GT(mixed_min, hs.min_hex_sj);
+  EXPECT_LE(s.min_wedge_sj, 2 / std::sqrt(3.0) * std::sin(kCorner) + 1e-6);
   ::testing::Test::RecordProperty("blade_mixed_min_scaled_jacobian", std::to_string(mixed_min));
   ::testing::Test::RecordProperty("blade_hex_min_scaled_jacobian", std::to_string(hs.min_hex_sj));
   std::printf("[cooper mixed] blade: mixed %zu hexes + %zu wedges, min SJ hex %.4f wedge %.4f; "
               "hex mode %zu hexes, min SJ %.4f\n",
               s.hexes, s.wedges, s.min_hex_sj, s.min_wedge_sj, hs.hexes, hs.min_hex_sj);
+}
+
+// Orientation insensitivity (Blacker 1996): the mixed mesh of a rigidly
+// moved blade is the moved mesh, the same hexes and wedges.
+TEST(CooperMixed, RigidMotionGivesTheMovedMesh) {
+  const auto motion = testing::RigidMotion::random(10);
+  auto build = [&](bool moved) {
+    occ::Workbench wb;
+    blade(wb);
+    if (moved) motion.apply(wb, "blade");
+    return wb.build_model();
+  };
+  const geom::Model m0 = build(false), m1 = build(true);
+  const pipeline::MeshResult r0 = mesh(m0, io::ElementKind::Mixed);
+  const pipeline::MeshResult r1 = mesh(m1, io::ElementKind::Mixed);
+  ASSERT_FALSE(r0.mesh.volume(1).wedges.empty());
+  ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
+  EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
+  EXPECT_EQ(r0.mesh.volume(1).wedges, r1.mesh.volume(1).wedges);
+  EXPECT_LT(testing::moved_node_distance(r0.mesh, r1.mesh, motion), 1e-8);
+}
+
+// Many-to-one: the blade with a block on top and one below, so both real
+// caps of the blade's barrel are imprinted and meshed in 2D by the
+// quad-dominant polygon mesher (pave's 2D core, poor quads split). The
+// triangles are again only at the 20-degree tip.
+TEST(CooperMixed, BladeWithAppendagesHasTrianglesOnlyAtTheTip) {
+  occ::Workbench wb;
+  blade(wb);
+  wb.brick("top", {6.25, 0.5, 1}, {1, 1, 0.5});
+  wb.brick("bottom", {4.5, 0.25, -0.75}, {1, 1, 0.75});
+  wb.fuse("part", {"blade", "top", "bottom"});
+  const geom::Model model = wb.build_model();
+  const pipeline::MeshResult r = mesh(model, io::ElementKind::Mixed);
+  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const testing::MixedMeshSummary s = testing::check_mixed_mesh(model, r.mesh);
+  const double solid = 16.0 - 2.0 / std::tan(kCorner) + 0.5 + 0.75;
+  EXPECT_NEAR(s.volume, solid, 1e-9 * solid);
+  ASSERT_GT(s.wedges, 0u);
+  EXPECT_GE(s.min_hex_sj, kMixedMinQuadQuality - 1e-9);
+  double farthest = 0;
+  for (const auto& [id, v] : r.mesh.volumes()) {
+    for (const auto& w : v.wedges) {
+      for (int n : w) farthest = std::max(farthest, xy(r.mesh, n).norm());
+    }
+  }
+  EXPECT_LE(farthest, 3 * kSize);
+  // The caps with the tip are imprinted, so cooper meshes them (in 2D), no surface scheme.
+  for (const auto& [id, entry] : r.plan.surfaces) EXPECT_NE(entry.scheme, "quad_dominant") << id;
+  std::printf("[cooper mixed II] blade with appendages: %zu hexes + %zu wedges (within %.3f of the "
+              "tip), min SJ hex %.4f wedge %.4f\n",
+              s.hexes, s.wedges, farthest, s.min_hex_sj, s.min_wedge_sj);
 }
 
 }  // namespace

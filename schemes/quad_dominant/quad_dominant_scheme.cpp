@@ -1,0 +1,34 @@
+#include "schemes/quad_dominant/quad_dominant_scheme.h"
+
+#include "framework/mesh/split_poor_quads.h"
+
+#include <cstdio>
+#include <string>
+
+namespace cooperage::quad_dominant {
+
+scheme::Applicability QuadDominantScheme::applicable(const scheme::SurfaceView& view) const {
+  scheme::Applicability a = quads_->applicable(view);
+  if (!a.ok) return a;
+  char threshold[32];
+  std::snprintf(threshold, sizeof threshold, "%g", min_quality_);
+  return scheme::Applicability::yes(
+      0.1, a.why + "; quad_dominant splits its quads of scaled Jacobian below " + threshold +
+               " into triangles");
+}
+
+void QuadDominantScheme::constrain(const scheme::SurfaceView& view,
+                                   intervals::IntervalProblem& problem) const {
+  quads_->constrain(view, problem);
+}
+
+scheme::EntityMesh QuadDominantScheme::mesh(const scheme::SurfaceView& view,
+                                            const scheme::MeshParams& params) const {
+  scheme::EntityMesh out = quads_->mesh(view, params);
+  mesh::QuadDominant split = mesh::split_poor_quads(out.coords, out.quads, min_quality_);
+  out.quads = std::move(split.quads);
+  out.tris.insert(out.tris.end(), split.tris.begin(), split.tris.end());
+  return out;
+}
+
+}  // namespace cooperage::quad_dominant

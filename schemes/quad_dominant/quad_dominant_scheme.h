@@ -1,0 +1,40 @@
+// The surface scheme "quad_dominant": quads where quads are good, triangles
+// where they are not, for cooper's mixed caps (journal elements="mixed").
+// It meshes the face with an all-quad scheme (the registration code passes
+// pave; schemes never include each other) and splits every quad whose
+// scaled Jacobian is below the threshold into two triangles
+// (framework/mesh/split_poor_quads.h). The quads kept are exactly pave's
+// quads of at least that quality, the triangles sit where pave had to put
+// a poor quad, e.g. at a sharp corner; no boundary edge changes.
+#pragma once
+
+#include "framework/scheme/scheme.h"
+
+#include <memory>
+
+namespace cooperage::quad_dominant {
+
+class QuadDominantScheme final : public scheme::SurfaceScheme {
+ public:
+  /// \param[in] quads        the all-quad scheme whose poor quads are split
+  /// \param[in] min_quality  the smallest scaled Jacobian of a kept quad
+  QuadDominantScheme(std::unique_ptr<scheme::SurfaceScheme> quads, double min_quality)
+      : quads_(std::move(quads)), min_quality_(min_quality) {}
+  std::string_view name() const override { return "quad_dominant"; }
+  /// Where the quad scheme applies, at a low score (0.1): chosen only when
+  /// pinned or imposed by a mixed sweep, never by the selector over quads.
+  scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
+  /// The quad scheme's constraints (pave: an even interval sum).
+  void constrain(const scheme::SurfaceView& view,
+                 intervals::IntervalProblem& problem) const override;
+  /// The quad scheme's mesh with the quads below min_quality split; its
+  /// nodes unchanged. Throws what the quad scheme throws.
+  scheme::EntityMesh mesh(const scheme::SurfaceView& view,
+                          const scheme::MeshParams& params) const override;
+
+ private:
+  std::unique_ptr<scheme::SurfaceScheme> quads_;
+  double min_quality_;
+};
+
+}  // namespace cooperage::quad_dominant
