@@ -43,7 +43,9 @@ SteppedRing split_stepped_ring(const geom::Model& model, int volume_id, const ge
   // contact bounds the segment below the cap. A side lies inside the volume
   // from a convex contact, outside the cap's outward normal from a re-entrant one.
   std::map<std::pair<int, int>, bool> goes_down;
-  auto outward = [&](int cap) {
+  // Returns a Vec3, not an Eigen expression: the expression would refer to
+  // the projection, a temporary gone at the end of the return statement.
+  auto outward = [&](int cap) -> geom::Vec3 {
     const geom::Surface& f = model.surface(cap);
     return geom::sign(model.sense_in(cap, volume_id)) * f.geometry->project(0.5 * (f.box.min + f.box.max)).normal;
   };
