@@ -45,6 +45,20 @@
 
 namespace cooperage::pave {
 
+/// Where pave_2d's time goes: CPU seconds per step, summed over attempts
+/// (for benchmarks; filled only when PaveOptions::stats is set).
+struct PaveStats {
+  double boundary = 0;     ///< (b) coarse loops, rings, tips
+  double triangulate = 0;  ///< (c) refined constrained Delaunay triangulation
+  double recombine = 0;    ///< (d) recombination and parity paths
+  double split = 0;        ///< (e) all-quad split
+  double cleanup = 0;      ///< (f) doublets and diamonds
+  double smooth = 0;       ///< (f) untangling, Laplacian sweeps, optimisation
+  double check = 0;        ///< (f) inversion and tiling checks
+  int attempts = 0;        ///< settings tried (1 unless retried)
+  int sweeps = 0;          ///< Laplacian sweeps of the last attempt
+};
+
 struct PaveOptions {
   detail::SmoothOptions smooth;      ///< the final smoothing
   double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
@@ -55,6 +69,7 @@ struct PaveOptions {
   double retry_below = 0.2;          ///< worst scaled Jacobian below which other settings are tried too
   int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
   bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
+  PaveStats* stats = nullptr;        ///< [out] step timings when set (reset by pave_2d)
 };
 
 /// A 2D quad mesh: boundary nodes first, in the input order (loop by loop),

@@ -153,10 +153,10 @@ void untangle(std::vector<V2>& pts, const std::vector<Quad>& quads, const std::v
 
 }  // namespace
 
-void smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const std::vector<char>& fixed,
+int smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const std::vector<char>& fixed,
                      const SmoothOptions& opt) {
   const size_t n = pts.size();
-  if (quads.empty()) return;
+  if (quads.empty()) return 0;
   const Incidence inc = build_incidence(n, quads);
   double mean_edge = 0.0;
   for (const Quad& q : quads) {
@@ -172,7 +172,9 @@ void smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const
     if (!fixed[i] && inc.start[i + 1] > inc.start[i]) free_nodes.push_back(i);
   }
 
+  int sweeps = 0;
   for (int sweep = 0; sweep < opt.sweeps; ++sweep) {
+    ++sweeps;
     double largest = 0.0;
     for (size_t i : free_nodes) {
       const V2 x0 = pts[i];
@@ -219,6 +221,7 @@ void smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const
     }
     if (!any) break;
   }
+  return sweeps;
 }
 
 }  // namespace cooperage::pave::detail

@@ -37,7 +37,8 @@ struct SmoothOptions {
 };
 
 /// Moves the free nodes (fixed[i] == 0) of the counter-clockwise quads.
-void smooth_quads_2d(std::vector<Eigen::Vector2d>& points, const std::vector<Quad>& quads,
+/// \return the number of Laplacian sweeps made
+int smooth_quads_2d(std::vector<Eigen::Vector2d>& points, const std::vector<Quad>& quads,
                      const std::vector<char>& fixed, const SmoothOptions& options = {});
 
 }  // namespace cooperage::pave::detail
