@@ -1,6 +1,7 @@
 #include "schemes/pave/cdt_2d.h"
 
 #include "schemes/pave/cdt_kernel.h"
+#include "schemes/pave/spatial_order.h"
 
 #include <algorithm>
 #include <cmath>
@@ -194,19 +195,39 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     }
   }
 
+  // Output in Hilbert order: Steiner points and triangles sorted along the
+  // curve (input points keep their indices), so that the later steps,
+  // which walk these arrays by index, touch memory locally.
+  Eigen::AlignedBox2d domain;
+  for (int i = 0; i < n; ++i) domain.extend(cdt.pt(i));
+  const HilbertKeys key(domain);
+  const int total = static_cast<int>(cdt.p.size());
+  std::vector<std::uint64_t> point_keys;
+  point_keys.reserve(static_cast<size_t>(total - n - 3));
+  for (int i = n + 3; i < total; ++i) point_keys.push_back(key(cdt.pt(i)));
+  const std::vector<int> point_order = order_by_key(point_keys);
+  std::vector<int> id(static_cast<size_t>(total), -1);
   Triangulation2D out;
-  out.points.reserve(cdt.p.size() - 3);
-  for (int i = 0; i < static_cast<int>(cdt.p.size()); ++i) {
-    if (i < n || i >= n + 3) out.points.push_back(cdt.pt(i));
+  out.points.reserve(static_cast<size_t>(total - 3));
+  for (int i = 0; i < n; ++i) {
+    id[static_cast<size_t>(i)] = i;
+    out.points.push_back(cdt.pt(i));
   }
+  for (int k : point_order) {
+    id[static_cast<size_t>(n + 3 + k)] = static_cast<int>(out.points.size());
+    out.points.push_back(cdt.pt(n + 3 + k));
+  }
+  std::vector<std::array<int, 3>> tris;
+  std::vector<std::uint64_t> tri_keys;
   for (const Tri& T : cdt.t) {
     if (!T.alive || !T.inside) continue;
-    std::array<int, 3> v = T.v;
-    for (int& k : v) {
-      if (k >= n + 3) k -= 3;
-    }
-    out.tris.push_back(v);
+    std::array<int, 3> v;
+    for (size_t k = 0; k < 3; ++k) v[k] = id[static_cast<size_t>(T.v[k])];
+    tris.push_back(v);
+    tri_keys.push_back(key((cdt.pt(T.v[0]) + cdt.pt(T.v[1]) + cdt.pt(T.v[2])) / 3.0));
   }
+  out.tris.reserve(tris.size());
+  for (int k : order_by_key(tri_keys)) out.tris.push_back(tris[static_cast<size_t>(k)]);
   return out;
 }
 
