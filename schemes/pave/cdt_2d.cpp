@@ -195,17 +195,18 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     }
   }
 
-  // Output in Hilbert order: Steiner points and triangles sorted along the
-  // curve (input points keep their indices), so that the later steps,
-  // which walk these arrays by index, touch memory locally.
+  // Output in Hilbert order: Steiner points sorted along the curve (input
+  // points keep their indices), triangles by their lowest point (a counting
+  // sort), so that the later steps, which walk these arrays by index, touch
+  // memory locally.
   Eigen::AlignedBox2d domain;
   for (int i = 0; i < n; ++i) domain.extend(cdt.pt(i));
   const HilbertKeys key(domain);
   const int total = static_cast<int>(cdt.p.size());
-  std::vector<std::uint64_t> point_keys;
-  point_keys.reserve(static_cast<size_t>(total - n - 3));
-  for (int i = n + 3; i < total; ++i) point_keys.push_back(key(cdt.pt(i)));
-  const std::vector<int> point_order = order_by_key(point_keys);
+  std::vector<std::pair<std::uint64_t, int>> steiner;
+  steiner.reserve(static_cast<size_t>(total - n - 3));
+  for (int i = n + 3; i < total; ++i) steiner.emplace_back(key(cdt.pt(i)), i);
+  std::sort(steiner.begin(), steiner.end());
   std::vector<int> id(static_cast<size_t>(total), -1);
   Triangulation2D out;
   out.points.reserve(static_cast<size_t>(total - 3));
@@ -213,21 +214,25 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     id[static_cast<size_t>(i)] = i;
     out.points.push_back(cdt.pt(i));
   }
-  for (int k : point_order) {
-    id[static_cast<size_t>(n + 3 + k)] = static_cast<int>(out.points.size());
-    out.points.push_back(cdt.pt(n + 3 + k));
+  for (const auto& [k, i] : steiner) {
+    id[static_cast<size_t>(i)] = static_cast<int>(out.points.size());
+    out.points.push_back(cdt.pt(i));
   }
-  std::vector<std::array<int, 3>> tris;
-  std::vector<std::uint64_t> tri_keys;
+  std::vector<int> first(out.points.size() + 1, 0);
+  for (const Tri& T : cdt.t) {
+    if (!T.alive || !T.inside) continue;
+    const int lo = std::min({id[static_cast<size_t>(T.v[0])], id[static_cast<size_t>(T.v[1])],
+                             id[static_cast<size_t>(T.v[2])]});
+    ++first[static_cast<size_t>(lo) + 1];
+  }
+  for (size_t i = 0; i + 1 < first.size(); ++i) first[i + 1] += first[i];
+  out.tris.resize(static_cast<size_t>(first.back()));
   for (const Tri& T : cdt.t) {
     if (!T.alive || !T.inside) continue;
     std::array<int, 3> v;
     for (size_t k = 0; k < 3; ++k) v[k] = id[static_cast<size_t>(T.v[k])];
-    tris.push_back(v);
-    tri_keys.push_back(key((cdt.pt(T.v[0]) + cdt.pt(T.v[1]) + cdt.pt(T.v[2])) / 3.0));
+    out.tris[static_cast<size_t>(first[static_cast<size_t>(std::min({v[0], v[1], v[2]}))]++)] = v;
   }
-  out.tris.reserve(tris.size());
-  for (int k : order_by_key(tri_keys)) out.tris.push_back(tris[static_cast<size_t>(k)]);
   return out;
 }
 

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -35,7 +34,7 @@ inline std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int bits) {
   return d;
 }
 
-/// Hilbert keys of points on a 2^20 grid over `box` (deterministic: a
+/// Hilbert keys of points on a 2^16 grid over `box` (deterministic: a
 /// function of the coordinates only).
 class HilbertKeys {
  public:
@@ -52,20 +51,9 @@ class HilbertKeys {
   }
 
  private:
-  static constexpr int kBits = 20;
+  static constexpr int kBits = 16;
   Eigen::Vector2d lo_;
   double scale_ = 1.0;
 };
-
-/// The indices 0..keys.size()-1 sorted by key (ties by index).
-inline std::vector<int> order_by_key(const std::vector<std::uint64_t>& keys) {
-  std::vector<int> order(keys.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    const auto ka = keys[static_cast<size_t>(a)], kb = keys[static_cast<size_t>(b)];
-    return ka != kb ? ka < kb : a < b;
-  });
-  return order;
-}
 
 }  // namespace cooperage::pave::detail
