@@ -13,7 +13,7 @@
 // can be given the same boundary node counts on the same curves).
 //
 // BM_Pave2D/<n>: pave_2d alone on the unit square with n boundary segments per
-// side (~1.75 n^2 quads); counters also give the CPU milliseconds per step
+// side (~0.9 n^2 quads); counters also give the CPU milliseconds per step
 // (PaveStats: t_boundary, t_cdt, t_recombine, t_split, t_cleanup, t_smooth,
 // t_check) and the Laplacian sweeps made.
 #include "bench_models.h"
@@ -167,8 +167,8 @@ void BM_PaveFace(benchmark::State& state) {
 }
 BENCHMARK(BM_PaveFace)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 
-// Unit square, n boundary segments per side, counter-clockwise (~1.75 n^2
-// quads: pave refines to about the boundary spacing, then splits).
+// Unit square, n boundary segments per side, counter-clockwise (~0.9 n^2
+// quads: pave refines to about twice the boundary spacing, then splits).
 void BM_Pave2D(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   std::vector<Eigen::Vector2d> loop;
@@ -209,6 +209,6 @@ void BM_Pave2D(benchmark::State& state) {
   state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
 }
 // ~5k, ~50k, ~500k quads.
-BENCHMARK(BM_Pave2D)->Arg(53)->Arg(169)->Arg(535)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Pave2D)->Arg(74)->Arg(235)->Arg(745)->Unit(benchmark::kMillisecond);
 
 }  // namespace

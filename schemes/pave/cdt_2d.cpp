@@ -134,9 +134,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
       const double h = (cdt.size[static_cast<size_t>(T.v[0])] + cdt.size[static_cast<size_t>(T.v[1])] +
                         cdt.size[static_cast<size_t>(T.v[2])]) / 3.0;
       const double lmin = std::sqrt(std::min({ab.squaredNorm(), ac.squaredNorm(), (cc - b).squaredNorm()}));
-      // 0.64: an equilateral triangle of edge ~1.1 h passes, and so does a
-      // seeded boundary-row rectangle (h x 0.72 h, R = 0.62 h).
-      const bool bad = R > 0.64 * h || (R > 0.45 * h && R > 1.1 * lmin);
+      // Too big, or fairly big with a short edge (input.max_radius).
+      const bool bad = R > input.max_radius * h || (R > 0.7 * input.max_radius * h && R > 1.1 * lmin);
       if (!bad) continue;
       const int loc = cdt.locate(center, ti, true);
       if (loc < 0 || !cdt.tri(loc).inside) continue;

@@ -15,8 +15,10 @@
 //  (c) constrained Delaunay triangulation of the coarse loops (cdt_2d.h),
 //      first seeded with a point 0.72 coarse sizes inward of every flat
 //      coarse vertex (paving's first row at the coarse level), then refined
-//      to twice the local boundary spacing: sizes grade smoothly between
-//      loops of different spacing by interpolation;
+//      to about twice the local boundary spacing (circumradius bound, tuned
+//      so the final mesh has ~1 quad per spacing^2): sizes grade smoothly
+//      between loops of different spacing by interpolation; the output is
+//      renumbered along a Hilbert curve so later steps stay cache-local;
 //  (d) recombination of triangle pairs into quads, greedy by quality plus
 //      augmenting paths (recombine.h);
 //  (e) every quad split into 4 and every triangle into 3 quads
