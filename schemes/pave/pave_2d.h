@@ -64,6 +64,7 @@ struct PaveStats {
 struct PaveOptions {
   detail::SmoothOptions smooth;      ///< the final smoothing
   double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
+  double max_radius = 0.9;           ///< coarse triangles' circumradius bound, in local sizes (CdtInput)
   double ring_width = 0.75;          ///< ring around a 4-node hole, in hole widths
   double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
   bool cleanup = true;               ///< remove doublets
