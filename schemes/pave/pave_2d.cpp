@@ -273,18 +273,22 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
 
   // A failed attempt is retried with other settings: wrapping more tips,
   // a narrower ring around 4-node holes, no tip wrapping, stricter
-  // recombination (fewer, better quads), a finer triangulation.
+  // recombination (fewer, better quads); then the first two again with the
+  // finer triangulation of earlier versions (a coarse triangulation can be
+  // too coarse for a thin feature).
   std::vector<PaveOptions> attempts(4, options);
   attempts[1].tip_angle = 200.0;
   attempts[1].ring_width = 0.5;
   attempts[2].tip_angle = 360.0;
   attempts[2].recombine_quality = 0.6;
-  attempts[2].max_radius = 0.64;
   attempts[3].tip_angle = 180.0;
   attempts[3].ring_width = 0.35;
   attempts[3].recombine_quality = 0.9;
-  attempts[3].max_radius = 0.64;
   for (size_t k = 0; k < attempts.size(); ++k) attempts[k].odd_edge_rank = static_cast<int>(k);
+  for (size_t k = 0; k < 2; ++k) {
+    attempts.push_back(attempts[k]);
+    attempts.back().max_radius = std::min(options.max_radius, 0.64);
+  }
   std::vector<V2> P;
   std::vector<detail::Quad> quads;
   // An attempt whose worst quad is below options.retry_below is kept only

@@ -32,7 +32,7 @@
 //  midpoint; such edges are paired by paths of coarse cells that lose their
 //  midpoints too (parity_paths.h), so only the total must be even, as in
 //  paving. A failed attempt, or one whose worst quad is below
-//  retry_below, is retried with other settings (up to 3 retries; the best
+//  retry_below, is retried with other settings (up to 5 retries; the best
 //  valid attempt wins).
 // Requirement: an even total node count and at least 4 nodes per loop.
 #pragma once
