@@ -69,7 +69,7 @@ struct PaveOptions {
   double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
   bool cleanup = true;               ///< remove doublets
   bool boundary_rows = true;         ///< seed a coarse row along flat boundary stretches
-  double retry_below = 0.2;          ///< worst scaled Jacobian below which other settings are tried too
+  double retry_below = 0.5;          ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
   int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
   bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
   PaveStats* stats = nullptr;        ///< [out] step timings when set (reset by pave_2d)
