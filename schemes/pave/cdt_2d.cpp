@@ -1,6 +1,7 @@
 #include "schemes/pave/cdt_2d.h"
 
 #include "schemes/pave/cdt_kernel.h"
+#include "schemes/pave/spatial_order.h"
 
 #include <algorithm>
 #include <cmath>
@@ -133,9 +134,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
       const double h = (cdt.size[static_cast<size_t>(T.v[0])] + cdt.size[static_cast<size_t>(T.v[1])] +
                         cdt.size[static_cast<size_t>(T.v[2])]) / 3.0;
       const double lmin = std::sqrt(std::min({ab.squaredNorm(), ac.squaredNorm(), (cc - b).squaredNorm()}));
-      // 0.64: an equilateral triangle of edge ~1.1 h passes, and so does a
-      // seeded boundary-row rectangle (h x 0.72 h, R = 0.62 h).
-      const bool bad = R > 0.64 * h || (R > 0.45 * h && R > 1.1 * lmin);
+      // Too big, or fairly big with a short edge (input.max_radius).
+      const bool bad = R > input.max_radius * h || (R > 0.7 * input.max_radius * h && R > 1.1 * lmin);
       if (!bad) continue;
       const int loc = cdt.locate(center, ti, true);
       if (loc < 0 || !cdt.tri(loc).inside) continue;
@@ -194,18 +194,43 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     }
   }
 
+  // Output in Hilbert order: Steiner points sorted along the curve (input
+  // points keep their indices), triangles by their lowest point (a counting
+  // sort), so that the later steps, which walk these arrays by index, touch
+  // memory locally.
+  Eigen::AlignedBox2d domain;
+  for (int i = 0; i < n; ++i) domain.extend(cdt.pt(i));
+  const HilbertKeys key(domain);
+  const int total = static_cast<int>(cdt.p.size());
+  std::vector<std::pair<std::uint64_t, int>> steiner;
+  steiner.reserve(static_cast<size_t>(total - n - 3));
+  for (int i = n + 3; i < total; ++i) steiner.emplace_back(key(cdt.pt(i)), i);
+  std::sort(steiner.begin(), steiner.end());
+  std::vector<int> id(static_cast<size_t>(total), -1);
   Triangulation2D out;
-  out.points.reserve(cdt.p.size() - 3);
-  for (int i = 0; i < static_cast<int>(cdt.p.size()); ++i) {
-    if (i < n || i >= n + 3) out.points.push_back(cdt.pt(i));
+  out.points.reserve(static_cast<size_t>(total - 3));
+  for (int i = 0; i < n; ++i) {
+    id[static_cast<size_t>(i)] = i;
+    out.points.push_back(cdt.pt(i));
   }
+  for (const auto& [k, i] : steiner) {
+    id[static_cast<size_t>(i)] = static_cast<int>(out.points.size());
+    out.points.push_back(cdt.pt(i));
+  }
+  std::vector<int> first(out.points.size() + 1, 0);
   for (const Tri& T : cdt.t) {
     if (!T.alive || !T.inside) continue;
-    std::array<int, 3> v = T.v;
-    for (int& k : v) {
-      if (k >= n + 3) k -= 3;
-    }
-    out.tris.push_back(v);
+    const int lo = std::min({id[static_cast<size_t>(T.v[0])], id[static_cast<size_t>(T.v[1])],
+                             id[static_cast<size_t>(T.v[2])]});
+    ++first[static_cast<size_t>(lo) + 1];
+  }
+  for (size_t i = 0; i + 1 < first.size(); ++i) first[i + 1] += first[i];
+  out.tris.resize(static_cast<size_t>(first.back()));
+  for (const Tri& T : cdt.t) {
+    if (!T.alive || !T.inside) continue;
+    std::array<int, 3> v;
+    for (size_t k = 0; k < 3; ++k) v[k] = id[static_cast<size_t>(T.v[k])];
+    out.tris[static_cast<size_t>(first[static_cast<size_t>(std::min({v[0], v[1], v[2]}))]++)] = v;
   }
   return out;
 }

@@ -31,6 +31,13 @@ struct CdtInput {
   std::vector<double> sizes;             ///< target edge length at each point, > 0
   std::vector<std::vector<int>> loops;   ///< closed rings of point indices: outer CCW, holes CW
   bool refine = true;                    ///< insert interior points at the local size
+  /// Refinement splits a triangle whose circumradius R exceeds max_radius
+  /// times the local size h, or 0.7 max_radius h with an edge shorter than
+  /// R / 1.1. Delaunay refinement leaves triangles well below the bound, so
+  /// 0.9 (an equilateral triangle of edge up to 1.56 h passes) gives about
+  /// one fine quad per (h/2)^2 after recombination and the split; 0.64 gave
+  /// ~1.7.
+  double max_radius = 0.9;
   /// Per loop point (may be empty): the fewest triangles it must end up in. A
   /// flat loop vertex (180 deg) needs 2, else its quad would have a straight
   /// angle; extra points are inserted on the bisector of its widest triangle.

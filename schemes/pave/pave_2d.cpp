@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <cstdlib>
 #include <cstdint>
 #include <unordered_map>
@@ -51,6 +52,22 @@ struct CanonicalFrame {
     return V2(std::round(r.x() / kQuantum) * kQuantum, std::round(r.y() / kQuantum) * kQuantum);
   }
   V2 from(const V2& r) const { return origin + scale * (r.x() * ex + r.y() * V2(-ex.y(), ex.x())); }
+};
+
+/// Adds the CPU time since the last lap to *slot (no-op without stats).
+class Laps {
+ public:
+  explicit Laps(PaveStats* stats) : stats_(stats), last_(std::clock()) {}
+  void lap(double PaveStats::*slot) {
+    if (stats_ == nullptr) return;
+    const std::clock_t now = std::clock();
+    stats_->*slot += static_cast<double>(now - last_) / CLOCKS_PER_SEC;
+    last_ = now;
+  }
+
+ private:
+  PaveStats* stats_;
+  std::clock_t last_;
 };
 
 /// The last line of defence: the quads must tile the domain exactly. Every
@@ -110,6 +127,7 @@ void check_tiling(const std::vector<V2>& P, const std::vector<std::vector<int>>&
 /// one set of options; returns the quads and extends P.
 std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::vector<int>>& ids, int nb,
                                     const PaveOptions& options) {
+  Laps laps(options.stats);
   std::vector<detail::Quad> quads;
   if (ids.size() == 1 && ids[0].size() == 4) {
     quads.push_back({0, 1, 2, 3});
@@ -133,6 +151,7 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     } catch (const std::runtime_error& err) {
       failed(err.what());
     }
+    laps.lap(&PaveStats::boundary);
 
     // (c) refined constrained Delaunay triangulation of the coarse loops.
     detail::CdtInput in;
@@ -143,6 +162,7 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     in.seeds = coarse.seeds;
     in.seed_from = coarse.seed_from;
     in.seed_sizes = coarse.seed_sizes;
+    in.max_radius = options.max_radius;
     detail::Triangulation2D tri;
     try {
       tri = detail::constrained_delaunay(in);
@@ -150,6 +170,7 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
       failed(std::string("triangulation of the boundary failed (") + err.what() +
              "); the loops may touch or cross");
     }
+    laps.lap(&PaveStats::triangulate);
     // (d) recombination, (e) all-quad split.
     const std::vector<detail::Cell> cells = detail::recombine(tri, options.recombine_quality, coarse.min_cells);
 
@@ -161,7 +182,9 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     } catch (const std::runtime_error& err) {
       failed(err.what());
     }
+    laps.lap(&PaveStats::recombine);
     detail::split_to_quads(cells, tri.points, fine_of_coarse, coarse.midpoint, P, quads, no_midpoint);
+    laps.lap(&PaveStats::split);
   }
 
   // (f) cleanup and smoothing.
@@ -173,7 +196,10 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     }
     detail::remove_doublets(P, quads, fixed);
   }
-  detail::smooth_quads_2d(P, quads, fixed, options.smooth);
+  laps.lap(&PaveStats::cleanup);
+  const int sweeps = detail::smooth_quads_2d(P, quads, fixed, options.smooth);
+  if (options.stats != nullptr) options.stats->sweeps = sweeps;
+  laps.lap(&PaveStats::smooth);
   for (size_t k = 0; k < quads.size(); ++k) {
     if (options.check_inversion && !(detail::scaled_jacobian_2d(P, quads[k]) > 1e-6)) {
       failed("quad " + std::to_string(k) + " is inverted or degenerate after smoothing");
@@ -181,7 +207,7 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
   }
 
   if (options.check_inversion) check_tiling(P, ids, quads);
-
+  laps.lap(&PaveStats::check);
   return quads;
 }
 
@@ -247,7 +273,9 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
 
   // A failed attempt is retried with other settings: wrapping more tips,
   // a narrower ring around 4-node holes, no tip wrapping, stricter
-  // recombination (fewer, better quads).
+  // recombination (fewer, better quads); then the first two again with the
+  // finer triangulation of earlier versions (a coarse triangulation can be
+  // too coarse for a thin feature).
   std::vector<PaveOptions> attempts(4, options);
   attempts[1].tip_angle = 200.0;
   attempts[1].ring_width = 0.5;
@@ -257,12 +285,18 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   attempts[3].ring_width = 0.35;
   attempts[3].recombine_quality = 0.9;
   for (size_t k = 0; k < attempts.size(); ++k) attempts[k].odd_edge_rank = static_cast<int>(k);
+  for (size_t k = 0; k < 2; ++k) {
+    attempts.push_back(attempts[k]);
+    attempts.back().max_radius = std::min(options.max_radius, 0.64);
+  }
   std::vector<V2> P;
   std::vector<detail::Quad> quads;
   // An attempt whose worst quad is below options.retry_below is kept only
   // if no other attempt does better.
   double best = -1.0;
+  if (options.stats != nullptr) *options.stats = PaveStats{};
   for (size_t k = 0; k < attempts.size(); ++k) {
+    if (options.stats != nullptr) ++options.stats->attempts;
     std::vector<V2> Pk = P0;
     try {
       std::vector<detail::Quad> qk = mesh_once(Pk, ids, nb, attempts[k]);

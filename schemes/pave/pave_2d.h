@@ -15,8 +15,10 @@
 //  (c) constrained Delaunay triangulation of the coarse loops (cdt_2d.h),
 //      first seeded with a point 0.72 coarse sizes inward of every flat
 //      coarse vertex (paving's first row at the coarse level), then refined
-//      to twice the local boundary spacing: sizes grade smoothly between
-//      loops of different spacing by interpolation;
+//      to about twice the local boundary spacing (circumradius bound, tuned
+//      so the final mesh has ~1 quad per spacing^2): sizes grade smoothly
+//      between loops of different spacing by interpolation; the output is
+//      renumbered along a Hilbert curve so later steps stay cache-local;
 //  (d) recombination of triangle pairs into quads, greedy by quality plus
 //      augmenting paths (recombine.h);
 //  (e) every quad split into 4 and every triangle into 3 quads
@@ -30,7 +32,7 @@
 //  midpoint; such edges are paired by paths of coarse cells that lose their
 //  midpoints too (parity_paths.h), so only the total must be even, as in
 //  paving. A failed attempt, or one whose worst quad is below
-//  retry_below, is retried with other settings (up to 3 retries; the best
+//  retry_below, is retried with other settings (up to 5 retries; the best
 //  valid attempt wins).
 // Requirement: an even total node count and at least 4 nodes per loop.
 #pragma once
@@ -45,16 +47,32 @@
 
 namespace cooperage::pave {
 
+/// Where pave_2d's time goes: CPU seconds per step, summed over attempts
+/// (for benchmarks; filled only when PaveOptions::stats is set).
+struct PaveStats {
+  double boundary = 0;     ///< (b) coarse loops, rings, tips
+  double triangulate = 0;  ///< (c) refined constrained Delaunay triangulation
+  double recombine = 0;    ///< (d) recombination and parity paths
+  double split = 0;        ///< (e) all-quad split
+  double cleanup = 0;      ///< (f) doublets and diamonds
+  double smooth = 0;       ///< (f) untangling, Laplacian sweeps, optimisation
+  double check = 0;        ///< (f) inversion and tiling checks
+  int attempts = 0;        ///< settings tried (1 unless retried)
+  int sweeps = 0;          ///< Laplacian sweeps of the last attempt
+};
+
 struct PaveOptions {
   detail::SmoothOptions smooth;      ///< the final smoothing
   double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
+  double max_radius = 0.9;           ///< coarse triangles' circumradius bound, in local sizes (CdtInput)
   double ring_width = 0.75;          ///< ring around a 4-node hole, in hole widths
   double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
   bool cleanup = true;               ///< remove doublets
   bool boundary_rows = true;         ///< seed a coarse row along flat boundary stretches
-  double retry_below = 0.2;          ///< worst scaled Jacobian below which other settings are tried too
+  double retry_below = 0.5;          ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
   int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
   bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
+  PaveStats* stats = nullptr;        ///< [out] step timings when set (reset by pave_2d)
 };
 
 /// A 2D quad mesh: boundary nodes first, in the input order (loop by loop),

@@ -15,6 +15,10 @@
 // 2. Local optimisation of the nodes next to poor quads: a pattern search
 //    that maximises the worst scaled Jacobian of the node's quads (the
 //    "optimisation-based" smoothing of Canann, Tristano & Staten 1998).
+// 3. Polish of the nodes next to fair quads (below 0.9): a short pattern
+//    search maximising the mean scaled Jacobian of the node's quads without
+//    lowering the worst (near irregular nodes the Laplacian places nodes by
+//    position, not by shape); last, so that it cannot trap step 2.
 #pragma once
 
 #include "schemes/pave/quad_quality_2d.h"
@@ -31,13 +35,18 @@ struct SmoothOptions {
   double keep_quality = 0.6;   ///< a move may lower the worst quality down to this if the mean improves
   double optimise_below = 0.7; ///< nodes of quads worse than this get the pattern search
   int optimise_rounds = 10;
+  /// Rounds of the polish: nodes of quads worse than polish_below maximise
+  /// the mean quality of their quads without lowering their worst.
+  int polish_rounds = 1;
+  double polish_below = 0.9;
   /// Weight of the parallelogram rule against the length-weighted Laplacian;
   /// 0 measured best on the benchmark faces (median scaled Jacobian).
   double parallelogram_weight = 0.0;
 };
 
 /// Moves the free nodes (fixed[i] == 0) of the counter-clockwise quads.
-void smooth_quads_2d(std::vector<Eigen::Vector2d>& points, const std::vector<Quad>& quads,
+/// \return the number of Laplacian sweeps made
+int smooth_quads_2d(std::vector<Eigen::Vector2d>& points, const std::vector<Quad>& quads,
                      const std::vector<char>& fixed, const SmoothOptions& options = {});
 
 }  // namespace cooperage::pave::detail

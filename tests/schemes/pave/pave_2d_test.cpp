@@ -125,6 +125,24 @@ TEST(Pave2D, BadLoopsAreRejected) {
   EXPECT_THROW(pave_2d({circle({0, 0}, 1, 2)}), MeshingError);                  // too few nodes
 }
 
+TEST(Pave2D, StatsAreFilledWhenAskedAndDoNotChangeTheMesh) {
+  const Loops square{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {20, 20, 20, 20})};
+  PaveStats stats;
+  stats.attempts = 99;  // reset by pave_2d
+  PaveOptions options;
+  options.stats = &stats;
+  const QuadMesh2D with = pave_2d(square, options);
+  const QuadMesh2D without = pave_2d(square);
+  EXPECT_EQ(with.quads, without.quads);
+  EXPECT_EQ(with.points, without.points);
+  EXPECT_EQ(stats.attempts, 1);
+  EXPECT_GT(stats.sweeps, 0);
+  for (double t : {stats.boundary, stats.triangulate, stats.recombine, stats.split, stats.cleanup, stats.smooth,
+                   stats.check}) {
+    EXPECT_GE(t, 0.0);
+  }
+}
+
 TEST(Pave2D, ThroughputIsPrinted) {
   // About 3k, 12k and 48k quads: the time should grow linearly.
   for (int n : {40, 80, 160}) {

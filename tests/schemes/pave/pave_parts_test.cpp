@@ -1,13 +1,16 @@
 // Tests of the steps of pave_2d on small hand-made inputs: the constrained
-// Delaunay triangulation, recombination, the all-quad split and cleanup.
+// Delaunay triangulation, recombination, the all-quad split, cleanup,
+// smoothing and the Hilbert order of the triangulation's output.
 #include "schemes/pave/cdt_2d.h"
 #include "schemes/pave/cleanup_2d.h"
 #include "schemes/pave/recombine.h"
 #include "schemes/pave/smooth_2d.h"
+#include "schemes/pave/spatial_order.h"
 #include "schemes/pave/split_to_quads.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <set>
 
 namespace cooperage::pave::detail {
@@ -146,6 +149,43 @@ TEST(PaveSmooth, UntanglesAndNeverMovesFixedNodes) {
     }
   }
   for (const Quad& q : quads) EXPECT_GT(scaled_jacobian_2d(pts, q), 0.9);
+}
+
+TEST(PaveSpatialOrder, HilbertIndexVisitsEveryCellOnceThroughNeighbours) {
+  for (int bits : {1, 2, 4}) {
+    const std::uint32_t n = 1u << bits;
+    std::vector<std::pair<int, int>> cell_at(static_cast<size_t>(n) * n, {-1, -1});
+    for (std::uint32_t x = 0; x < n; ++x) {
+      for (std::uint32_t y = 0; y < n; ++y) {
+        const std::uint64_t d = hilbert_index(x, y, bits);
+        ASSERT_LT(d, cell_at.size());
+        EXPECT_EQ(cell_at[d].first, -1) << "index " << d << " used twice";
+        cell_at[d] = {static_cast<int>(x), static_cast<int>(y)};
+      }
+    }
+    EXPECT_EQ(cell_at.front(), std::make_pair(0, 0));
+    for (size_t d = 1; d < cell_at.size(); ++d) {
+      const int step = std::abs(cell_at[d].first - cell_at[d - 1].first) + std::abs(cell_at[d].second - cell_at[d - 1].second);
+      EXPECT_EQ(step, 1) << "cells " << d - 1 << " and " << d << " are not neighbours (bits " << bits << ")";
+    }
+  }
+}
+
+TEST(PaveCdt, OutputIsInHilbertOrderAndKeepsTheLoopPoints) {
+  const CdtInput in = square_input(16, 2.0 / 16, true);
+  const Triangulation2D t = constrained_delaunay(in);
+  ASSERT_GT(t.points.size(), in.points.size() + 10);
+  for (size_t i = 0; i < in.points.size(); ++i) EXPECT_EQ(t.points[i], in.points[i]);
+  Eigen::AlignedBox2d box;
+  for (const V2& p : in.points) box.extend(p);
+  const HilbertKeys key(box);
+  for (size_t i = in.points.size() + 1; i < t.points.size(); ++i) EXPECT_LE(key(t.points[i - 1]), key(t.points[i]));
+  int previous_lowest = -1;
+  for (const auto& tri : t.tris) {
+    const int lowest = std::min({tri[0], tri[1], tri[2]});
+    EXPECT_GE(lowest, previous_lowest);  // triangles by their lowest point
+    previous_lowest = lowest;
+  }
 }
 
 }  // namespace
