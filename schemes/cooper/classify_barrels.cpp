@@ -225,13 +225,18 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
     for (int s : members) ids.push_back(sides[static_cast<size_t>(s)]->id);
     std::vector<RingCap> ring_caps;
     for (const Face* c : caps) ring_caps.push_back({c->id, c->curves});
-    // Levels along the direction in which every segment starts convex (the
-    // virtual caps at their lower ends); the axis sign is arbitrary.
+    // Levels along the direction in which most open segments step down
+    // (their virtual caps at their lower ends, so a closed barrel with flush
+    // subcaps on one end only is swept from that end); the axis sign is
+    // arbitrary.
+    auto steps_up = [](const SteppedRing& r) {
+      long up = 0;
+      for (const RingSegment& seg : r.segments) up += !seg.convex_upper ? 1 : seg.convex_lower ? 0 : -1;
+      return up;
+    };
     SteppedRing st = split_stepped_ring(model, vid, axis, ids, ring_caps);
-    if (!st.why.empty()) {
-      SteppedRing flipped = split_stepped_ring(model, vid, -axis, ids, ring_caps);
-      if (flipped.why.empty()) st = std::move(flipped);
-    }
+    SteppedRing flipped = split_stepped_ring(model, vid, -axis, ids, ring_caps);
+    if (flipped.why.empty() && (!st.why.empty() || steps_up(flipped) < steps_up(st))) st = std::move(flipped);
     if (!st.why.empty()) return "the side faces joined to surface " + std::to_string(ids.front()) + ": " + st.why;
     for (const SideFace& sf : st.sides) stepped_faces[sf.surface] = sf;
     for (int s : members) stepped_side[static_cast<size_t>(s)] = 1;
@@ -312,14 +317,17 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
                  " has subcaps at both ends (appendages on both sides): its imprinted subcaps "
                  "need a polygon mesher (pave's 2D core), which is not available";
         }
-        if (b.other < b.from) std::swap(b.from, b.other);  // deterministic: lower id is upper
+        // Deterministic: a stepped ring's upper cap is upper (its flush
+        // subcaps arrive beside both real caps), else the lower id.
+        if (b.stepped ? b.from != b.stepped_upper : b.other < b.from) std::swap(b.from, b.other);
       } else if (in_other) {
         std::swap(b.from, b.other);
       }
       std::sort(b.sides.begin(), b.sides.end());
       b.sides.erase(std::unique(b.sides.begin(), b.sides.end()), b.sides.end());
     }
-    if (b.stepped && b.from != b.stepped_upper) {
+    // Open stepped segments start from their convex end (down or up).
+    if (b.stepped && b.closed && b.from != b.stepped_upper) {
       return "the barrel from cap " + std::to_string(b.from) + " runs up a ring of sides that spans "
              "several caps; only rings swept from their upper caps down are supported";
     }
@@ -413,10 +421,18 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
       }
       return c;
     };
+    // A hole loop of the real cap, or for a flush virtual cap (beside the
+    // real cap, no loop of it) the outline of the barrel's own real cap.
+    auto footprint_of = [&](int i, int cap) {
+      const BarrelPlan& q = out.barrels[static_cast<size_t>(i)];
+      if (!q.flush) return footprint(model, cap, lower_of(i), axis);
+      const auto& outer = model.surface(q.upper).loops.front().uses;
+      return footprint(model, q.upper, {outer.front().curve}, axis);
+    };
     for (int ti : m.inflow) {
-      const auto ft = footprint(model, m.upper, lower_of(ti), axis);
+      const auto ft = footprint_of(ti, m.upper);
       for (int bj : m.lower_inflow) {
-        const auto fb = footprint(model, m.lower, lower_of(bj), axis);
+        const auto fb = footprint_of(bj, m.lower);
         if (ft.empty() || fb.empty()) continue;
         if (polygons_cross(ft.front(), fb.front())) {
           out.barrels[static_cast<size_t>(ti)].from_middle = true;

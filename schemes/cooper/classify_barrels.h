@@ -39,7 +39,9 @@ struct BarrelPlan {
   /// With lower == 0: the virtual lower cap lies beside `into` rather than in
   /// a hole loop of it (a step flush with an outer wall: the sides run on
   /// past `into`'s level, sec. 4 Fig. 8); the barrel below starts from the
-  /// outer loop of `into` and this cap together.
+  /// outer loop of `into` and this cap together. A flush barrel may also
+  /// step up into the lower end of a closed barrel (a foot flush with a wall
+  /// below): then that barrel has flush subcaps on its lower end.
   bool flush = false;
   /// Meshed from the middle (sec. 6.1: a stack is meshed once, from any of
   /// its caps): an open barrel whose virtual cap overlaps a subcap arriving

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -66,6 +67,58 @@ std::vector<std::vector<int>> quad_boundary_loops(const std::vector<std::array<i
       loop.push_back(b);
     }
     loops.push_back(loop);
+  }
+  return loops;
+}
+
+std::vector<std::vector<int>> merge_loops(const std::vector<std::vector<int>>& reference,
+                                          const std::vector<std::vector<int>>& others) {
+  auto key = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+  std::map<std::pair<int, int>, int> count;
+  for (const auto* set : {&reference, &others}) {
+    for (const auto& l : *set) {
+      for (size_t k = 0; k < l.size(); ++k) ++count[key(l[k], l[(k + 1) % l.size()])];
+    }
+  }
+  std::map<int, std::vector<int>> next;  // the edges used once, both ways
+  for (const auto& [e, n] : count) {
+    if (n != 1) continue;
+    next[e.first].push_back(e.second);
+    next[e.second].push_back(e.first);
+  }
+  for (const auto& [v, w] : next) {
+    if (w.size() != 2) return {};  // a pinch or an open end: not simple loops
+  }
+  std::vector<std::vector<int>> loops;
+  std::set<int> done;
+  for (const auto& [start, w] : next) {
+    if (done.count(start)) continue;
+    std::vector<int> loop{start};
+    done.insert(start);
+    for (int prev = start, at = w.front(); at != start;) {
+      loop.push_back(at);
+      done.insert(at);
+      const auto& n = next.at(at);
+      const int to = n[0] == prev ? n[1] : n[0];
+      prev = at;
+      at = to;
+    }
+    // Orientation: as the reference loop that runs along one of its edges.
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      int sense = 0;
+      for (const auto& r : reference) {
+        const auto it = std::find(r.begin(), r.end(), a);
+        if (it == r.end()) continue;
+        const size_t i = static_cast<size_t>(it - r.begin());
+        if (r[(i + 1) % r.size()] == b) sense = 1;
+        if (r[(i + r.size() - 1) % r.size()] == b) sense = -1;
+      }
+      if (sense == 0) continue;
+      if (sense < 0) std::reverse(loop.begin(), loop.end());
+      break;
+    }
+    loops.push_back(std::move(loop));
   }
   return loops;
 }

@@ -22,4 +22,12 @@ std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::M
 /// node. Empty when the boundary is not a set of simple loops.
 std::vector<std::vector<int>> quad_boundary_loops(const std::vector<std::array<int, 4>>& quads);
 
+/// Boundary loops of the union of regions bounded by node loops that share
+/// edges (a real cap's loops and the rims of the flush virtual caps beside
+/// it, sec. 4 Fig. 8d, when the real cap has no mesh yet): the edges of one
+/// loop only, chained, each merged loop oriented like the `reference` loop it
+/// shares an edge with. Empty when the boundary is not a set of simple loops.
+std::vector<std::vector<int>> merge_loops(const std::vector<std::vector<int>>& reference,
+                                          const std::vector<std::vector<int>>& others);
+
 }  // namespace cooperage::cooper

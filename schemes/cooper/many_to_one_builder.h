@@ -27,6 +27,9 @@ struct VirtualCap {
   std::vector<mesh::Quad> quads;
   std::vector<mesh::Tri> tris;
   std::vector<int> rib_nodes;  // MeshDB side nodes of its barrel's ribs above it (flush sides)
+  // MeshDB nodes of its boundary, loop by loop: its barrel's rib ends in rib
+  // order (a flush subcap's outline before any mesh is made in it).
+  std::vector<std::vector<int>> rim;
 };
 
 // The elements of a barrel's upper end of one kind (quads N = 4, triangles
@@ -76,6 +79,8 @@ class Builder {
   /// Rib loops of an upper cap with flush virtual caps beside it: the
   /// boundary of the real cap's mesh and every inflowing virtual cap.
   std::vector<std::vector<int>> flush_upper_loops(const BarrelPlan& p) const;
+  /// Records rib_nodes and rim of barrel b's virtual cap from its ribs.
+  void record_ribs(size_t b, const BarrelInput& bin, const Barrel& barrel);
   BarrelReport barrel(size_t b);
   BarrelReport two_sided(size_t b);
   /// A barrel meshed from the middle: swept from its virtual cap (made by

@@ -162,15 +162,24 @@ SteppedRing split_stepped_ring(const geom::Model& model, int volume_id, const ge
     std::sort(seg.sides.begin(), seg.sides.end());
     out.segments.push_back(std::move(seg));
   }
-  // Supported: a chain of open segments, each starting convex and ending in a
-  // virtual cap beside the next segment's upper cap, then one closed segment.
+  // Supported: open segments stepping down into one closed segment (each
+  // starts convex and ends in a virtual cap beside the next segment's upper
+  // cap), then open segments stepping up out of it (each ends convex on a
+  // real cap below and starts in a virtual cap beside the previous segment's
+  // lower cap): steps flush with outer walls on both ends of one barrel.
+  size_t closed = out.segments.size();
+  for (size_t k = 0; k < out.segments.size() && closed == out.segments.size(); ++k) {
+    if (out.segments[k].convex_upper && out.segments[k].convex_lower) closed = k;
+  }
   for (size_t k = 0; k < out.segments.size(); ++k) {
     const RingSegment& seg = out.segments[k];
-    const bool last = k + 1 == out.segments.size();
-    if (!seg.convex_upper || seg.convex_lower != last) {
+    const bool ok = k < closed   ? seg.convex_upper && !seg.convex_lower
+                    : k > closed ? !seg.convex_upper && seg.convex_lower
+                                 : true;
+    if (!ok || closed == out.segments.size()) {
       out.why = "the sides between caps " + std::to_string(seg.upper) + " and " + std::to_string(seg.lower) +
-                " do not step down from one convex cap to the next (one open segment per step, "
-                "then one closed segment)";
+                " do not step from one convex cap to the next (open segments stepping down, one closed "
+                "segment, open segments stepping up)";
       return out;
     }
   }

@@ -12,7 +12,14 @@ scheme::EntityMesh Builder::run(std::vector<BarrelReport>* reports) {
   virtual_.resize(plan_.barrels.size());
   for (size_t b = 0; b < plan_.barrels.size(); ++b) {
     const BarrelPlan& p = plan_.barrels[b];
-    if (p.from_middle) continue;  // after the barrel it flows into
+    if (p.from_middle) {  // after the barrel it flows into; a flush one's outline now
+      if (p.flush) {
+        BarrelInput bin;
+        std::vector<int> lower_nodes;
+        record_ribs(b, bin, ribs(b, bin, lower_nodes));
+      }
+      continue;
+    }
     const BarrelReport r = p.lower_inflow.empty() ? barrel(b) : two_sided(b);
     if (reports) reports->push_back(r);
     // Barrels meshed from the middle: out through the upper end (their
@@ -88,7 +95,29 @@ Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_no
   for (size_t k = 0; k < upper_loops.size() && !flush; ++k) {
     if (!filled.count(upper_geo[k].uses.front().curve)) bin.upper_loops.push_back(upper_loops[k]);
   }
-  if (flush) {
+  const bool two_sided = !p.lower_inflow.empty();
+  if (flush && two_sided) {
+    // The real cap is meshed here later: the upper cap is its loops merged
+    // with the flush subcaps' rims; the nodes inside are taken by no rib.
+    std::vector<std::vector<int>> rims;
+    for (int i : p.inflow) {
+      const auto& rim = virtual_[static_cast<size_t>(i)].rim;
+      rims.insert(rims.end(), rim.begin(), rim.end());
+    }
+    bin.upper_loops = merge_loops(upper_loops, rims);
+    if (bin.upper_loops.empty()) {
+      fail(vid_, name + ": cap " + std::to_string(p.upper) + " and the flush subcaps beside it do not "
+                        "form an upper cap bounded by side nodes");
+    }
+    std::set<int> rim;
+    for (const auto& l : bin.upper_loops) rim.insert(l.begin(), l.end());
+    rims.insert(rims.end(), upper_loops.begin(), upper_loops.end());
+    for (const auto& l : rims) {
+      for (int g : l) {
+        if (!rim.count(g)) bin.blocked_nodes.push_back(g);
+      }
+    }
+  } else if (flush) {
     // The combined cap's inner nodes (e.g. on the curve where the real cap
     // meets the virtual one) lie on side faces too: no rib takes them.
     bin.upper_loops = flush_upper_loops(p);
@@ -111,6 +140,21 @@ Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_no
       expected.insert(expected.end(), lower_loops[k].begin(), lower_loops[k].end());
     }
   }
+  // Flush subcaps arriving beside the real lower cap: the ribs end on the
+  // merged outline of the cap and their rims (sec. 4 Fig. 8d, upside down).
+  std::vector<std::vector<int>> lower_rims;
+  for (int i : p.lower_inflow) {
+    if (!plan_.barrels[static_cast<size_t>(i)].flush) continue;
+    const auto& rim = virtual_[static_cast<size_t>(i)].rim;
+    lower_rims.insert(lower_rims.end(), rim.begin(), rim.end());
+  }
+  if (!lower_rims.empty()) {
+    expected.clear();
+    for (const auto& l : merge_loops(lower_loops, lower_rims)) {
+      expected.insert(expected.end(), l.begin(), l.end());
+      bin.stop_nodes.insert(bin.stop_nodes.end(), l.begin(), l.end());
+    }
+  }
   const Barrel barrel = form_barrels(bin);
   if (!barrel.ok) fail(vid_, name + ": rib formation failed: " + barrel.why);
   std::vector<int> ends;
@@ -122,6 +166,18 @@ Barrel Builder::ribs(size_t b, BarrelInput& bin, std::vector<int>& lower_loop_no
                    " that the barrel's sides reach");
   }
   return barrel;
+}
+
+void Builder::record_ribs(size_t b, const BarrelInput& bin, const Barrel& barrel) {
+  VirtualCap& v = virtual_[b];
+  v.rib_nodes.clear();
+  v.rim.clear();
+  for (const auto& rib : barrel.ribs) v.rib_nodes.insert(v.rib_nodes.end(), rib.begin(), rib.end() - 1);
+  size_t r = 0;
+  for (const auto& loop : bin.upper_loops) {
+    v.rim.emplace_back();
+    for (size_t k = 0; k < loop.size(); ++k, ++r) v.rim.back().push_back(barrel.ribs[r].back());
+  }
 }
 
 // cite: Blacker 1996, sec. 4, Fig. 8d (the lower cap of a barrel stopped by
@@ -275,8 +331,8 @@ BarrelReport Builder::barrel(size_t b) {
       out_.surface_tris[p.lower].push_back(f);
     }
   } else {
+    record_ribs(b, bin, barrel);
     VirtualCap& v = virtual_[b];
-    for (const auto& rib : barrel.ribs) v.rib_nodes.insert(v.rib_nodes.end(), rib.begin(), rib.end() - 1);
     for (const auto& q : in.quads) {
       v.quads.push_back({node[top + static_cast<size_t>(q[0])], node[top + static_cast<size_t>(q[1])],
                          node[top + static_cast<size_t>(q[2])], node[top + static_cast<size_t>(q[3])]});

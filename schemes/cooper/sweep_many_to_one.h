@@ -14,6 +14,7 @@
 #include "framework/scheme/polygon_mesher.h"
 #include "framework/scheme/scheme.h"
 #include "schemes/cooper/classify_barrels.h"
+#include "schemes/cooper/imprint_subcaps.h"
 
 namespace cooperage::cooper {
 
@@ -23,6 +24,8 @@ struct BarrelReport {
   int layers = 0;
   double min_scaled_jacobian = 1.0;
   bool smoothed = false;
+  /// Imprinting steps (sec. 5.1-5.5) of a barrel with subcaps on both ends, in order.
+  std::vector<ImprintStep> imprint_steps;
 };
 
 /// Meshes the volume of `plan` (classify_barrels() ok). The sides and the

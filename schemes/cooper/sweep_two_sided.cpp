@@ -105,6 +105,7 @@ BarrelReport Builder::two_sided(size_t b) {
   auto add_virtual = [&](const std::vector<int>& inflow, int surface, std::vector<Subcap>& list, int base) {
     const auto loops = loop_nodes(model_, db_, vid_, surface);
     const auto& geo = model_.surface(surface).loops;
+    const int end = &list == &ends.upper ? 0 : 1;
     for (int i : inflow) {
       const auto curves = lower_curves(plan_.barrels[static_cast<size_t>(i)]);
       Subcap s{base + i, {}};
@@ -113,6 +114,21 @@ BarrelReport Builder::two_sided(size_t b) {
         std::vector<int> l;
         for (int g : loops[k]) l.push_back(existing(g));
         s.loops.push_back(l);
+      }
+      if (plan_.barrels[static_cast<size_t>(i)].flush) {
+        // Beside the real cap (a step flush with a wall): its rim, whose
+        // nodes on the wall are in no loop of the real cap.
+        s.loops.clear();
+        for (const auto& rim : virtual_[static_cast<size_t>(i)].rim) {
+          std::vector<int> l;
+          for (int g : rim) {
+            const int n = existing(g);
+            const Vec3& x = out_.coords[static_cast<size_t>(n)];
+            ends.xy[n] = plane(end == 0 ? x : to_upper.apply(x));
+            l.push_back(n);
+          }
+          s.loops.push_back(l);
+        }
       }
       orient(s, ends.xy);
       list.push_back(s);
@@ -162,6 +178,18 @@ BarrelReport Builder::two_sided(size_t b) {
     }
     return -1;
   };
+  // Onto a real cap; a point over a flush subcap (beside the cap, outside its
+  // parameter box, where the projection clamps) stays where it was placed.
+  auto flush_at = [&](const std::map<int, std::vector<int>>& regions, const Vec2& x) {
+    const int i = region_of(regions, x);
+    return i >= 0 && plan_.barrels[static_cast<size_t>(i)].flush;
+  };
+  auto onto_upper = [&](const Vec3& x) {
+    return flush_at(region_up, plane(x)) ? x : upper_geometry->project(x).point;
+  };
+  auto onto_lower = [&](const Vec3& x) {
+    return flush_at(region_lo, plane(to_upper.apply(x))) ? x : lower_geometry->project(x).point;
+  };
   // A new node at x on the upper end: on the real cap, or inside a virtual
   // footprint of a barrel meshed from the middle (then a volume node).
   auto add_upper = [&](const Vec3& x) {
@@ -177,7 +205,7 @@ BarrelReport Builder::two_sided(size_t b) {
     if (dn == down.end() || dn->second >= kSentinel) {
       fail(vid_, name + ": an imprinted upper node has no rib to an existing lower node");
     }
-    const Vec3 x = upper_geometry->project(to_upper.apply(out_.coords[static_cast<size_t>(dn->second)])).point;
+    const Vec3 x = onto_upper(to_upper.apply(out_.coords[static_cast<size_t>(dn->second)]));
     const int n = add_upper(x);
     local[id] = n;
     on_upper.insert(n);
@@ -213,7 +241,7 @@ BarrelReport Builder::two_sided(size_t b) {
             if (up.count(w)) {
               n = upper_local(up.at(w));
             } else {
-              const Vec3 x = upper_geometry->project(to_upper.apply(out_.coords[static_cast<size_t>(w)])).point;
+              const Vec3 x = onto_upper(to_upper.apply(out_.coords[static_cast<size_t>(w)]));
               n = out_.add_owned(x, {2, p.upper});
               on_upper.insert(n);
             }
@@ -268,7 +296,7 @@ BarrelReport Builder::two_sided(size_t b) {
       if (k < boundary.size()) {
         node[k] = boundary[k];
       } else {
-        const Vec3 x = upper_geometry->project(u * m.points[k].x() + v * m.points[k].y() + level * d).point;
+        const Vec3 x = onto_upper(u * m.points[k].x() + v * m.points[k].y() + level * d);
         node[k] = up_region >= 0 ? out_.add(x) : out_.add_owned(x, {2, p.upper});
         on_upper.insert(node[k]);
       }
@@ -310,7 +338,7 @@ BarrelReport Builder::two_sided(size_t b) {
     std::vector<mesh::Tri> tris;
     for (const auto& q : all.quads) quads.push_back(local_face(q));
     for (const auto& t : all.tris) tris.push_back(local_face(t));
-    auto project = [&](const Vec3& x) { return upper_geometry->project(x).point; };
+    auto project = [&](const Vec3& x) { return onto_upper(x); };
     if (smooth_cap(pts, quads, tris, movable, d, project)) {
       for (const auto& [n, i] : idx) out_.coords[static_cast<size_t>(n)] = pts[static_cast<size_t>(i)];
     }
@@ -349,7 +377,7 @@ BarrelReport Builder::two_sided(size_t b) {
   for (const auto& rib : barrel.ribs) {
     for (int g : rib) in.ribs.push_back(db_.node(g));
   }
-  in.project_target = [lower_geometry](const Vec3& x) { return lower_geometry->project(x).point; };
+  in.project_target = onto_lower;
   const SweepResult sweep = sweep_barrel(in);
   if (!sweep.ok) fail(vid_, name + ": " + sweep.why);
 
@@ -397,7 +425,7 @@ BarrelReport Builder::two_sided(size_t b) {
   place_lower(cap_tris, in.tris, out_.surface_tris[p.lower],
               [&](size_t i) -> std::vector<mesh::Tri>& { return virtual_[i].tris; });
   if (out_.surface_tris[p.lower].empty()) out_.surface_tris.erase(p.lower);
-  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
+  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed, imp.steps};
 }
 
 }  // namespace cooperage::cooper::detail
