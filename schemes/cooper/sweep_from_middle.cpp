@@ -80,7 +80,7 @@ BarrelReport Builder::sweep_out(size_t b, bool flip) {
   };
   for (const auto& q : in.quads) out_.surface_quads[p.upper].push_back(on_top(q));
   for (const auto& t : in.tris) out_.surface_tris[p.upper].push_back(on_top(t));
-  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
+  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed, {}};
 }
 
 }  // namespace cooperage::cooper::detail

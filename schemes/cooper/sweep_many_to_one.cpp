@@ -342,7 +342,7 @@ BarrelReport Builder::barrel(size_t b) {
                         node[top + static_cast<size_t>(t[2])]});
     }
   }
-  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed};
+  return {p.upper, barrel.layers, sweep.min_scaled_jacobian, sweep.smoothed, {}};
 }
 
 }  // namespace cooperage::cooper::detail

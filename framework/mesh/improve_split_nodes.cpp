@@ -1,0 +1,123 @@
+#include "framework/mesh/improve_split_nodes.h"
+
+#include "framework/mesh/split_poor_quads.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace cooperage::mesh {
+namespace {
+
+// An element around a node: its corners, their count and its normal at the
+// start (the reference an inverted element would be measured against).
+struct Element {
+  std::array<int, 4> corners;
+  int count;
+  Vec3 normal;
+};
+
+double quality(const std::vector<Vec3>& points, const Element& e) {
+  const double s = min_corner_sine(points, e.corners.data(), e.count, e.normal);
+  return e.count == 3 ? s * 2.0 / std::sqrt(3.0) : s;
+}
+
+double worst(const std::vector<Vec3>& points, const std::vector<Element>& elements,
+             const std::vector<int>& around) {
+  double w = 2.0;
+  for (int e : around) w = std::min(w, quality(points, elements[static_cast<size_t>(e)]));
+  return w;
+}
+
+// The smallest margin of the quads around a node over their floors: negative
+// when a move took a quad below its floor.
+double quad_margin(const std::vector<Vec3>& points, const std::vector<Element>& elements,
+                   const std::vector<int>& around, const std::vector<double>& floors) {
+  double m = 1.0;
+  for (size_t k = 0; k < around.size(); ++k) {
+    const Element& e = elements[static_cast<size_t>(around[k])];
+    if (e.count == 4) m = std::min(m, quality(points, e) - floors[k]);
+  }
+  return m;
+}
+
+}  // namespace
+
+void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                         const std::vector<Tri>& tris, const std::vector<bool>& movable,
+                         const std::function<Vec3(const Vec3&)>& project, double quad_floor,
+                         int passes) {
+  if (tris.empty()) return;
+  std::vector<Element> elements;
+  elements.reserve(quads.size() + tris.size());
+  for (const Quad& q : quads) {
+    const Vec3 n = (points[static_cast<size_t>(q[2])] - points[static_cast<size_t>(q[0])])
+                       .cross(points[static_cast<size_t>(q[3])] - points[static_cast<size_t>(q[1])]);
+    elements.push_back({q, 4, n});
+  }
+  for (const Tri& t : tris) {
+    const Vec3 n = (points[static_cast<size_t>(t[1])] - points[static_cast<size_t>(t[0])])
+                       .cross(points[static_cast<size_t>(t[2])] - points[static_cast<size_t>(t[0])]);
+    elements.push_back({{t[0], t[1], t[2], -1}, 3, n});
+  }
+  std::set<int> targets;
+  for (const Tri& t : tris)
+    for (int v : t)
+      if (movable[static_cast<size_t>(v)]) targets.insert(v);
+  // Elements and neighbours of the target nodes only.
+  std::vector<std::vector<int>> around(points.size());
+  std::vector<std::set<int>> neighbours(points.size());
+  for (size_t e = 0; e < elements.size(); ++e) {
+    const Element& el = elements[e];
+    for (int k = 0; k < el.count; ++k) {
+      const int v = el.corners[static_cast<size_t>(k)];
+      if (!targets.count(v)) continue;
+      around[static_cast<size_t>(v)].push_back(static_cast<int>(e));
+      neighbours[static_cast<size_t>(v)].insert(el.corners[static_cast<size_t>((k + 1) % el.count)]);
+      neighbours[static_cast<size_t>(v)].insert(el.corners[static_cast<size_t>((k + el.count - 1) % el.count)]);
+    }
+  }
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int v : targets) {
+      Vec3& x = points[static_cast<size_t>(v)];
+      const std::vector<int>& mine = around[static_cast<size_t>(v)];
+      std::vector<Vec3> directions;
+      double mean_length = 0;
+      for (int u : neighbours[static_cast<size_t>(v)]) {
+        const Vec3 d = points[static_cast<size_t>(u)] - x;
+        mean_length += d.norm();
+        if (d.norm() > 0) {
+          directions.push_back(d.normalized());
+          directions.push_back(-d.normalized());
+        }
+      }
+      if (directions.empty()) continue;
+      mean_length /= static_cast<double>(neighbours[static_cast<size_t>(v)].size());
+      double best = worst(points, elements, mine);
+      // Quads keep quad_floor, or their quality now when already below it.
+      std::vector<double> floors;
+      for (int e : mine) {
+        floors.push_back(std::min(quad_floor, quality(points, elements[static_cast<size_t>(e)])) - 1e-12);
+      }
+      // Step from a fifth of the mean edge down to a thousandth of it.
+      for (double step = 0.2 * mean_length; step > 1e-3 * mean_length;) {
+        const Vec3 start = x;
+        Vec3 best_x = start;
+        for (const Vec3& d : directions) {
+          x = project(start + step * d);
+          const double q = worst(points, elements, mine);
+          if (q > best + 1e-12 && quad_margin(points, elements, mine, floors) >= 0) {
+            best = q;
+            best_x = x;
+          }
+        }
+        x = best_x;
+        if (best_x == start) step *= 0.5;
+      }
+    }
+  }
+}
+
+}  // namespace cooperage::mesh

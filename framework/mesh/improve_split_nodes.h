@@ -1,0 +1,30 @@
+// After split_poor_quads, the quad a sharp corner made poor is two triangles,
+// and the one away from the corner can be thin: its interior node was placed
+// for a quad. Moving the free nodes of the triangles (and only them) so the
+// worst element around each gets better lifts those triangles without
+// touching the rest of the mesh or its topology.
+#pragma once
+
+#include "framework/mesh/mesh_db.h"
+
+#include <functional>
+#include <vector>
+
+namespace cooperage::mesh {
+
+/// Moves every node of `tris` for which `movable` is true to raise the
+/// smallest quality of the quads and triangles around it, never lowering it
+/// and never taking a quad below `quad_floor` (the quality the split kept
+/// quads at) or below its own quality if that was lower.
+/// Quality: min_corner_sine about each element's normal at the start
+/// (triangles scaled by 2/sqrt 3, so an equilateral triangle and a square
+/// both score 1). A compass search along the directions to the node's
+/// neighbours (so a rigidly moved mesh moves the same way), each trial
+/// position passed through `project` (onto the surface; identity in a plane).
+/// Nodes in ascending order, `passes` times; deterministic.
+void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                         const std::vector<Tri>& tris, const std::vector<bool>& movable,
+                         const std::function<Vec3(const Vec3&)>& project, double quad_floor,
+                         int passes = 3);
+
+}  // namespace cooperage::mesh
