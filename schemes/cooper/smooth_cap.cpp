@@ -1,41 +1,36 @@
 #include "schemes/cooper/smooth_cap.h"
 
+#include "framework/mesh/split_poor_quads.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 
 namespace cooperage::cooper {
 
-double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
-                               const std::vector<mesh::Quad>& quads, const mesh::Vec3& normal) {
+namespace {
+
+template <size_t N>
+double min_corner_quality(const std::vector<mesh::Vec3>& points,
+                          const std::vector<std::array<int, N>>& cells, const mesh::Vec3& normal) {
   double worst = 1.0;
-  for (const auto& q : quads) {
-    for (size_t k = 0; k < 4; ++k) {
-      const mesh::Vec3& p = points[static_cast<size_t>(q[k])];
-      const mesh::Vec3 a = points[static_cast<size_t>(q[(k + 1) % 4])] - p;
-      const mesh::Vec3 b = points[static_cast<size_t>(q[(k + 3) % 4])] - p;
-      const double la = a.norm(), lb = b.norm();
-      if (la == 0 || lb == 0) return -1.0;
-      worst = std::min(worst, a.cross(b).dot(normal) / (la * lb));
-    }
+  for (const auto& c : cells) {
+    worst = std::min(worst, mesh::min_corner_sine(points, c.data(), static_cast<int>(N), normal));
   }
   return worst;
 }
 
+}  // namespace
+
+double min_quad_corner_quality(const std::vector<mesh::Vec3>& points,
+                               const std::vector<mesh::Quad>& quads, const mesh::Vec3& normal) {
+  return min_corner_quality(points, quads, normal);
+}
+
 double min_tri_corner_quality(const std::vector<mesh::Vec3>& points,
                               const std::vector<mesh::Tri>& tris, const mesh::Vec3& normal) {
-  double worst = 1.0;
-  for (const auto& t : tris) {
-    for (size_t k = 0; k < 3; ++k) {
-      const mesh::Vec3& p = points[static_cast<size_t>(t[k])];
-      const mesh::Vec3 a = points[static_cast<size_t>(t[(k + 1) % 3])] - p;
-      const mesh::Vec3 b = points[static_cast<size_t>(t[(k + 2) % 3])] - p;
-      const double la = a.norm(), lb = b.norm();
-      if (la == 0 || lb == 0) return -1.0;
-      worst = std::min(worst, a.cross(b).dot(normal) / (la * lb));
-    }
-  }
-  return worst;
+  return min_corner_quality(points, tris, normal);
 }
 
 bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
