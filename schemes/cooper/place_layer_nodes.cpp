@@ -41,28 +41,21 @@ Vec3 interpolate_residual(const Vec3& x, const std::vector<Vec3>& source, std::s
   return sum / wsum;
 }
 
-}  // namespace
-
-bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
-  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
+// Layer-major rings (contiguous per layer for the least-squares sums).
+std::vector<Vec3> layer_major_rings(const SweepInput& in) {
   const std::size_t B = static_cast<std::size_t>(in.boundary);
   const std::size_t J = static_cast<std::size_t>(in.layers);
-  points.assign(n * (J + 1), Vec3::Zero());
-
-  // Layer-major rings (contiguous per layer for the least-squares sums).
   std::vector<Vec3> ring(B * (J + 1));
   for (std::size_t r = 0; r < B; ++r) {
     for (std::size_t j = 0; j <= J; ++j) ring[j * B + r] = in.ribs[r * (J + 1) + j];
   }
-  for (std::size_t j = 0; j <= J; ++j) {
-    std::copy(ring.begin() + static_cast<long>(j * B), ring.begin() + static_cast<long>((j + 1) * B),
-              points.begin() + static_cast<long>(j * n));
-  }
-  std::copy(in.source.begin() + static_cast<long>(B), in.source.end(),
-            points.begin() + static_cast<long>(B));
-  if (n == B) return true;  // no interior cap nodes
+  return ring;
+}
 
-  // s_j: mean arc-length fraction along the ribs, so graded layers work.
+// s_j: mean arc-length fraction along the ribs, so graded layers work.
+std::vector<double> arc_length_fractions(const SweepInput& in) {
+  const std::size_t B = static_cast<std::size_t>(in.boundary);
+  const std::size_t J = static_cast<std::size_t>(in.layers);
   std::vector<double> s(J + 1, 0.0);
   for (std::size_t r = 0; r < B; ++r) {
     const Vec3* rib = &in.ribs[r * (J + 1)];
@@ -76,6 +69,35 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   }
   for (std::size_t j = 1; j <= J; ++j) s[j] /= static_cast<double>(B);
   s[J] = 1.0;
+  return s;
+}
+
+// Residuals above this size are corrected (affine motions have none, so
+// plain and rigid sweeps skip the O(n B) interpolation).
+double residual_tolerance(const std::vector<Vec3>& ring) {
+  Vec3 lo = ring[0], hi = ring[0];
+  for (const Vec3& p : ring) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return 1e-9 * (hi - lo).norm();
+}
+
+}  // namespace
+
+bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
+  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
+  const std::size_t B = static_cast<std::size_t>(in.boundary);
+  const std::size_t J = static_cast<std::size_t>(in.layers);
+  points.assign(n * (J + 1), Vec3::Zero());
+  const std::vector<Vec3> ring = layer_major_rings(in);
+  for (std::size_t j = 0; j <= J; ++j) {
+    std::copy(ring.begin() + static_cast<long>(j * B), ring.begin() + static_cast<long>((j + 1) * B),
+              points.begin() + static_cast<long>(j * n));
+  }
+  std::copy(in.source.begin() + static_cast<long>(B), in.source.end(),
+            points.begin() + static_cast<long>(B));
+  if (n == B) return true;  // no interior cap nodes
 
   const Vec3* upper = &ring[0];
   const Vec3* lower = &ring[J * B];
@@ -86,14 +108,7 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
           "inverting (det A <= 0)";
     return false;
   }
-  // Residuals above this size are corrected (affine motions have none, so
-  // plain and rigid sweeps skip the O(n B) interpolation).
-  Vec3 lo = ring[0], hi = ring[0];
-  for (const Vec3& p : ring) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  const double tolerance = 1e-9 * (hi - lo).norm();
+  const double tolerance = residual_tolerance(ring);
   std::vector<Vec3> res_u;
 
   // Target interior nodes are independent of each other: placed in parallel
@@ -116,6 +131,20 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
                       }
                     });
 
+  return blend_layers(in, points, why);
+}
+
+bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
+  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
+  const std::size_t B = static_cast<std::size_t>(in.boundary);
+  const std::size_t J = static_cast<std::size_t>(in.layers);
+  if (n == B) return true;
+  const std::vector<Vec3> ring = layer_major_rings(in);
+  const std::vector<double> s = arc_length_fractions(in);
+  const double tolerance = residual_tolerance(ring);
+  const Vec3* upper = &ring[0];
+  const Vec3* lower = &ring[J * B];
+  const Vec3* target = &points[J * n];
   // x_ij = x^U_ij (1 - s_j) + x^L_ij s_j. Layers are independent: one task
   // per layer; a failing layer is reported by its index (the lowest one), so
   // the message does not depend on scheduling either.

@@ -48,30 +48,47 @@ std::string describe_bad(const SweepInput& in, long bad, double worst) {
   return s.str();
 }
 
+// Laplacian smoothing of the interior nodes of layer j; the target layer is
+// re-projected and keeps its fixed targets.
+void smooth_layer(const SweepInput& in, int j, int iterations, const std::vector<int>& start,
+                  const std::vector<int>& next, std::vector<Vec3>& points) {
+  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
+  Vec3* layer = &points[static_cast<std::size_t>(j) * n];
+  const bool target = j == in.layers;
+  const bool fixed = target && in.has_fixed_target.size() == n;
+  for (int it = 0; it < iterations; ++it) {
+    for (std::size_t i = static_cast<std::size_t>(in.boundary); i < n; ++i) {
+      if (fixed && in.has_fixed_target[i]) continue;
+      const int b = start[i];
+      const int e = start[i + 1];
+      if (e == b) continue;
+      Vec3 sum = Vec3::Zero();
+      for (int k = b; k < e; ++k) sum += layer[next[static_cast<std::size_t>(k)]];
+      layer[i] = sum / static_cast<double>(e - b);
+      if (target && in.project_target) layer[i] = in.project_target(layer[i]);
+    }
+  }
+}
+
 }  // namespace
 
 void smooth_layers(const SweepInput& in, int iterations, std::vector<Vec3>& points) {
   std::vector<int> start;
   std::vector<int> next;
   cap_adjacency(in, start, next);
-  const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
-  for (int j = 1; j <= in.layers; ++j) {
-    Vec3* layer = &points[static_cast<std::size_t>(j) * n];
-    const bool target = j == in.layers;
-    const bool fixed = target && in.has_fixed_target.size() == n;
-    for (int it = 0; it < iterations; ++it) {
-      for (std::size_t i = static_cast<std::size_t>(in.boundary); i < n; ++i) {
-        if (fixed && in.has_fixed_target[i]) continue;
-        const int b = start[i];
-        const int e = start[i + 1];
-        if (e == b) continue;
-        Vec3 sum = Vec3::Zero();
-        for (int k = b; k < e; ++k) sum += layer[next[static_cast<std::size_t>(k)]];
-        layer[i] = sum / static_cast<double>(e - b);
-        if (target && in.project_target) layer[i] = in.project_target(layer[i]);
-      }
-    }
-  }
+  for (int j = 1; j <= in.layers; ++j) smooth_layer(in, j, iterations, start, next, points);
+}
+
+// A fixed target far from the projected source (a seam moved it, Blacker
+// 1996 sec. 5.4) leaves its neighbours' target quads folded; smoothing the
+// target cap and blending again spreads the move over the whole cap.
+bool smooth_target_then_blend(const SweepInput& in, int iterations, std::vector<Vec3>& points) {
+  std::vector<int> start;
+  std::vector<int> next;
+  cap_adjacency(in, start, next);
+  smooth_layer(in, in.layers, iterations, start, next, points);
+  std::string why;
+  return blend_layers(in, points, why);
 }
 
 SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
@@ -94,7 +111,8 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
       return out;
     }
   }
-  // Fallback: a better placement by per-layer smoothing, ribs fixed. When the
+  // Fallbacks: a better placement by smoothing the target layer and blending
+  // again, or by per-layer smoothing, ribs fixed; the best one is kept. When the
   // projection failed outright, seed the interior nodes with the source
   // positions shifted by the mean motion of their layer's rib ring.
   std::vector<Vec3> smoothed = out.points;
@@ -113,6 +131,20 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
         } else {
           smoothed[j * n + i] = in.source[i] + shift;
         }
+      }
+    }
+  }
+  if (placed) {
+    std::vector<Vec3> relaxed = out.points;
+    long bad_relaxed = -1;
+    if (smooth_target_then_blend(in, options.smoothing_iterations, relaxed)) {
+      const double worst_relaxed = min_scaled_jacobian(relaxed, out.hexes, out.wedges,
+                                                       options.min_scaled_jacobian, &bad_relaxed);
+      if (worst_relaxed > out.min_scaled_jacobian) {
+        out.points.swap(relaxed);
+        out.min_scaled_jacobian = worst_relaxed;
+        out.smoothed = true;
+        bad = bad_relaxed;
       }
     }
   }

@@ -73,6 +73,12 @@ struct SweepResult {
 /// \return false (why set) when a least-squares map is singular or inverts.
 bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::string& why);
 
+/// The interior layers of place_layer_nodes (the two-sided blend with the
+/// loop residuals) from the source and target layers already in `points`,
+/// e.g. after the target layer was smoothed.
+/// \return false (why set) when a least-squares map to a layer is singular.
+bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& why);
+
 /// Hexes from quads and wedges from triangles, layer by layer (points
 /// indexing as in SweepResult).
 void make_elements(const SweepInput& in, std::vector<mesh::Hex>& hexes,
@@ -87,10 +93,17 @@ double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<me
 /// interior layer (and of the target layer, re-projected), rib nodes fixed.
 void smooth_layers(const SweepInput& in, int iterations, std::vector<Vec3>& points);
 
+/// The other fallback: Laplacian smoothing of the target layer only
+/// (re-projected, fixed targets kept), then blend_layers. The interior
+/// layers keep the source cap's shape near the source instead of all
+/// converging to one smoothed layer. \return false as blend_layers.
+bool smooth_target_then_blend(const SweepInput& in, int iterations, std::vector<Vec3>& points);
+
 /// place_layer_nodes + make_elements + the inversion check; when an element
 /// is inverted (or the minimum scaled Jacobian is below improve_below),
-/// smooth_layers and keep the better placement. ok is false (why set) when
-/// elements stay inverted: never emits inverted elements silently.
+/// smooth_target_then_blend and smooth_layers, keeping the best placement.
+/// ok is false (why set) when elements stay inverted: never emits inverted
+/// elements silently.
 SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options = {});
 
 }  // namespace cooperage::cooper
