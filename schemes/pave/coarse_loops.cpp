@@ -1,5 +1,6 @@
 #include "schemes/pave/coarse_loops.h"
 
+#include "schemes/pave/corner_picks.h"
 #include "schemes/pave/split_to_quads.h"
 
 #include <algorithm>
@@ -10,16 +11,9 @@
 namespace cooperage::pave::detail {
 
 namespace {
-
-/// Interior angle of the face at node k of loop L (face on the left), in (0, 2 pi).
-double interior_angle(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t k) {
-  const size_t n = L.size();
-  const Eigen::Vector2d& a = P[static_cast<size_t>(L[(k + n - 1) % n])];
-  const Eigen::Vector2d& b = P[static_cast<size_t>(L[k])];
-  const Eigen::Vector2d& c = P[static_cast<size_t>(L[(k + 1) % n])];
-  return M_PI - std::atan2(cross2(b - a, c - b), (b - a).dot(c - b));
-}
-
+/// Reflex corners of holes above this [rad] stay with the corner template
+/// (PaveOptions::tip_angle's default, 250 deg).
+constexpr double kHoleReflexLimit = 250.0 * M_PI / 180.0;
 }  // namespace
 
 double skipped_quality(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
@@ -41,15 +35,22 @@ size_t choose_parity(const std::vector<Eigen::Vector2d>& P, const std::vector<in
 }
 
 std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int first_new,
-                                  std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads) {
+                                  std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads, double corner_angle) {
   const size_t n = L.size();
   if (n % 2 != 0) return L;  // odd loops are left as they are
-  const size_t offset = choose_parity(P, L);
+  // The nodes coarse_boundary() will skip (it picks the same way).
+  std::vector<char> skipped(n, 1);
+  try {
+    for (size_t k : loop_picks(P, L, 0, corner_angle)) skipped[k] = 0;
+  } catch (const std::runtime_error&) {
+    return L;  // coarse_boundary() reports it
+  }
   std::vector<char> wrap(n, 0);
   bool any = false;
-  for (size_t k = 1 - offset; k < n; k += 2) {
+  for (size_t k = 0; k < n; ++k) {
     // Neighbouring tips share a node: wrap one per pass.
-    if (L[k] < first_new && interior_angle(P, L, k) > limit && !(k >= 2 && wrap[k - 2]) && !(k + 2 >= n && wrap[(k + 2) % n])) {
+    if (skipped[k] && L[k] < first_new && interior_angle(P, L, k) > limit && !(k >= 2 && wrap[k - 2]) &&
+        !(k + 2 >= n && wrap[(k + 2) % n])) {
       wrap[k] = any = true;
     }
   }
@@ -143,26 +144,52 @@ std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const 
 
 }  // namespace
 
+std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, int odd_rank,
+                               double corner_angle) {
+  const size_t n = L.size();
+  std::vector<size_t> picks;
+  if (n % 2 == 0) {
+    size_t offset = choose_parity(P, L);
+    if (!coarse_loop_valid(P, L, offset)) {
+      offset = 1 - offset;
+      if (!coarse_loop_valid(P, L, offset)) {
+        throw std::runtime_error("a loop of " + std::to_string(n) +
+                                 " nodes is too coarse for its shape (its every-other-node polygon folds)");
+      }
+    }
+    for (size_t k = offset; k < n; k += 2) picks.push_back(k);
+  } else {
+    picks = odd_loop_picks(P, L, odd_rank);
+  }
+  if (corner_angle <= 0) return picks;
+  double fine = 0.0;
+  for (size_t k = 0; k < n; ++k) fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
+  // Holes (clockwise) leave reflex tips sharper than paving's corner template
+  // angle to the template (measured: a stepped hole's 270 deg corners as
+  // coarse vertices spoilt a cooper sweep through that face, 0.70 -> 0.22).
+  const double reflex_limit = fine < 0 ? kHoleReflexLimit : 2 * M_PI;
+  const std::vector<size_t> switched = corner_picks(P, L, corner_angle, reflex_limit);
+  // Switching costs odd edges, each a path of irregular nodes whose quads
+  // measure ~0.71-0.75 themselves: only worth it for a clearly bad skipped
+  // node (a gain of 0.2: below ~100 or above ~260 deg). Measured on 3000
+  // random faces: a gain of 0.02 lowered their mean median 0.965 -> 0.955,
+  // 0.2 keeps 0.963.
+  if (switched.size() < 3 ||
+      skipped_quality_of_picks(P, L, switched) < skipped_quality_of_picks(P, L, picks) + 0.2) {
+    return picks;
+  }
+  const double coarse = picked_area(P, L, switched);
+  return fine * coarse > 0 && std::abs(coarse) > 0.05 * std::abs(fine) ? switched : picks;
+}
+
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
-                               const std::vector<std::vector<int>>& loops, bool seed_rows, int odd_rank) {
+                               const std::vector<std::vector<int>>& loops, bool seed_rows, int odd_rank,
+                               double corner_angle) {
   CoarseBoundary out;
   for (const auto& L : loops) {
     const size_t n = L.size();
     auto at = [&](size_t k) { return P[static_cast<size_t>(L[k % n])]; };
-    std::vector<size_t> picks;
-    if (n % 2 == 0) {
-      size_t offset = choose_parity(P, L);
-      if (!coarse_loop_valid(P, L, offset)) {
-        offset = 1 - offset;
-        if (!coarse_loop_valid(P, L, offset)) {
-          throw std::runtime_error("a loop of " + std::to_string(n) +
-                                   " nodes is too coarse for its shape (its every-other-node polygon folds)");
-        }
-      }
-      for (size_t k = offset; k < n; k += 2) picks.push_back(k);
-    } else {
-      picks = odd_loop_picks(P, L, odd_rank);
-    }
+    const std::vector<size_t> picks = loop_picks(P, L, odd_rank, corner_angle);
     const int first = static_cast<int>(out.points.size());
     std::vector<int> coarse;
     for (size_t k : picks) {

@@ -30,7 +30,8 @@ struct CoarseBoundary {
   std::vector<int> min_cells;
   std::vector<std::vector<int>> loops;         ///< coarse loops (coarse ids)
   std::unordered_map<std::uint64_t, int> midpoint;  ///< coarse loop edge -> skipped fine node
-  /// Coarse loop edges spanning a single fine edge (one per odd loop): no
+  /// Coarse loop edges spanning a single fine edge (odd loops have an odd
+  /// number, loops whose parity switches at corners any number): no
   /// midpoint; parity_paths() pairs them through the interior.
   std::vector<std::uint64_t> odd_edges;
   /// Paving's first row at the coarse level: for every coarse vertex on a
@@ -46,13 +47,23 @@ struct CoarseBoundary {
 /// loop and at least 5% of its area (it does not fold).
 bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop, size_t offset);
 
-/// Builds the coarse loops of the fine loops (fine node ids into `points`).
-/// Throws std::runtime_error when neither parity gives a valid coarse loop.
-/// An odd loop's odd edge sits where the worst skipped node is best; odd_rank
-/// > 0 takes a worse place (retries).
+/// Loop positions of the coarse vertices of `loop`. A single parity: even
+/// loops choose_parity(), odd loops one odd edge where the worst skipped
+/// node is best (odd_rank > 0 takes a worse place, for retries). With
+/// corner_angle > 0 [rad], corner_picks() instead (the parity switches so
+/// every corner is a coarse vertex; on holes reflex corners up to 250 deg)
+/// when that lifts the worst skipped node by at least 0.2 and its coarse
+/// polygon does not fold. Throws
+/// std::runtime_error when no single parity gives a valid coarse loop.
+std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
+                               int odd_rank, double corner_angle);
+
+/// Builds the coarse loops of the fine loops (fine node ids into `points`),
+/// their vertices by loop_picks(). Throws std::runtime_error when a loop has
+/// no valid coarse loop.
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& points,
                                const std::vector<std::vector<int>>& loops, bool seed_rows = true,
-                               int odd_rank = 0);
+                               int odd_rank = 0, double corner_angle = 0.0);
 
 /// The parity (0: even nodes, 1: odd nodes are coarse vertices) of loop L:
 /// the one whose worst skipped node is best (a skipped node's angle is split
@@ -63,13 +74,15 @@ size_t choose_parity(const std::vector<Eigen::Vector2d>& points, const std::vect
 /// Worst sin(angle / 2) over the nodes that parity `offset` skips.
 double skipped_quality(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop, size_t offset);
 
-/// Paving's corner template at every skipped node (for the chosen parity)
+/// Paving's corner template at every skipped node (loop_picks() with
+/// `corner_angle`; even loops only)
 /// whose interior angle exceeds `limit` [rad] and whose id is below
 /// `first_new` (given nodes only: the template's own nodes are never
 /// wrapped): three quads around the node, 4 new loop nodes. Appends nodes and
 /// quads; returns the new loop (or the same loop when nothing was wrapped).
 std::vector<int> wrap_reflex_tips(const std::vector<int>& loop, double limit, int first_new,
-                                  std::vector<Eigen::Vector2d>& points, std::vector<Quad>& quads);
+                                  std::vector<Eigen::Vector2d>& points, std::vector<Quad>& quads,
+                                  double corner_angle = 0.0);
 
 /// Surrounds the 4-node hole `loop` (clockwise) with a ring of 8 quads: the
 /// 4x4 lattice of the hole's bilinear map extrapolated by `width` hole widths.

@@ -140,14 +140,16 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     }
     for (auto& loop : work) {
       for (int pass = 0; pass < 4; ++pass) {
-        std::vector<int> wrapped = detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads);
+        std::vector<int> wrapped = detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads,
+                                                                    options.corner_angle * M_PI / 180.0);
         if (wrapped.size() == loop.size()) break;
         loop = std::move(wrapped);
       }
     }
     detail::CoarseBoundary coarse;
     try {
-      coarse = detail::coarse_boundary(P, work, options.boundary_rows, options.odd_edge_rank);
+      coarse = detail::coarse_boundary(P, work, options.boundary_rows, options.odd_edge_rank,
+                                       options.corner_angle * M_PI / 180.0);
     } catch (const std::runtime_error& err) {
       failed(err.what());
     }
@@ -272,7 +274,8 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   if (ids.size() > 1 && ids[0].size() == 4) invalid("an outer loop of 4 nodes cannot surround holes; give it at least 6");
 
   // A failed attempt is retried with other settings: wrapping more tips,
-  // a narrower ring around 4-node holes, no tip wrapping, stricter
+  // a narrower ring around 4-node holes, no tip wrapping and one parity per
+  // loop, stricter
   // recombination (fewer, better quads); then the first two again with the
   // finer triangulation of earlier versions (a coarse triangulation can be
   // too coarse for a thin feature).
@@ -281,6 +284,7 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   attempts[1].ring_width = 0.5;
   attempts[2].tip_angle = 360.0;
   attempts[2].recombine_quality = 0.6;
+  attempts[2].corner_angle = 0.0;  // one parity per loop: fewer odd edges
   attempts[3].tip_angle = 180.0;
   attempts[3].ring_width = 0.35;
   attempts[3].recombine_quality = 0.9;

@@ -29,7 +29,9 @@
 //      (cleanup_2d.h, smooth_2d.h); checks: every quad valid, the quads
 //      tile the domain exactly.
 //  Odd loops: a loop with an odd node count keeps one coarse edge without
-//  midpoint; such edges are paired by paths of coarse cells that lose their
+//  midpoint (an odd edge), and a loop whose corners are an odd number of
+//  intervals apart switches parity with odd edges between them, so that
+//  every corner is a coarse vertex; odd edges are paired by paths of coarse cells that lose their
 //  midpoints too (parity_paths.h), so only the total must be even, as in
 //  paving. A failed attempt, or one whose worst quad is below
 //  retry_below, is retried with other settings (up to 5 retries; the best
@@ -71,6 +73,10 @@ struct PaveOptions {
   bool boundary_rows = true;         ///< seed a coarse row along flat boundary stretches
   double retry_below = 0.5;          ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
   int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
+  /// Loop nodes with an interior angle below this or above 360 minus this
+  /// [deg] are corners: the parity may switch along a loop (odd edges) so
+  /// they become coarse vertices (corner_picks.h); 0 keeps one parity per loop.
+  double corner_angle = 140.0;
   bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
   PaveStats* stats = nullptr;        ///< [out] step timings when set (reset by pave_2d)
 };
