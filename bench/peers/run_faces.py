@@ -102,6 +102,9 @@ def irregular_per_100(path):
     irregular = sum(1 for v, d in degree.items() if v not in boundary and d != 4)
     return (100.0 * irregular / quads if quads else None), quads, tris, len(boundary)
 
+# The build scripts/setup.sh makes, next to this checkout's sources.
+BUILD_BIN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "bin")
+
 
 def fmt(x, spec="%.3f"):
     return "—" if x is None else spec % x
@@ -110,9 +113,9 @@ def fmt(x, spec="%.3f"):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--bench", default=os.environ.get("COOPERAGE_BENCH",
-                                                     "/work/build-faces/bin/cooperage_bench"))
+                                                     os.path.join(BUILD_BIN, "cooperage_bench")))
     p.add_argument("--cooperage", default=os.environ.get("COOPERAGE",
-                                                         "/work/build-faces/bin/cooperage"))
+                                                         os.path.join(BUILD_BIN, "cooperage")))
     p.add_argument("--work", default="/tmp/cooperage-faces")
     p.add_argument("--timeout", type=float, default=300)
     p.add_argument("--json", help="write all raw results here")
