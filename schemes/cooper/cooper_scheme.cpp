@@ -61,6 +61,15 @@ ManyToOne CooperScheme::classify_many(const scheme::VolumeView& view) const {
                                  polygon_mesher(view.volume_id) != nullptr);
   const Elements kind = elements(view.volume_id);
   if (!m.ok || kind == Elements::Hex) return m;
+  // Flush steps build their rib loops from quads only (flush_upper_loops).
+  for (const BarrelPlan& b : m.barrels) {
+    if (b.flush) {
+      m.ok = false;
+      m.why = volume_name(view.volume_id) + ": a step flush with an outer wall (cap " +
+              std::to_string(b.upper) + ") is swept in hex mode only, not with wedge or mixed elements";
+      return m;
+    }
+  }
   for (auto& [cap, scheme] : m.cap_schemes) {
     std::string why;
     scheme = detail::cap_scheme(view.model, *registry_, cap, why, kind);

@@ -274,6 +274,33 @@ TEST(CooperWedge, ApplicableBothWays) {
   EXPECT_FALSE(no.ok);
 }
 
+// Flush steps (stepped rings) build their rib loops from quads only: in
+// wedge and mixed mode cooper refuses them a priori, naming the reason,
+// instead of failing while meshing.
+TEST(CooperWedge, FlushStepIsRefusedOutsideHexMode) {
+  // The self-intersecting-subcap model: a boss flush with the front wall on
+  // top, a foot flush with three walls below; no one-to-one sweep exists.
+  occ::Workbench wb;
+  wb.brick("b", {0, 0, 0}, {4, 4, 2});
+  wb.brick("boss", {1, 0, 2}, {2, 3, 1});
+  wb.brick("foot", {0, 2, -1}, {4, 2, 1});
+  wb.fuse("part", {"b", "boss", "foot"});
+  const geom::Model model = wb.build_model();
+  for (io::ElementKind kind : {io::ElementKind::Hex, io::ElementKind::Wedge, io::ElementKind::Mixed}) {
+    io::MeshSettings settings = wedge_settings(0.5, "cooper", kind);
+    settings.volumes.front().direction = Vec3(0, 0, 1);  // along the steps: flush
+    const auto registry = registry_for(settings);
+    const scheme::Applicability a = registry->volume_scheme("cooper")->applicable({model, 1, nullptr});
+    if (kind == io::ElementKind::Hex) {
+      EXPECT_TRUE(a.ok) << a.why;
+    } else {
+      EXPECT_FALSE(a.ok);
+      EXPECT_NE(a.why.find("flush"), std::string::npos) << a.why;
+      std::printf("[cooper wedge] flush step refused: %s\n", a.why.c_str());
+    }
+  }
+}
+
 TEST(CooperWedge, JournalChecksRejectWedgeAndMixedWithTheVolumeMap) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {2, 1, 1});
