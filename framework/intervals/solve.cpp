@@ -339,9 +339,10 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
                            "interval constraint \"" + c.label + "\" names an unknown curve");
     Canonical canon = canonical(c);
     if (canon.terms.empty()) {
+      // Its terms cancelled: no curve is to blame, so the conflict names none
+      // (the selector then may relax any automatic choice).
       if (!constant_holds(canon))
-        throw MeshingError(ErrorCode::Infeasible,
-                           "interval constraints cannot all hold: " + c.label);
+        throw IntervalConflict("interval constraints cannot all hold: " + c.label, {});
       continue;
     }
     for (auto [id, coeff] : canon.terms) links.join(index_of[canon.terms.front().first], index_of[id]);
