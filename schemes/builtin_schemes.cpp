@@ -1,7 +1,6 @@
 #include "schemes/builtin_schemes.h"
 
 #include "framework/mesh/improve_split_nodes.h"
-#include "framework/mesh/split_poor_quads.h"
 #include "framework/mesh2d/triangulate.h"
 
 #include "schemes/cooper/cooper_scheme.h"
@@ -49,12 +48,11 @@ class QuadDominant2D final : public scheme::PolygonMesher {
     std::vector<geom::Vec3> points;
     points.reserve(m.points.size());
     for (const Eigen::Vector2d& p : m.points) points.emplace_back(p.x(), p.y(), 0.0);
-    mesh::QuadDominant split = mesh::split_poor_quads(points, m.quads, cooper::kMixedMinQuadQuality);
     std::vector<bool> movable(points.size());
     for (size_t i = 0; i < movable.size(); ++i) movable[i] = static_cast<int>(i) >= m.boundary_count;
-    mesh::improve_split_nodes(points, split.quads, split.tris, movable,
-                              [](const geom::Vec3& x) { return geom::Vec3(x.x(), x.y(), 0.0); },
-                              cooper::kMixedMinQuadQuality);
+    mesh::QuadDominant split = mesh::make_quad_dominant(
+        points, m.quads, movable, [](const geom::Vec3& x) { return geom::Vec3(x.x(), x.y(), 0.0); },
+        cooper::kMixedMinQuadQuality);
     for (size_t i = 0; i < points.size(); ++i) m.points[i] = points[i].head<2>();
     return {std::move(m.points), std::move(split.quads), m.boundary_count, std::move(split.tris)};
   }

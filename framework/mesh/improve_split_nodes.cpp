@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace cooperage::mesh {
@@ -62,30 +63,34 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
                        .cross(points[static_cast<size_t>(t[2])] - points[static_cast<size_t>(t[0])]);
     elements.push_back({{t[0], t[1], t[2], -1}, 3, n});
   }
-  std::set<int> targets;
+  std::set<int> target_set;
   for (const Tri& t : tris)
     for (int v : t)
-      if (movable[static_cast<size_t>(v)]) targets.insert(v);
-  // Elements and neighbours of the target nodes only.
-  std::vector<std::vector<int>> around(points.size());
-  std::vector<std::set<int>> neighbours(points.size());
+      if (movable[static_cast<size_t>(v)]) target_set.insert(v);
+  const std::vector<int> targets(target_set.begin(), target_set.end());
+  // Elements and neighbours of the target nodes only (a few near each
+  // split quad), indexed by their position in `targets`.
+  std::map<int, size_t> slot;
+  for (size_t k = 0; k < targets.size(); ++k) slot[targets[k]] = k;
+  std::vector<std::vector<int>> around(targets.size());
+  std::vector<std::set<int>> neighbours(targets.size());
   for (size_t e = 0; e < elements.size(); ++e) {
     const Element& el = elements[e];
     for (int k = 0; k < el.count; ++k) {
-      const int v = el.corners[static_cast<size_t>(k)];
-      if (!targets.count(v)) continue;
-      around[static_cast<size_t>(v)].push_back(static_cast<int>(e));
-      neighbours[static_cast<size_t>(v)].insert(el.corners[static_cast<size_t>((k + 1) % el.count)]);
-      neighbours[static_cast<size_t>(v)].insert(el.corners[static_cast<size_t>((k + el.count - 1) % el.count)]);
+      const auto it = slot.find(el.corners[static_cast<size_t>(k)]);
+      if (it == slot.end()) continue;
+      around[it->second].push_back(static_cast<int>(e));
+      neighbours[it->second].insert(el.corners[static_cast<size_t>((k + 1) % el.count)]);
+      neighbours[it->second].insert(el.corners[static_cast<size_t>((k + el.count - 1) % el.count)]);
     }
   }
   for (int pass = 0; pass < passes; ++pass) {
-    for (int v : targets) {
-      Vec3& x = points[static_cast<size_t>(v)];
-      const std::vector<int>& mine = around[static_cast<size_t>(v)];
+    for (size_t t = 0; t < targets.size(); ++t) {
+      Vec3& x = points[static_cast<size_t>(targets[t])];
+      const std::vector<int>& mine = around[t];
       std::vector<Vec3> directions;
       double mean_length = 0;
-      for (int u : neighbours[static_cast<size_t>(v)]) {
+      for (int u : neighbours[t]) {
         const Vec3 d = points[static_cast<size_t>(u)] - x;
         mean_length += d.norm();
         if (d.norm() > 0) {
@@ -94,15 +99,17 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
         }
       }
       if (directions.empty()) continue;
-      mean_length /= static_cast<double>(neighbours[static_cast<size_t>(v)].size());
+      mean_length /= static_cast<double>(neighbours[t].size());
       double best = worst(points, elements, mine);
       // Quads keep quad_floor, or their quality now when already below it.
       std::vector<double> floors;
       for (int e : mine) {
         floors.push_back(std::min(quad_floor, quality(points, elements[static_cast<size_t>(e)])) - 1e-12);
       }
-      // Step from a fifth of the mean edge down to a thousandth of it.
-      for (double step = 0.2 * mean_length; step > 1e-3 * mean_length;) {
+      // Step from a fifth of the mean edge down to a thousandth of it; at
+      // most 100 trial rounds, so a long run of tiny gains ends too.
+      int rounds = 0;
+      for (double step = 0.2 * mean_length; step > 1e-3 * mean_length && rounds < 100; ++rounds) {
         const Vec3 start = x;
         Vec3 best_x = start;
         for (const Vec3& d : directions) {
@@ -118,6 +125,15 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
       }
     }
   }
+}
+
+QuadDominant make_quad_dominant(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                                const std::vector<bool>& movable,
+                                const std::function<Vec3(const Vec3&)>& project,
+                                double min_quality) {
+  QuadDominant out = split_poor_quads(points, quads, min_quality);
+  improve_split_nodes(points, out.quads, out.tris, movable, project, min_quality);
+  return out;
 }
 
 }  // namespace cooperage::mesh

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "framework/mesh/mesh_db.h"
+#include "framework/mesh/split_poor_quads.h"
 
 #include <functional>
 #include <vector>
@@ -26,5 +27,13 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
                          const std::vector<Tri>& tris, const std::vector<bool>& movable,
                          const std::function<Vec3(const Vec3&)>& project, double quad_floor,
                          int passes = 3);
+
+/// A quad mesh made quad-dominant: split_poor_quads(points, quads,
+/// min_quality), then improve_split_nodes with the same floor. `points` are
+/// moved in place; the elements are returned.
+QuadDominant make_quad_dominant(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                                const std::vector<bool>& movable,
+                                const std::function<Vec3(const Vec3&)>& project,
+                                double min_quality);
 
 }  // namespace cooperage::mesh

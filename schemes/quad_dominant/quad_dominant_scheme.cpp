@@ -2,7 +2,6 @@
 
 #include "framework/geometry/evaluators.h"
 #include "framework/mesh/improve_split_nodes.h"
-#include "framework/mesh/split_poor_quads.h"
 
 #include <cstdio>
 #include <string>
@@ -27,14 +26,13 @@ void QuadDominantScheme::constrain(const scheme::SurfaceView& view,
 scheme::EntityMesh QuadDominantScheme::mesh(const scheme::SurfaceView& view,
                                             const scheme::MeshParams& params) const {
   scheme::EntityMesh out = quads_->mesh(view, params);
-  mesh::QuadDominant split = mesh::split_poor_quads(out.coords, out.quads, min_quality_);
   // Nodes the scheme made (global -1) may move on the surface; curve and
   // vertex nodes stay.
   std::vector<bool> movable(out.coords.size());
   for (size_t i = 0; i < movable.size(); ++i) movable[i] = out.global[i] < 0;
   const geom::SurfaceGeometry* surface = view.surface().geometry.get();
-  mesh::improve_split_nodes(
-      out.coords, split.quads, split.tris, movable,
+  mesh::QuadDominant split = mesh::make_quad_dominant(
+      out.coords, out.quads, movable,
       [&](const geom::Vec3& x) { return surface ? surface->project(x).point : x; }, min_quality_);
   out.quads = std::move(split.quads);
   out.tris.insert(out.tris.end(), split.tris.begin(), split.tris.end());

@@ -3,9 +3,11 @@
 // It meshes the face with an all-quad scheme (the registration code passes
 // pave; schemes never include each other) and splits every quad whose
 // scaled Jacobian is below the threshold into two triangles
-// (framework/mesh/split_poor_quads.h). The quads kept are exactly pave's
-// quads of at least that quality, the triangles sit where pave had to put
-// a poor quad, e.g. at a sharp corner; no boundary edge changes.
+// (framework/mesh/split_poor_quads.h); halves of two poor quads that make a
+// good quad are merged back, and the triangles' free nodes then move to
+// lift them (framework/mesh/improve_split_nodes.h), never taking a quad
+// below the threshold. Triangles sit where pave had to put a poor quad,
+// e.g. at a sharp corner; no boundary node or edge changes.
 #pragma once
 
 #include "framework/scheme/scheme.h"
@@ -27,8 +29,9 @@ class QuadDominantScheme final : public scheme::SurfaceScheme {
   /// The quad scheme's constraints (pave: an even interval sum).
   void constrain(const scheme::SurfaceView& view,
                  intervals::IntervalProblem& problem) const override;
-  /// The quad scheme's mesh with the quads below min_quality split; its
-  /// nodes unchanged. Throws what the quad scheme throws.
+  /// The quad scheme's mesh with the quads below min_quality split and the
+  /// triangles' free (interior) nodes moved on the surface; curve and
+  /// vertex nodes unchanged. Throws what the quad scheme throws.
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
                           const scheme::MeshParams& params) const override;
 
