@@ -116,8 +116,8 @@ bool polygon_contains(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vec
   return in;
 }
 
-// Dihedral classes: below pi an end (convex), above pi re-entrant (virtual).
-constexpr double kReentrantMin = 185.0;
+// Dihedral classes: below pi an end (convex), above pi re-entrant (virtual),
+// kMaxCapDihedral and kReentrantMin (classify_faces.h) apart.
 
 // Tries one sweep axis; empty why on success.
 std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& registry,
@@ -140,7 +140,8 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
     }
     return nullptr;
   };
-  // Sides: each links exactly two caps (sec. 3).
+  // Sides: each links two caps (sec. 3); one touching more is split with its
+  // ring below (stepped rings).
   std::vector<SideFace> side_faces(sides.size());
   std::vector<std::array<int, 2>> ends(sides.size());
   std::vector<std::array<bool, 2>> convex(sides.size());

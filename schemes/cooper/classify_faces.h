@@ -65,6 +65,9 @@ struct Classification {
 /// Upper bound of an end cap's dihedral angle with its sides [degrees]; the
 /// paper's bound is pi, a small margin keeps tangent (180) joints out.
 inline constexpr double kMaxCapDihedral = 175.0;
+/// Dihedral angle (degrees) above which a side meets a cap re-entrantly (a
+/// shoulder: the cap is a virtual subcap there); between the two, tangent.
+inline constexpr double kReentrantMin = 185.0;
 
 /// Classifies the faces of a volume for a one-barrel sweep.
 /// \param[in] model      the model

@@ -10,8 +10,6 @@
 namespace cooperage::cooper {
 namespace {
 
-constexpr double kReentrantMin = 185.0;  // as classify_barrels: above is a shoulder
-
 std::string text(double d) {
   std::ostringstream s;
   s.precision(4);
