@@ -46,10 +46,9 @@ struct Ring {
   std::vector<int> sides;  // indices into the side list
   int x = 0, y = 0;
   bool convex_x = false, convex_y = false;
-  // A segment of a stepped ring (sides spanning several caps): its upper
-  // cap and its own linking chains.
+  // A segment of a stepped ring (sides spanning several caps; its upper cap
+  // is y) and its own linking chains.
   bool stepped = false;
-  int upper = 0;
   std::vector<std::vector<int>> chains;
 };
 
@@ -251,7 +250,6 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
       r.convex_x = seg.convex_lower;
       r.convex_y = seg.convex_upper;
       r.stepped = true;
-      r.upper = seg.upper;
       r.chains = seg.linking_chains;
       rings.push_back(r);
     }
@@ -295,7 +293,7 @@ std::string try_axis(const geom::Model& model, int vid, const scheme::Registry& 
       g.sides.insert(g.sides.end(), r.sides.begin(), r.sides.end());
       if (r.stepped) {
         g.stepped = true;
-        g.stepped_upper = r.upper;
+        g.stepped_upper = r.y;
         g.chains.insert(g.chains.end(), r.chains.begin(), r.chains.end());
       }
     }
