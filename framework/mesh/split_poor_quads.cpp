@@ -20,22 +20,6 @@ Vec3 quad_normal(const std::vector<Vec3>& points, const Quad& q) {
 
 }  // namespace
 
-double min_corner_sine(const std::vector<Vec3>& points, const int* corners, int count,
-                       const Vec3& normal) {
-  const double n = normal.norm();
-  if (!(n > 0)) return -1.0;
-  double m = 1.0;
-  for (int k = 0; k < count; ++k) {
-    const Vec3& p = at(points, corners[k]);
-    const Vec3 in = p - at(points, corners[(k + count - 1) % count]);
-    const Vec3 out = at(points, corners[(k + 1) % count]) - p;
-    const double l = in.norm() * out.norm();
-    if (!(l > 0)) return -1.0;
-    m = std::min(m, in.cross(out).dot(normal) / (l * n));
-  }
-  return m;
-}
-
 std::array<Tri, 2> split_quad(const std::vector<Vec3>& points, const Quad& q) {
   const Vec3 normal = quad_normal(points, q);
   const std::array<Tri, 2> ac{Tri{q[0], q[1], q[2]}, Tri{q[0], q[2], q[3]}};

@@ -7,6 +7,7 @@
 // its neighbours (curves, side faces, sweeps through the cap).
 #pragma once
 
+#include "framework/mesh/corner_sine.h"
 #include "framework/mesh/mesh_db.h"
 
 #include <array>
@@ -19,13 +20,6 @@ struct QuadDominant {
   std::vector<Quad> quads;
   std::vector<Tri> tris;
 };
-
-/// Smallest corner sine of the polygon (3 or 4 corners, listed
-/// counter-clockwise about `normal`), signed by `normal`: the 2D / surface
-/// scaled Jacobian of a quad (1 square, sin a rhombus of angle a, <= 0 at a
-/// reflex or inverted corner); a triangle's is (sqrt 3 / 2) times Verdict's.
-double min_corner_sine(const std::vector<Vec3>& points, const int* corners, int count,
-                       const Vec3& normal);
 
 /// Quad (a, b, c, d) split along the diagonal that makes the smaller of the
 /// two triangles' min_corner_sine largest: at a sharp corner the diagonal

@@ -1,6 +1,6 @@
 #include "schemes/cooper/smooth_cap.h"
 
-#include "framework/mesh/split_poor_quads.h"
+#include "framework/mesh/corner_sine.h"
 
 #include <Eigen/Geometry>
 
