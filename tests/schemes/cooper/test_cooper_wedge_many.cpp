@@ -123,6 +123,16 @@ double polygon_area(const geom::Model& model, const mesh::MeshDB& db, double z, 
   return -1;
 }
 
+// Two appendages on top and one below a 6 x 4 x 2 block (volume 52.875):
+// the middle barrel has imprinted subcaps on both ends.
+void appendages(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {6, 4, 2});
+  wb.brick("t1", {1, 1, 2}, {1.5, 1.5, 1});
+  wb.brick("t2", {4, 0.25, 2}, {1, 0.75, 0.5});
+  wb.brick("d1", {3.5, 1.5, -1}, {1.5, 1.5, 1});
+  wb.fuse("part", {"b", "t1", "t2", "d1"});
+}
+
 void cylinder_boss(occ::Workbench& wb) {
   wb.cylinder("body", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
   wb.cylinder("boss", {0, 0, 3}, {0, 0, 1}, 1.0, 1.5);
@@ -173,11 +183,7 @@ TEST(CooperWedgeMany, SquareBossOnBrickHasTheExactVolume) {
 // imprinted and meshed in 2D by the triangle polygon mesher (sec. 5.2, 6.1).
 TEST(CooperWedgeMany, AppendagesOnTopAndBottomWithTriangleSubcaps) {
   occ::Workbench wb;
-  wb.brick("b", {0, 0, 0}, {6, 4, 2});
-  wb.brick("t1", {1, 1, 2}, {1.5, 1.5, 1});
-  wb.brick("t2", {4, 0.25, 2}, {1, 0.75, 0.5});
-  wb.brick("d1", {3.5, 1.5, -1}, {1.5, 1.5, 1});
-  wb.fuse("part", {"b", "t1", "t2", "d1"});
+  appendages(wb);
   const geom::Model model = wb.build_model();
   const auto r = mesh(model, settings_for(0.25, io::ElementKind::Wedge));
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
@@ -223,11 +229,7 @@ TEST(CooperWedgeMany, CylinderWithBossMixedNeedsNoTriangles) {
 // the mesh is hex mode's.
 TEST(CooperWedgeMany, AppendagesMixedAreHexes) {
   occ::Workbench wb;
-  wb.brick("b", {0, 0, 0}, {6, 4, 2});
-  wb.brick("t1", {1, 1, 2}, {1.5, 1.5, 1});
-  wb.brick("t2", {4, 0.25, 2}, {1, 0.75, 0.5});
-  wb.brick("d1", {3.5, 1.5, -1}, {1.5, 1.5, 1});
-  wb.fuse("part", {"b", "t1", "t2", "d1"});
+  appendages(wb);
   const geom::Model model = wb.build_model();
   const auto r = mesh(model, settings_for(0.25, io::ElementKind::Mixed));
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
