@@ -1,6 +1,7 @@
 #include "schemes/pave/cdt_2d.h"
 
 #include "schemes/pave/cdt_kernel.h"
+#include "schemes/pave/frontal_fill.h"
 #include "schemes/pave/spatial_order.h"
 
 #include <algorithm>
@@ -96,7 +97,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     }
   }
 
-  for (size_t k = 0; k < input.seeds.size(); ++k) {
+  if (input.frontal && input.refine) frontal_fill(cdt, input.accept_radius);
+  for (size_t k = 0; !input.frontal && k < input.seeds.size(); ++k) {
     const std::vector<int> ring = cdt.inside_triangles_at(input.seed_from[k]);
     if (ring.empty()) continue;
     const int loc = cdt.locate(input.seeds[k], ring.front(), true);

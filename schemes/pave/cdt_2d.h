@@ -38,6 +38,11 @@ struct CdtInput {
   /// one fine quad per (h/2)^2 after recombination and the split; 0.64 gave
   /// ~1.7.
   double max_radius = 0.9;
+  /// Before the refinement, grow rows of right triangles from the loops
+  /// (frontal_fill.h) accepting circumradii up to accept_radius sizes; the
+  /// seeds are then not used.
+  bool frontal = false;
+  double accept_radius = 0.8;
   /// Per loop point (may be empty): the fewest triangles it must end up in. A
   /// flat loop vertex (180 deg) needs 2, else its quad would have a straight
   /// angle; extra points are inserted on the bisector of its widest triangle.

@@ -1,0 +1,160 @@
+#include "schemes/pave/frontal_fill.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace cooperage::pave::detail {
+namespace {
+
+using cdt::Cdt;
+using cdt::Tri;
+using V2 = Eigen::Vector2d;
+
+double mean_size(const Cdt& cdt, const Tri& T) {
+  return (cdt.size[static_cast<size_t>(T.v[0])] + cdt.size[static_cast<size_t>(T.v[1])] +
+          cdt.size[static_cast<size_t>(T.v[2])]) / 3.0;
+}
+
+/// Circumradius (infinite for a degenerate or clockwise triangle).
+double circumradius(const V2& a, const V2& b, const V2& c) {
+  const V2 ab = b - a, ac = c - a;
+  const double d = 2.0 * (ab.x() * ac.y() - ab.y() * ac.x());
+  if (!(d > 0)) return INFINITY;
+  const V2 off(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+               ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm());
+  return (off / d).norm();
+}
+
+}  // namespace
+
+int frontal_fill(Cdt& cdt, double accept_radius) {
+  // Sizes of new points: linear over the triangulation of the loop points
+  // alone (a background mesh), so that sizes grade between loops instead of
+  // being carried along by the rows. Each point remembers its background
+  // triangle as the start of the next walk.
+  Cdt background = cdt;
+  std::vector<int> home(cdt.p.size(), -1);
+  for (int i = 0; i < static_cast<int>(background.t.size()); ++i) {
+    const Tri& T = background.tri(i);
+    if (!T.alive || !T.inside) continue;
+    for (int v : T.v) home[static_cast<size_t>(v)] = i;
+  }
+  auto size_at = [&](const V2& x, int near, int& found) {
+    found = -1;
+    const int start = home[static_cast<size_t>(near)];
+    if (start < 0) return cdt.size[static_cast<size_t>(near)];
+    const int loc = background.locate(x, start, false);
+    if (loc < 0 || !background.tri(loc).inside) return cdt.size[static_cast<size_t>(near)];
+    found = loc;
+    const Tri& T = background.tri(loc);
+    const V2 a = background.pt(T.v[0]), b = background.pt(T.v[1]), c = background.pt(T.v[2]);
+    const double area = cdt::orient(a, b, c);
+    if (!(area > 0)) return cdt.size[static_cast<size_t>(near)];
+    const double wa = cdt::orient(x, b, c) / area, wb = cdt::orient(a, x, c) / area;
+    const double wc = 1.0 - wa - wb;
+    return wa * background.size[static_cast<size_t>(T.v[0])] + wb * background.size[static_cast<size_t>(T.v[1])] +
+           wc * background.size[static_cast<size_t>(T.v[2])];
+  };
+  auto accepted = [&](int ti) {
+    const Tri& T = cdt.tri(ti);
+    return circumradius(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2])) <= accept_radius * mean_size(cdt, T);
+  };
+  auto live_inside = [&](int ti) { return ti >= 0 && cdt.tri(ti).alive && cdt.tri(ti).inside; };
+
+  std::vector<int> queue;
+  for (int i = 0; i < static_cast<int>(cdt.t.size()); ++i) {
+    if (live_inside(i) && !accepted(i)) queue.push_back(i);
+  }
+  // A triangle whose point was refused is left to the refinement; slots of
+  // dead triangles are recycled, so the flag is cleared for new ones.
+  std::vector<char> frozen(cdt.t.size(), 0);
+  int inserted = 0;
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int ti = queue[head];
+    if (!live_inside(ti) || frozen[static_cast<size_t>(ti)] || accepted(ti)) continue;
+    const Tri T = cdt.tri(ti);
+    // The front edge: a loop edge first, else an edge to an accepted triangle.
+    int front = -1;
+    for (int i = 0; i < 3 && front < 0; ++i) {
+      if (T.c[static_cast<size_t>(i)]) front = i;
+    }
+    for (int i = 0; i < 3 && front < 0; ++i) {
+      const int nb = T.n[static_cast<size_t>(i)];
+      if (live_inside(nb) && accepted(nb)) front = i;
+    }
+    if (front < 0) continue;  // queued again when a neighbour is accepted
+    const int a = T.v[static_cast<size_t>((front + 1) % 3)], b = T.v[static_cast<size_t>((front + 2) % 3)];
+    const V2 pa = cdt.pt(a), pb = cdt.pt(b);
+    const double len = (pb - pa).norm();
+    if (!(len > 0)) continue;
+    const V2 n = V2(-(pb - pa).y(), (pb - pa).x()) / len;
+    int unused = -1;
+    const double h = size_at(0.5 * (pa + pb) + 0.5 * len * n, a, unused);
+
+    std::array<V2, 2> candidates;
+    size_t count = 0;
+    if (!T.c[static_cast<size_t>(front)] && len > 1.19 * h) {
+      candidates[count++] = 0.5 * (pa + pb) + 0.5 * len * n;  // hypotenuse: apex
+    } else {
+      // Leg: the endpoint whose perpendicular point has more room first.
+      const V2 xa = pa + h * n, xb = pb + h * n;
+      auto clearance = [&](const V2& x) {
+        double d = INFINITY;
+        for (size_t k = 0; k < 3; ++k) {
+          d = std::min(d, (cdt.pt(T.v[k]) - x).squaredNorm());
+          const int nb = T.n[k];
+          if (nb < 0) continue;
+          for (int v : cdt.tri(nb).v) d = std::min(d, (cdt.pt(v) - x).squaredNorm());
+        }
+        return d;
+      };
+      const bool a_first = clearance(xa) >= clearance(xb);
+      candidates[count++] = a_first ? xa : xb;
+      candidates[count++] = a_first ? xb : xa;
+    }
+
+    bool done = false;
+    for (size_t k = 0; k < count && !done; ++k) {
+      const V2 x = candidates[k];
+      // The point must remove its triangle, else the front would stall here.
+      if (!(cdt::incircle(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2]), x) > 0)) continue;
+      const int loc = cdt.locate(x, ti, true);
+      if (loc < 0 || !cdt.tri(loc).inside) continue;
+      const int pi = static_cast<int>(cdt.p.size());
+      int where = -1;
+      const double hx = size_at(x, a, where);
+      cdt.p.push_back(x);
+      cdt.size.push_back(hx);
+      cdt.vt.push_back(-1);
+      if (!cdt.insert(pi, loc, true, 0.55 * std::min(h, hx))) {
+        cdt.p.pop_back();
+        cdt.size.pop_back();
+        cdt.vt.pop_back();
+        continue;
+      }
+      home.push_back(where);
+      done = true;
+    }
+    if (!done) {
+      frozen[static_cast<size_t>(ti)] = 1;
+      continue;
+    }
+    ++inserted;
+    if (frozen.size() < cdt.t.size()) frozen.resize(cdt.t.size(), 0);
+    for (int c : cdt.created) {
+      frozen[static_cast<size_t>(c)] = 0;
+      if (!accepted(c)) {
+        queue.push_back(c);
+        continue;
+      }
+      for (int nb : cdt.tri(c).n) {
+        if (live_inside(nb) && !accepted(nb)) queue.push_back(nb);
+      }
+    }
+  }
+  return inserted;
+}
+
+}  // namespace cooperage::pave::detail
