@@ -6,6 +6,10 @@
 #include <cstdint>
 
 namespace cooperage::pave::detail {
+namespace {
+/// Smallest scaled Jacobian of the quad a boundary triangle may move into.
+constexpr double kMigrateQuality = 0.5;
+}  // namespace
 
 std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
                             const std::vector<int>& min_cells) {
@@ -118,6 +122,7 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     const Candidate& c = cands[static_cast<size_t>(k)];
     return c.t == t ? c.s : c.t;
   };
+  auto augment = [&]() {
   for (int pass = 0; pass < 6; ++pass) {
     bool changed = false;
     for (int t = 0; t < static_cast<int>(T.size()); ++t) {
@@ -149,6 +154,44 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     }
     if (!changed) break;
   }
+  };
+  augment();
+  // A triangle left on the boundary spoils the boundary row (its split puts
+  // a valence-3 node next to the loop): it trades places with the partner
+  // of a neighbour that lies off the boundary, when the new quad is fair.
+  // Points with a min_cells entry are the loop points.
+  const int loop_points = static_cast<int>(min_cells.size());
+  auto on_boundary = [&](int t) {
+    for (int x : T[static_cast<size_t>(t)]) {
+      if (x < loop_points) return true;
+    }
+    return false;
+  };
+  bool moved = false;
+  for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+    if (match[static_cast<size_t>(t)] >= 0 || !on_boundary(t)) continue;
+    int best_kts = -1, best_kss = -1;
+    for (int kts : of(t)) {
+      const Candidate& c = cands[static_cast<size_t>(kts)];
+      if (c.score < kMigrateQuality) continue;
+      const int s2 = other(kts, t);
+      const int kss = match[static_cast<size_t>(s2)];
+      if (kss < 0 || on_boundary(other(kss, s2))) continue;
+      if (best_kts < 0 || c.score > cands[static_cast<size_t>(best_kts)].score) {
+        best_kts = kts;
+        best_kss = kss;
+      }
+    }
+    if (best_kts < 0) continue;
+    merge(best_kss, -1);
+    if (can_merge(cands[static_cast<size_t>(best_kts)])) {
+      merge(best_kts, +1);
+      moved = true;
+    } else {
+      merge(best_kss, +1);
+    }
+  }
+  if (moved) augment();
   std::vector<Cell> cells;
   cells.reserve(T.size());
   for (int t = 0; t < static_cast<int>(T.size()); ++t) {
