@@ -59,7 +59,8 @@ struct PaveStats {
   double cleanup = 0;      ///< (f) doublets and diamonds
   double smooth = 0;       ///< (f) untangling, Laplacian sweeps, optimisation
   double check = 0;        ///< (f) inversion and tiling checks
-  int attempts = 0;        ///< settings tried (1 unless retried)
+  int attempts = 0;        ///< settings tried (2 with both triangulations, more when retried)
+  int kept = 0;            ///< index of the attempt kept (0: frontal, 1: circumcentre refinement)
   int sweeps = 0;          ///< Laplacian sweeps of the last attempt
 };
 
@@ -67,6 +68,8 @@ struct PaveOptions {
   detail::SmoothOptions smooth;      ///< the final smoothing
   double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
   double max_radius = 0.9;           ///< coarse triangles' circumradius bound, in local sizes (CdtInput)
+  bool frontal = true;               ///< rows of right triangles from the loops first (frontal_fill.h)
+  double accept_radius = 0.8;        ///< circumradius a frontal triangle may keep, in local sizes
   double ring_width = 0.75;          ///< ring around a 4-node hole, in hole widths
   double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
   bool cleanup = true;               ///< remove doublets

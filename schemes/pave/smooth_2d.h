@@ -33,7 +33,7 @@ struct SmoothOptions {
   int sweeps = 12;             ///< maximum Gauss-Seidel sweeps (more hardly change the quality)
   double tolerance = 0.005;    ///< stop when the largest move < tolerance * mean edge length
   double keep_quality = 0.6;   ///< a move may lower the worst quality down to this if the mean improves
-  double optimise_below = 0.7; ///< nodes of quads worse than this get the pattern search
+  double optimise_below = 0.8; ///< nodes of quads worse than this get the pattern search
   int optimise_rounds = 10;
   /// Rounds of the polish: nodes of quads worse than polish_below maximise
   /// the mean quality of their quads without lowering their worst.

@@ -56,6 +56,32 @@ TEST(Pave2D, BenchmarkFacesAreValidAndPrintQuality) {
   }
 }
 
+// Paving's rows along a uniformly spaced square or L (even intervals on
+// every side) close into the structured grid: the quad count is the area
+// over the spacing squared, every quad is a square, every interior node
+// has four edges. Circumcentre refinement alone gave 8.8 irregular nodes
+// per 100 quads and a median of 0.983 on the benchmark square.
+TEST(Pave2D, UniformlySpacedSquareAndLGiveTheStructuredGrid) {
+  struct Case {
+    const char* name;
+    Loops loops;
+    int quads;
+  };
+  const std::vector<Case> cases{
+      {"square 10", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {10, 10, 10, 10})}, 100},
+      {"square 40", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {40, 40, 40, 40})}, 1600},
+      {"L", {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})}, 108}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const QuadMesh2D m = pave_2d(c.loops);
+    EXPECT_EQ(check_mesh(c.loops, m), "");
+    const Stats s = stats(m);
+    EXPECT_EQ(s.quads, c.quads);
+    EXPECT_EQ(s.irregular, 0);
+    EXPECT_GT(s.min_sj, 1.0 - 1e-9);
+  }
+}
+
 TEST(Pave2D, SingleQuadAndSmallestLoops) {
   const Loops quad{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {1, 1, 1, 1})};
   const QuadMesh2D m = pave_2d(quad);
@@ -135,7 +161,9 @@ TEST(Pave2D, StatsAreFilledWhenAskedAndDoNotChangeTheMesh) {
   const QuadMesh2D without = pave_2d(square);
   EXPECT_EQ(with.quads, without.quads);
   EXPECT_EQ(with.points, without.points);
-  EXPECT_EQ(stats.attempts, 1);
+  EXPECT_GE(stats.attempts, 1);  // frontal, then circumcentre unless the first is very good
+  EXPECT_LE(stats.attempts, 2);
+  EXPECT_TRUE(stats.kept == 0 || stats.kept == 1);
   EXPECT_GT(stats.sweeps, 0);
   for (double t : {stats.boundary, stats.triangulate, stats.recombine, stats.split, stats.cleanup, stats.smooth,
                    stats.check}) {
