@@ -97,7 +97,7 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
     }
   }
 
-  if (input.frontal && input.refine) frontal_fill(cdt, input.accept_radius);
+  if (input.frontal && input.refine) frontal_fill(cdt, input.loops, input.accept_radius);
   for (size_t k = 0; !input.frontal && k < input.seeds.size(); ++k) {
     const std::vector<int> ring = cdt.inside_triangles_at(input.seed_from[k]);
     if (ring.empty()) continue;

@@ -204,12 +204,14 @@ CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
       out.fine_of_coarse.push_back(L[k]);
     }
     const size_t m = coarse.size();
+    std::vector<char> odd_after(m, 0);  // coarse edge j -> j + 1 spans one fine edge
     for (size_t j = 0; j < m; ++j) {
       const int a = coarse[j], b = coarse[(j + 1) % m];
       if ((picks[(j + 1) % m] + n - picks[j]) % n == 2) {
         out.midpoint[undirected_key(a, b)] = L[(picks[j] + 1) % n];
       } else {
         out.odd_edges.push_back(undirected_key(a, b));
+        odd_after[j] = 1;
       }
     }
     for (size_t j = 0; j < m; ++j) {
@@ -217,7 +219,8 @@ CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
       const Eigen::Vector2d& xp = out.points[static_cast<size_t>(first) + (j + m - 1) % m];
       const Eigen::Vector2d& xn = out.points[static_cast<size_t>(first) + (j + 1) % m];
       const double lp = (x - xp).norm(), ln = (x - xn).norm();
-      const double size = 0.5 * (lp + ln);
+      // An odd edge is half a coarse edge: it counts twice in the size.
+      const double size = 0.5 * (lp * (odd_after[(j + m - 1) % m] ? 2.0 : 1.0) + ln * (odd_after[j] ? 2.0 : 1.0));
       out.sizes.push_back(size);
       const double interior = M_PI - std::atan2(cross2(x - xp, xn - x), (x - xp).dot(xn - x));
       if (seed_rows && m >= 3 && interior > 150.0 * M_PI / 180.0 && interior < 210.0 * M_PI / 180.0) {

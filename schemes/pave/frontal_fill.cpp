@@ -29,7 +29,27 @@ double circumradius(const V2& a, const V2& b, const V2& c) {
 
 }  // namespace
 
-int frontal_fill(Cdt& cdt, double accept_radius) {
+int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double accept_radius) {
+  // The lattice frame of every point as (cos 4t, sin 4t) of its angle t
+  // (a cross: defined modulo 90 degrees): on the loops the mean of the two
+  // loop edges' directions, for a new point the mean of its front edge's.
+  std::vector<V2> frame(cdt.p.size(), V2(1, 0));
+  auto cross_of = [](const V2& d) {
+    const double t = 4.0 * std::atan2(d.y(), d.x());
+    return V2(std::cos(t), std::sin(t));
+  };
+  auto mean_cross = [](const V2& f, const V2& g) {
+    const V2 m = f + g;
+    return m.norm() > 1e-6 ? V2(m.normalized()) : f;
+  };
+  for (const auto& loop : loops) {
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const V2 p = cdt.pt(loop[k]);
+      const V2 prev = cdt.pt(loop[(k + loop.size() - 1) % loop.size()]);
+      const V2 next = cdt.pt(loop[(k + 1) % loop.size()]);
+      frame[static_cast<size_t>(loop[k])] = mean_cross(cross_of(p - prev), cross_of(next - p));
+    }
+  }
   // Sizes of new points: linear over the triangulation of the loop points
   // alone (a background mesh), so that sizes grade between loops instead of
   // being carried along by the rows. Each point remembers its background
@@ -95,20 +115,38 @@ int frontal_fill(Cdt& cdt, double accept_radius) {
 
     std::array<V2, 2> candidates;
     size_t count = 0;
-    if (!T.c[static_cast<size_t>(front)] && len > 1.19 * h) {
-      candidates[count++] = 0.5 * (pa + pb) + 0.5 * len * n;  // hypotenuse: apex
+    const V2 cross = mean_cross(frame[static_cast<size_t>(a)], frame[static_cast<size_t>(b)]);
+    const double angle = 0.25 * std::atan2(cross.y(), cross.x());
+    const V2 u(std::cos(angle), std::sin(angle)), v(-u.y(), u.x());
+    const V2 d = pb - pa;
+    const double du = d.dot(u), dv = d.dot(v);
+    // The front edge against the frame: along an axis (a leg) or across
+    // (a diagonal, within 22.5 degrees of 45); loop edges are legs.
+    const double phi = std::atan2(std::abs(dv), std::abs(du));
+    const bool diagonal = !T.c[static_cast<size_t>(front)] && phi > M_PI / 8 && phi < 3 * M_PI / 8;
+    if (diagonal) {
+      // The lattice point that makes the edge a hypotenuse, on T's side.
+      const V2 x1 = pa + du * u, x2 = pa + dv * v;
+      candidates[count++] = cdt::orient(pa, pb, x1) > 0 ? x1 : x2;
     } else {
-      // Leg: the endpoint whose perpendicular point has more room first.
-      const V2 xa = pa + h * n, xb = pb + h * n;
+      // A leg: one size along the frame axis nearest the edge's normal
+      // (the edge's own normal on a loop edge), at the endpoint whose
+      // perpendicular point has more room first.
+      V2 up = n;
+      if (!T.c[static_cast<size_t>(front)]) {
+        up = std::abs(n.dot(u)) > std::abs(n.dot(v)) ? u : v;
+        if (up.dot(n) < 0) up = -up;
+      }
+      const V2 xa = pa + h * up, xb = pb + h * up;
       auto clearance = [&](const V2& x) {
-        double d = INFINITY;
+        double dist = INFINITY;
         for (size_t k = 0; k < 3; ++k) {
-          d = std::min(d, (cdt.pt(T.v[k]) - x).squaredNorm());
+          dist = std::min(dist, (cdt.pt(T.v[k]) - x).squaredNorm());
           const int nb = T.n[k];
           if (nb < 0) continue;
-          for (int v : cdt.tri(nb).v) d = std::min(d, (cdt.pt(v) - x).squaredNorm());
+          for (int w : cdt.tri(nb).v) dist = std::min(dist, (cdt.pt(w) - x).squaredNorm());
         }
-        return d;
+        return dist;
       };
       const bool a_first = clearance(xa) >= clearance(xb);
       candidates[count++] = a_first ? xa : xb;
@@ -135,6 +173,7 @@ int frontal_fill(Cdt& cdt, double accept_radius) {
         continue;
       }
       home.push_back(where);
+      frame.push_back(cross);
       done = true;
     }
     if (!done) {

@@ -24,11 +24,13 @@
 
 #include "schemes/pave/cdt_kernel.h"
 
+#include <vector>
+
 namespace cooperage::pave::detail {
 
 /// Fills the inside of `cdt` (loops recovered, inside marked) frontally;
 /// sizes of new points are the mean of their front edge's. Returns the
 /// number of points inserted.
-int frontal_fill(cdt::Cdt& cdt, double accept_radius);
+int frontal_fill(cdt::Cdt& cdt, const std::vector<std::vector<int>>& loops, double accept_radius);
 
 }  // namespace cooperage::pave::detail
