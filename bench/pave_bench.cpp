@@ -167,21 +167,14 @@ void BM_PaveFace(benchmark::State& state) {
 }
 BENCHMARK(BM_PaveFace)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 
-// Unit square, n boundary segments per side, counter-clockwise (~0.9 n^2
-// quads: pave refines to about twice the boundary spacing, then splits).
-void BM_Pave2D(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  std::vector<Eigen::Vector2d> loop;
-  const Eigen::Vector2d corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (int side = 0; side < 4; ++side)
-    for (int i = 0; i < n; ++i)
-      loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
+/// pave_2d on `loops`, repeated, with its per-step times as counters.
+void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::Vector2d>>& loops) {
   size_t quads = 0;
   pave::PaveStats stats, sum;
   pave::PaveOptions options;
   options.stats = &stats;
   for (auto _ : state) {
-    const pave::QuadMesh2D m = pave::pave_2d({loop}, options);
+    const pave::QuadMesh2D m = pave::pave_2d(loops, options);
     quads = m.quads.size();
     benchmark::DoNotOptimize(m.points.data());
     sum.boundary += stats.boundary;
@@ -203,12 +196,51 @@ void BM_Pave2D(benchmark::State& state) {
   state.counters["t_smooth"] = ms(sum.smooth);
   state.counters["t_check"] = ms(sum.check);
   state.counters["sweeps"] = stats.sweeps;
+  state.counters["attempts"] = stats.attempts;
   state.counters["quads"] = static_cast<double>(quads);
   state.counters["quads_per_s"] =
       benchmark::Counter(static_cast<double>(quads), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
 }
+
+// Unit square, n boundary segments per side, counter-clockwise: n^2 quads,
+// the structured grid (frontal rows close exactly; one triangulation).
+void BM_Pave2D(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::vector<Eigen::Vector2d> loop;
+  const Eigen::Vector2d corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int side = 0; side < 4; ++side)
+    for (int i = 0; i < n; ++i)
+      loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
+  run_pave_2d(state, {loop});
+}
 // ~5k, ~50k, ~500k quads.
-BENCHMARK(BM_Pave2D)->Arg(74)->Arg(235)->Arg(745)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Pave2D)->Arg(35)->Arg(36)->Arg(74)->Arg(75)->Arg(235)->Arg(236)->Arg(745)->Unit(benchmark::kMillisecond);
+
+// The 4 x 2 plate with three round holes of the pave tests, n boundary
+// segments per unit length (~7 n^2 quads): unstructured, fronts collide
+// around and between the holes, so both coarse triangulations run.
+void BM_Pave2DHoles(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  std::vector<std::vector<Eigen::Vector2d>> loops(1);
+  const Eigen::Vector2d corners[] = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
+  for (int side = 0; side < 4; ++side) {
+    const int k = (side % 2 == 0 ? 4 : 2) * n;
+    for (int i = 0; i < k; ++i)
+      loops[0].push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / k);
+  }
+  const double holes[3][3] = {{1.0, 1.0, 0.4}, {2.2, 1.0, 0.3}, {3.2, 0.8, 0.25}};
+  for (const auto& h : holes) {
+    const int k = 2 * std::max(2, static_cast<int>(std::lround(M_PI * h[2] * n)));  // even
+    loops.emplace_back();
+    for (int i = 0; i < k; ++i) {
+      const double a = -2.0 * M_PI * i / k;  // clockwise
+      loops.back().emplace_back(h[0] + h[2] * std::cos(a), h[1] + h[2] * std::sin(a));
+    }
+  }
+  run_pave_2d(state, loops);
+}
+// ~5k, ~50k, ~500k quads.
+BENCHMARK(BM_Pave2DHoles)->Arg(27)->Arg(85)->Arg(267)->Unit(benchmark::kMillisecond);
 
 }  // namespace
