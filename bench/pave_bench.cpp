@@ -203,8 +203,10 @@ void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::V
   state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
 }
 
-// Unit square, n boundary segments per side, counter-clockwise: n^2 quads,
-// the structured grid (frontal rows close exactly; one triangulation).
+// Unit square, n boundary segments per side, counter-clockwise, ~n^2 quads.
+// n is odd: every side has an odd edge, the rows from opposite sides are
+// half a spacing apart and meet at seams (with n even the frontal mesh is
+// the structured grid, ~1.8 M quads/s: no test of the general path).
 void BM_Pave2D(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   std::vector<Eigen::Vector2d> loop;
@@ -214,8 +216,8 @@ void BM_Pave2D(benchmark::State& state) {
       loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
   run_pave_2d(state, {loop});
 }
-// ~5k, ~50k, ~500k quads.
-BENCHMARK(BM_Pave2D)->Arg(35)->Arg(36)->Arg(74)->Arg(75)->Arg(235)->Arg(236)->Arg(745)->Unit(benchmark::kMillisecond);
+// ~5.6k, ~55k, ~555k quads.
+BENCHMARK(BM_Pave2D)->Arg(75)->Arg(235)->Arg(745)->Unit(benchmark::kMillisecond);
 
 // The 4 x 2 plate with three round holes of the pave tests, n boundary
 // segments per unit length (~7 n^2 quads): unstructured, fronts collide
