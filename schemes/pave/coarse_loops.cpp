@@ -14,6 +14,9 @@ namespace {
 /// Reflex corners of holes above this [rad] stay with the corner template
 /// (PaveOptions::tip_angle's default, 250 deg).
 constexpr double kHoleReflexLimit = 250.0 * M_PI / 180.0;
+/// Coarse loops with at least this many vertices count an odd edge at the
+/// full coarse size in their point sizes.
+constexpr size_t kOddFullSizeFrom = 8;
 }  // namespace
 
 double skipped_quality(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
@@ -184,7 +187,7 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
 
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
                                const std::vector<std::vector<int>>& loops, bool seed_rows, int odd_rank,
-                               double corner_angle) {
+                               double corner_angle, bool odd_full_size) {
   CoarseBoundary out;
   for (const auto& L : loops) {
     const size_t n = L.size();
@@ -219,8 +222,11 @@ CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
       const Eigen::Vector2d& xp = out.points[static_cast<size_t>(first) + (j + m - 1) % m];
       const Eigen::Vector2d& xn = out.points[static_cast<size_t>(first) + (j + 1) % m];
       const double lp = (x - xp).norm(), ln = (x - xn).norm();
-      // An odd edge is half a coarse edge: it counts twice in the size.
-      const double size = 0.5 * (lp * (odd_after[(j + m - 1) % m] ? 2.0 : 1.0) + ln * (odd_after[j] ? 2.0 : 1.0));
+      // An odd edge is half a coarse edge: it counts twice in the size (else
+      // the frontal size field of a long odd-sided loop is too fine inside).
+      const double odd_weight = odd_full_size && m >= kOddFullSizeFrom ? 2.0 : 1.0;
+      const double size = 0.5 * (lp * (odd_after[(j + m - 1) % m] ? odd_weight : 1.0) +
+                                 ln * (odd_after[j] ? odd_weight : 1.0));
       out.sizes.push_back(size);
       const double interior = M_PI - std::atan2(cross2(x - xp, xn - x), (x - xp).dot(xn - x));
       if (seed_rows && m >= 3 && interior > 150.0 * M_PI / 180.0 && interior < 210.0 * M_PI / 180.0) {

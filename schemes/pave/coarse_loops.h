@@ -60,10 +60,14 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points, const
 
 /// Builds the coarse loops of the fine loops (fine node ids into `points`),
 /// their vertices by loop_picks(). Throws std::runtime_error when a loop has
-/// no valid coarse loop.
+/// no valid coarse loop. With `odd_full_size`, an odd edge of a loop of 8 or
+/// more coarse vertices counts at the full coarse size in the point sizes
+/// (for the frontal fill, whose size field the loop sizes set; the
+/// circumcentre refinement keeps the finer sizes, whose extra room the
+/// parity paths of small faces need).
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& points,
                                const std::vector<std::vector<int>>& loops, bool seed_rows = true,
-                               int odd_rank = 0, double corner_angle = 0.0);
+                               int odd_rank = 0, double corner_angle = 0.0, bool odd_full_size = false);
 
 /// The parity (0: even nodes, 1: odd nodes are coarse vertices) of loop L:
 /// the one whose worst skipped node is best (a skipped node's angle is split

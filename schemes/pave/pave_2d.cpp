@@ -150,7 +150,7 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     detail::CoarseBoundary coarse;
     try {
       coarse = detail::coarse_boundary(P, work, options.boundary_rows, options.odd_edge_rank,
-                                       options.corner_angle * M_PI / 180.0);
+                                       options.corner_angle * M_PI / 180.0, options.frontal);
     } catch (const std::runtime_error& err) {
       failed(err.what());
     }
@@ -311,7 +311,8 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   // circumcentre refinement (better where fronts of mismatched spacing
   // collide in a narrow region); the better mesh is kept, and the second is
   // not tried when the frontal mesh is already very good. A mesh below
-  // options.retry_below is retried with other settings: wrapping more tips,
+  // options.retry_below is retried (circumcentre refinement) with other
+  // settings: wrapping more tips,
   // a narrower ring around 4-node holes, no tip wrapping and one parity per
   // loop, stricter recombination (fewer, better quads); then the first two
   // again with the finer triangulation of earlier versions (a coarse
@@ -330,10 +331,12 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
     attempts.push_back(attempts[k]);
     attempts.back().max_radius = std::min(options.max_radius, 0.64);
   }
+  // Retries refine by circumcentres: that chain met every random face.
+  for (auto& a : attempts) a.frontal = false;
   const bool both_triangulations = options.frontal;
   if (both_triangulations) {
-    attempts.insert(attempts.begin() + 1, attempts[0]);
-    attempts[1].frontal = false;
+    attempts.insert(attempts.begin(), attempts[0]);
+    attempts[0].frontal = true;
   }
   std::vector<V2> P;
   std::vector<detail::Quad> quads;

@@ -15,8 +15,10 @@ namespace cooperage::pave::testing {
 namespace {
 
 TEST(Pave2DRandom, TwoHundredFacesMeshAllQuadWithoutInversion) {
-  const unsigned first_seed = 1000;
-  // COOPERAGE_PAVE_RANDOM_FACES=<n> runs a longer campaign.
+  // COOPERAGE_PAVE_RANDOM_FACES=<n> runs a longer campaign;
+  // COOPERAGE_PAVE_RANDOM_FIRST=<seed> starts it elsewhere (to rerun a seed).
+  const char* first = std::getenv("COOPERAGE_PAVE_RANDOM_FIRST");
+  const unsigned first_seed = first ? static_cast<unsigned>(std::strtoul(first, nullptr, 10)) : 1000u;
   const char* env = std::getenv("COOPERAGE_PAVE_RANDOM_FACES");
   const int faces = env ? std::max(1, std::atoi(env)) : 240;
   int failures = 0, holes = 0, below_03 = 0, odd_loops = 0;
