@@ -24,6 +24,7 @@
 #include "framework/pipeline/commit_mesh.h"
 #include "framework/quality/quad_metrics.h"
 #include "schemes/pave/pave_2d.h"
+#include "schemes/pave/quad_quality_2d.h"
 
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
@@ -173,10 +174,12 @@ void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::V
   pave::PaveStats stats, sum;
   pave::PaveOptions options;
   options.stats = &stats;
+  pave::QuadMesh2D last;
   for (auto _ : state) {
-    const pave::QuadMesh2D m = pave::pave_2d(loops, options);
+    pave::QuadMesh2D m = pave::pave_2d(loops, options);
     quads = m.quads.size();
     benchmark::DoNotOptimize(m.points.data());
+    last = std::move(m);
     sum.boundary += stats.boundary;
     sum.triangulate += stats.triangulate;
     sum.recombine += stats.recombine;
@@ -197,6 +200,14 @@ void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::V
   state.counters["t_check"] = ms(sum.check);
   state.counters["sweeps"] = stats.sweeps;
   state.counters["attempts"] = stats.attempts;
+  state.counters["kept"] = stats.kept;
+  std::vector<double> sj(last.quads.size());
+  for (size_t k = 0; k < sj.size(); ++k) sj[k] = pave::detail::scaled_jacobian_2d(last.points, last.quads[k]);
+  if (!sj.empty()) {
+    std::sort(sj.begin(), sj.end());
+    state.counters["min_SJ"] = sj.front();
+    state.counters["median_SJ"] = sj[sj.size() / 2];
+  }
   state.counters["quads"] = static_cast<double>(quads);
   state.counters["quads_per_s"] =
       benchmark::Counter(static_cast<double>(quads), benchmark::Counter::kIsIterationInvariantRate);
