@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
+#include <ctime>  // clock_gettime (POSIX)
 #include <cstdlib>
 #include <cstdint>
 #include <unordered_map>
@@ -55,20 +55,28 @@ struct CanonicalFrame {
   V2 from(const V2& r) const { return origin + scale * (r.x() * ex + r.y() * V2(-ex.y(), ex.x())); }
 };
 
-/// Adds the CPU time since the last lap to *slot (no-op without stats).
+/// This thread's CPU time [s] (std::clock() would count every thread of the
+/// process: the pipeline meshes several surfaces at once).
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Adds the thread CPU time since the last lap to *slot (no-op without stats).
 class Laps {
  public:
-  explicit Laps(PaveStats* stats) : stats_(stats), last_(std::clock()) {}
+  explicit Laps(PaveStats* stats) : stats_(stats), last_(stats ? thread_seconds() : 0.0) {}
   void lap(double PaveStats::*slot) {
     if (stats_ == nullptr) return;
-    const std::clock_t now = std::clock();
-    stats_->*slot += static_cast<double>(now - last_) / CLOCKS_PER_SEC;
+    const double now = thread_seconds();
+    stats_->*slot += now - last_;
     last_ = now;
   }
 
  private:
   PaveStats* stats_;
-  std::clock_t last_;
+  double last_;
 };
 
 /// The last line of defence: the quads must tile the domain exactly. Every

@@ -49,7 +49,7 @@
 
 namespace cooperage::pave {
 
-/// Where pave_2d's time goes: CPU seconds per step, summed over attempts
+/// Where pave_2d's time goes: the calling thread's CPU seconds per step, summed over attempts
 /// (for benchmarks; filled only when PaveOptions::stats is set).
 struct PaveStats {
   double boundary = 0;     ///< (b) coarse loops, rings, tips
