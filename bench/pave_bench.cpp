@@ -12,8 +12,9 @@
 // counts, lengths and centres, and the face's area and centre, so that Gmsh
 // can be given the same boundary node counts on the same curves).
 //
-// BM_Pave2D/<n>: pave_2d alone on the unit square with n boundary segments per
-// side (~0.9 n^2 quads); counters also give the CPU milliseconds per step
+// BM_Pave2D/<n>: pave_2d alone on the unit square with n (odd) boundary
+// segments per side (~n^2 quads); BM_Pave2DHoles/<n>: on a plate with three
+// holes, n segments per unit length (~7 n^2 quads); counters also give the CPU milliseconds per step
 // (PaveStats: t_boundary, t_cdt, t_recombine, t_split, t_cleanup, t_smooth,
 // t_check) and the Laplacian sweeps made.
 #include "bench_models.h"

@@ -98,7 +98,7 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
   }
 
   if (input.frontal && input.refine) frontal_fill(cdt, input.loops, input.accept_radius);
-  for (size_t k = 0; !input.frontal && k < input.seeds.size(); ++k) {
+  for (size_t k = 0; !(input.frontal && input.refine) && k < input.seeds.size(); ++k) {
     const std::vector<int> ring = cdt.inside_triangles_at(input.seed_from[k]);
     if (ring.empty()) continue;
     const int loc = cdt.locate(input.seeds[k], ring.front(), true);

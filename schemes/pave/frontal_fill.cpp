@@ -156,7 +156,9 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
     bool done = false;
     for (size_t k = 0; k < count && !done; ++k) {
       const V2 x = candidates[k];
-      // The point must remove its triangle, else the front would stall here.
+      // A point outside T's circumcircle would leave T as it is (a point
+      // inside may still, through a constrained or shrunk cavity; T is then
+      // left to the refinement).
       if (!(cdt::incircle(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2]), x) > 0)) continue;
       const int loc = cdt.locate(x, ti, true);
       if (loc < 0 || !cdt.tri(loc).inside) continue;
@@ -172,7 +174,7 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
         cdt.vt.pop_back();
         continue;
       }
-      home.push_back(where);
+      home.push_back(where >= 0 ? where : home[static_cast<size_t>(a)]);  // a walk's start, at worst near
       frame.push_back(cross);
       done = true;
     }

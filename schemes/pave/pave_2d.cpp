@@ -345,8 +345,9 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   for (auto& a : attempts) a.frontal = false;
   const bool both_triangulations = options.frontal;
   if (both_triangulations) {
-    attempts.insert(attempts.begin(), attempts[0]);
-    attempts[0].frontal = true;
+    PaveOptions frontal = attempts[0];
+    frontal.frontal = true;
+    attempts.insert(attempts.begin(), frontal);
   }
   std::vector<V2> P;
   std::vector<detail::Quad> quads;
@@ -365,15 +366,21 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
         if (options.stats != nullptr) options.stats->kept = static_cast<int>(k);
       }
     } catch (const MeshingError& err) {
-      if (err.code() != ErrorCode::MeshingFailed || !options.check_inversion) throw;
-      if (k + 1 == attempts.size() && best.worst < -1.0) throw;
+      if (err.code() != ErrorCode::MeshingFailed) throw;
+      // Without the checks a failure is shown at once, unless the
+      // circumcentre attempt is still to come.
+      if (!options.check_inversion && !(both_triangulations && k == 0)) throw;
+      if (k + 1 == attempts.size() && quads.empty()) throw;
     }
     if (both_triangulations && k == 0) {
-      if (!(best.median >= kFrontalGoodMedian && best.worst >= kFrontalGoodWorst)) continue;
-      ++k;
+      const bool very_good = best.median >= kFrontalGoodMedian &&
+                             best.worst >= std::max(kFrontalGoodWorst, options.retry_below);
+      if (very_good) break;
+      continue;
     }
     if (best.worst >= options.retry_below) break;
   }
+  if (quads.empty()) failed("no attempt gave a mesh");
 
   QuadMesh2D out;
   out.boundary_count = nb;

@@ -12,15 +12,18 @@
 //      skipped nodes (coarse_loops.h); a hole with 4 nodes first gets a ring
 //      of 8 quads (a 12-node loop), and a skipped reflex tip (> 250 deg)
 //      paving's corner template (3 quads, the loop grows by 4 nodes);
-//  (c) constrained Delaunay triangulation of the coarse loops (cdt_2d.h),
-//      first seeded with a point 0.72 coarse sizes inward of every flat
-//      coarse vertex (paving's first row at the coarse level), then refined
-//      to about twice the local boundary spacing (circumradius bound, tuned
-//      so the final mesh has ~1 quad per spacing^2): sizes grade smoothly
+//  (c) constrained Delaunay triangulation of the coarse loops (cdt_2d.h):
+//      in the first attempt, rows of right triangles grown inward from the
+//      loops along a cross field (frontal_fill.h: paving's rows at the
+//      coarse level); in the others, seeded with a point 0.72 coarse sizes
+//      inward of every flat coarse vertex; then refined by circumcentres to
+//      about twice the local boundary spacing (circumradius bound, tuned so
+//      the final mesh has ~1 quad per spacing^2): sizes grade smoothly
 //      between loops of different spacing by interpolation; the output is
 //      renumbered along a Hilbert curve so later steps stay cache-local;
 //  (d) recombination of triangle pairs into quads, greedy by quality plus
-//      augmenting paths (recombine.h);
+//      augmenting paths; triangles left on the boundary move inward
+//      (recombine.h);
 //  (e) every quad split into 4 and every triangle into 3 quads
 //      (split_to_quads.h): a coarse loop edge's midpoint is exactly the skipped
 //      boundary node, so no node is added on the boundary; the boundary rows
@@ -33,7 +36,9 @@
 //  intervals apart switches parity with odd edges between them, so that
 //  every corner is a coarse vertex; odd edges are paired by paths of coarse cells that lose their
 //  midpoints too (parity_paths.h), so only the total must be even, as in
-//  paving. A failed attempt, or one whose worst quad is below
+//  paving. The frontal mesh is kept at once when very good (median >= 0.98,
+//  no quad below 0.7); else the circumcentre mesh is made too and the
+//  better kept. A failed attempt, or one whose worst quad is below
 //  retry_below, is retried with other settings (up to 5 retries; the best
 //  valid attempt wins).
 // Requirement: an even total node count and at least 4 nodes per loop.
@@ -59,9 +64,9 @@ struct PaveStats {
   double cleanup = 0;      ///< (f) doublets and diamonds
   double smooth = 0;       ///< (f) untangling, Laplacian sweeps, optimisation
   double check = 0;        ///< (f) inversion and tiling checks
-  int attempts = 0;        ///< settings tried (2 with both triangulations, more when retried)
-  int kept = 0;            ///< index of the attempt kept (0: frontal, 1: circumcentre refinement)
-  int sweeps = 0;          ///< Laplacian sweeps of the last attempt
+  int attempts = 0;        ///< settings tried (1 if the frontal mesh is very good, 2 if not, more when retried)
+  int kept = 0;            ///< index of the attempt kept (with PaveOptions::frontal: 0 frontal, 1 circumcentre, 2.. retries)
+  int sweeps = 0;          ///< Laplacian sweeps of the last attempt made (not necessarily the kept one)
 };
 
 struct PaveOptions {

@@ -20,7 +20,9 @@ using Cell = std::array<int, 4>;
 /// Pairs triangles of `tri` into quads; unpaired triangles stay.
 /// \param[in] min_quality  smallest scaled Jacobian of an accepted quad
 /// \param[in] min_cells    per point (may be shorter than points: 0 beyond):
-///                         a merge never leaves a point in fewer cells
+///                         a merge never leaves a point in fewer cells; the
+///                         points it covers count as loop points, from which
+///                         leftover triangles are moved (none without it)
 std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality = 0.3,
                             const std::vector<int>& min_cells = {});
 

@@ -82,6 +82,31 @@ TEST(Pave2D, UniformlySpacedSquareAndLGiveTheStructuredGrid) {
   }
 }
 
+// With the frontal attempt on (the default) the kept mesh scores at least
+// as well as the circumcentre mesh alone (median + a quarter of the
+// minimum, both above 0.5), whichever attempt wins on the face.
+TEST(Pave2D, KeptMeshIsAtLeastAsGoodAsTheCircumcentreMeshAlone) {
+  for (const NamedFace& face : benchmark_faces()) {
+    SCOPED_TRACE(face.name);
+    PaveOptions circumcentre_only;
+    circumcentre_only.frontal = false;
+    PaveStats stats;
+    PaveOptions both;
+    both.stats = &stats;
+    const Stats a = testing::stats(pave_2d(face.loops, circumcentre_only));
+    const QuadMesh2D kept = pave_2d(face.loops, both);
+    EXPECT_EQ(check_mesh(face.loops, kept), "");
+    const Stats b = testing::stats(kept);
+    if (a.min_sj >= 0.5 && b.min_sj >= 0.5) {
+      EXPECT_GE(b.median_sj + 0.25 * b.min_sj, a.median_sj + 0.25 * a.min_sj - 1e-12);
+    }
+    if (stats.kept == 1) {  // the circumcentre mesh won: the very same mesh
+      EXPECT_EQ(b.quads, a.quads);
+      EXPECT_DOUBLE_EQ(b.median_sj, a.median_sj);
+    }
+  }
+}
+
 TEST(Pave2D, SingleQuadAndSmallestLoops) {
   const Loops quad{polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {1, 1, 1, 1})};
   const QuadMesh2D m = pave_2d(quad);
