@@ -55,6 +55,26 @@ scheme::Applicability PaveScheme::applicable(const scheme::SurfaceView& view) co
       return scheme::Applicability::no(name + ": loop " + std::to_string(l) + " has no curves");
     }
   }
+  // With the curves meshed (view.mesh), the interval counts are known: an
+  // odd total has no all-quad mesh. At planning time they are not, and
+  // constrain() makes the total even.
+  if (view.mesh != nullptr) {
+    size_t total = 0;
+    bool all_meshed = true;
+    for (const auto& loop : s.loops) {
+      for (const auto& use : loop.uses) {
+        if (!view.mesh->curve_meshed(use.curve)) {
+          all_meshed = false;
+          continue;
+        }
+        total += view.mesh->curve_nodes(use.curve).size() - 1;  // intervals
+      }
+    }
+    if (all_meshed && total % 2 != 0) {
+      return scheme::Applicability::no(name + ": the boundary has an odd number of intervals (" +
+                                       std::to_string(total) + "), so no all-quad mesh exists");
+    }
+  }
   // A general fallback. The score is on the structured schemes' scale (the
   // scaled Jacobian they can reach at their worst vertex): pave's worst
   // element is typically 0.56-0.79 on the benchmark faces, so a map or submap

@@ -256,19 +256,33 @@ TEST(PaveScheme, LoopsAgainstTheNormalStillGiveQuadsAlongTheNormal) {
   }
 }
 
-TEST(PaveScheme, OddBoundaryIsRejectedByMeshNamingTheSurface) {
+TEST(PaveScheme, OddBoundaryIsRejectedByApplicableAndMeshNamingTheSurface) {
   occ::Workbench b;
   b.brick("box", Vec3(0, 0, 0), Vec3(1, 1, 1));
   const geom::Model m = b.build_model();
   const int sid = top_planar_face(m);
   ASSERT_GT(sid, 0);
-  // applicable() cannot see intervals: it accepts the face.
+  // Before the curves are meshed applicable() cannot see intervals (constrain()
+  // makes them even): it accepts the face.
   EXPECT_TRUE(make_pave()->applicable({m, sid, nullptr}).ok);
   std::map<int, int> counts;
   for (const auto& c : m.curves()) counts[c.id] = 3;
   counts[m.surface(sid).loops[0].uses[0].curve] = 4;  // 3 + 3 + 3 + 4 = 13
   mesh::MeshDB db;
   pipeline::mesh_curves(m, counts, io::MeshSettings{}, db);
+  // With the curves meshed it rejects the odd total with the reason.
+  const auto a = make_pave()->applicable({m, sid, &db});
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.why.find("odd number of intervals (13)"), std::string::npos) << a.why;
+  EXPECT_NE(a.why.find("surface " + std::to_string(sid)), std::string::npos) << a.why;
+  // An even total is accepted.
+  {
+    std::map<int, int> even = counts;
+    even[m.surface(sid).loops[0].uses[0].curve] = 5;  // 14
+    mesh::MeshDB db_even;
+    pipeline::mesh_curves(m, even, io::MeshSettings{}, db_even);
+    EXPECT_TRUE(make_pave()->applicable({m, sid, &db_even}).ok);
+  }
   try {
     make_pave()->mesh({m, sid, &db}, scheme::MeshParams{});
     FAIL() << "an odd boundary was meshed";
