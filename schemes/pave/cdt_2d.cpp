@@ -127,14 +127,11 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
       const V2& b = cdt.pt(T.v[1]);
       const V2& cc = cdt.pt(T.v[2]);
       const V2 ab = b - a, ac = cc - a;
-      const double d = 2.0 * (ab.x() * ac.y() - ab.y() * ac.x());
-      if (d <= 0) continue;
-      const V2 off(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
-                   ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm());
-      const V2 center = a + off / d;
-      const double R = (off / d).norm();
-      const double h = (cdt.size[static_cast<size_t>(T.v[0])] + cdt.size[static_cast<size_t>(T.v[1])] +
-                        cdt.size[static_cast<size_t>(T.v[2])]) / 3.0;
+      V2 off;
+      if (!cdt::circumcentre_offset(a, b, cc, off)) continue;
+      const V2 center = a + off;
+      const double R = off.norm();
+      const double h = cdt.mean_size(T);
       const double lmin = std::sqrt(std::min({ab.squaredNorm(), ac.squaredNorm(), (cc - b).squaredNorm()}));
       // Too big, or fairly big with a short edge (input.max_radius).
       const bool bad = R > input.max_radius * h || (R > 0.7 * input.max_radius * h && R > 1.1 * lmin);

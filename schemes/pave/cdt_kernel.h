@@ -36,6 +36,17 @@ inline double incircle(const V2& a, const V2& b, const V2& c, const V2& d) {
          (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
 }
 
+/// Offset from a to the circumcentre of the counter-clockwise a, b, c; false
+/// for a degenerate or clockwise triangle.
+inline bool circumcentre_offset(const V2& a, const V2& b, const V2& c, V2& offset) {
+  const V2 ab = b - a, ac = c - a;
+  const double d = 2.0 * (ab.x() * ac.y() - ab.y() * ac.x());
+  if (!(d > 0)) return false;
+  offset = V2(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+              ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d;
+  return true;
+}
+
 inline std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
@@ -83,6 +94,11 @@ class Cdt {
     return id;
   }
   Tri& tri(int i) { return t[static_cast<size_t>(i)]; }
+  /// Mean target size at the corners of T.
+  double mean_size(const Tri& T) const {
+    return (size[static_cast<size_t>(T.v[0])] + size[static_cast<size_t>(T.v[1])] + size[static_cast<size_t>(T.v[2])]) /
+           3.0;
+  }
   const V2& pt(int i) const { return p[static_cast<size_t>(i)]; }
 
   /// Sets the neighbour of triangle nb across its edge {a, b} to neu.

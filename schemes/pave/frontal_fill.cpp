@@ -12,19 +12,10 @@ using cdt::Cdt;
 using cdt::Tri;
 using V2 = Eigen::Vector2d;
 
-double mean_size(const Cdt& cdt, const Tri& T) {
-  return (cdt.size[static_cast<size_t>(T.v[0])] + cdt.size[static_cast<size_t>(T.v[1])] +
-          cdt.size[static_cast<size_t>(T.v[2])]) / 3.0;
-}
-
 /// Circumradius (infinite for a degenerate or clockwise triangle).
 double circumradius(const V2& a, const V2& b, const V2& c) {
-  const V2 ab = b - a, ac = c - a;
-  const double d = 2.0 * (ab.x() * ac.y() - ab.y() * ac.x());
-  if (!(d > 0)) return INFINITY;
-  const V2 off(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
-               ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm());
-  return (off / d).norm();
+  V2 offset;
+  return cdt::circumcentre_offset(a, b, c, offset) ? offset.norm() : INFINITY;
 }
 
 }  // namespace
@@ -79,7 +70,7 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
   };
   auto accepted = [&](int ti) {
     const Tri& T = cdt.tri(ti);
-    return circumradius(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2])) <= accept_radius * mean_size(cdt, T);
+    return circumradius(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2])) <= accept_radius * cdt.mean_size(T);
   };
   auto live_inside = [&](int ti) { return ti >= 0 && cdt.tri(ti).alive && cdt.tri(ti).inside; };
 
