@@ -61,6 +61,7 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     out << ": " << c.violations << " elements outside"
         << (c.failed ? " -- FAILED" : (c.violations ? " (warning)" : ", ok")) << "\n";
   }
+  for (const auto& w : result.mesh.warnings) out << "warning: " << w.text() << "\n";
   for (const auto& f : result.written) out << "wrote " << f << "\n";
   if (result.exports_skipped) out << "exports skipped: a quality check failed\n";
 }

@@ -67,6 +67,9 @@ void run_stage(const char* stage, int dim, const std::vector<int>& ids,
   report(options, stage, 0, ids.size());
   auto meshes = for_each_entity(ids, mesh_one);
   for (size_t i = 0; i < ids.size(); ++i) {
+    for (std::string& w : meshes[i].mesh.warnings) {
+      result.warnings.push_back({EntityRef{dim, ids[i]}, std::move(w)});
+    }
     commit(meshes[i].mesh, ids[i], result.mesh);
     meshes[i].mesh = {};  // release the local copy now
     result.timings.push_back({dim, ids[i], plan.at(ids[i]).scheme, meshes[i].seconds});
@@ -75,6 +78,11 @@ void run_stage(const char* stage, int dim, const std::vector<int>& ids,
 }
 
 }  // namespace
+
+std::string Warning::text() const {
+  const std::string who = entity.name();
+  return who.empty() ? message : who + ": " + message;
+}
 
 MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
                       const scheme::Registry& registry, const MeshOptions& options) {

@@ -3,6 +3,7 @@
 // Every stage is a function of the previous stage's value.
 #pragma once
 
+#include "framework/core/error.h"
 #include "framework/geometry/model.h"
 #include "framework/intervals/solve.h"
 #include "framework/io/job.h"
@@ -38,12 +39,22 @@ struct EntityTiming {
   double seconds = 0.0;
 };
 
+/// Something a run gave up or found suspicious without failing (a scheme's
+/// fallback, a volume deviating from the CAD's), about one entity.
+struct Warning {
+  EntityRef entity;
+  std::string message;  ///< one sentence, no entity prefix
+  /// "surface 12: pave fell back to quad-dominant ..."
+  std::string text() const;
+};
+
 struct MeshResult {
   SchemePlan plan;
   intervals::IntervalSolution intervals;
   mesh::MeshDB mesh;
   std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
   QualityReport quality;              ///< scaled Jacobian per block (no journal checks)
+  std::vector<Warning> warnings;      ///< in stage order, then by entity id
 };
 
 /// Meshes a model. Throws MeshingError naming the entity on any failure,

@@ -56,6 +56,10 @@ struct EntityMesh {
   /// each surface's natural normal.
   std::map<int, std::vector<mesh::Quad>> surface_quads;
   std::map<int, std::vector<mesh::Tri>> surface_tris;
+  /// Sentences for a person about what the scheme had to give up (a
+  /// fallback, a relaxed goal); the pipeline reports them with the entity
+  /// in MeshResult::warnings. Never used for errors.
+  std::vector<std::string> warnings;
 
   /// Adds a local node; returns its local index.
   int add(const geom::Vec3& x, int global_node = -1) {
