@@ -13,12 +13,12 @@
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
+#include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
 #include <CLI/CLI.hpp>
 
-#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -66,28 +66,12 @@ int run_journal(const std::string& file, int threads, bool quiet) {
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
              bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
-  io::Job job;
-  job.file = model;
-  io::ImportOp import;
-  import.name = std::filesystem::path(model).stem().string();
-  import.file = model;
-  job.geometry.push_back({import, {model, 0, "import"}});
-  job.imprint_merge = !no_imprint;
-  job.mesh = io::MeshSettings{};
-  job.mesh->size = size;
-  if (elements != io::ElementKind::Hex) {
-    // Volume settings need the volume ids: the model is read once more here.
-    const geom::Model m = pipeline::load_any(model, !no_imprint);
-    for (const geom::Volume& v : m.volumes()) {
-      io::VolumeSetting setting;
-      setting.id = v.id;
-      setting.elements = elements;
-      setting.where = {"command line", 0, "--elements"};
-      job.mesh->volumes.push_back(setting);
-    }
-  }
-  job.exports.push_back({output, {"command line", 0, "-o"}});
-  return finish_run(job, dim, threads, quiet);
+  pipeline::ModelJobOptions options;
+  options.size = size;
+  options.imprint_merge = !no_imprint;
+  options.elements = elements;
+  options.exports = {output};
+  return finish_run(pipeline::model_job(model, options), dim, threads, quiet);
 }
 
 }  // namespace

@@ -2,41 +2,19 @@
 
 #include "json_writer.h"
 
-#include "framework/io/journal_reader.h"
-#include "framework/pipeline/build_geometry.h"
-#include "framework/pipeline/check_settings.h"
+#include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
-#include <cstdio>
-#include <filesystem>
-
 namespace cooperage::app {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-std::string score(double s) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%.2f", s);
-  return buf;
-}
 
 void write_text(const selector::Selection& sel, bool intervals_checked, std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
         << "  -- " << c.reason << "\n";
-    for (const auto& k : c.candidates) {
-      out << "    " << (k.applicability.ok ? "+ " : "- ") << k.scheme;
-      if (k.applicability.ok) out << " score " << score(k.applicability.score);
-      if (!k.applicability.why.empty()) out << ": " << k.applicability.why;
-      out << "\n";
-    }
+    for (const auto& k : c.candidates) out << "    " << selector::describe(k) << "\n";
   };
   if (!sel.volumes.empty()) out << "volumes\n";
   for (const auto& c : sel.volumes) entity(c);
@@ -97,17 +75,9 @@ void write_json(const selector::Selection& sel, bool intervals_checked, std::ost
 }  // namespace
 
 int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out) {
-  io::MeshSettings settings;
-  geom::Model model;
-  if (lower_extension(file) == ".xml") {
-    const io::Job job = io::read_journal(file);
-    if (job.mesh) settings = *job.mesh;
-    model = pipeline::build_geometry(job);
-  } else {
-    model = pipeline::load_any(file);
-  }
-  if (size) settings.size = size;
-  pipeline::check_settings(model, settings);
+  const pipeline::PlanInput input = pipeline::plan_input(file, size);
+  const geom::Model& model = input.model;
+  const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
   register_builtin_schemes(registry, builtin_options(settings));
   selector::SelectOptions options;

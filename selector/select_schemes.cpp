@@ -288,10 +288,22 @@ class Selector {
 
 }  // namespace
 
+std::string describe(const Candidate& c) {
+  std::string line = (c.applicability.ok ? "+ " : "- ") + c.scheme;
+  if (c.applicability.ok) line += " score " + score_text(c.applicability.score);
+  if (!c.applicability.why.empty()) line += ": " + c.applicability.why;
+  return line;
+}
+
 pipeline::SchemePlan Selection::plan() const {
+  const auto entry = [](const Choice& c) {
+    pipeline::PlanEntry e{c.scheme, c.reason, {}};
+    for (const Candidate& k : c.candidates) e.details.push_back(describe(k));
+    return e;
+  };
   pipeline::SchemePlan plan;
-  for (const Choice& c : volumes) plan.volumes[c.id] = {c.scheme, c.reason};
-  for (const Choice& c : surfaces) plan.surfaces[c.id] = {c.scheme, c.reason};
+  for (const Choice& c : volumes) plan.volumes[c.id] = entry(c);
+  for (const Choice& c : surfaces) plan.surfaces[c.id] = entry(c);
   return plan;
 }
 

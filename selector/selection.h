@@ -15,6 +15,10 @@ struct Candidate {
   scheme::Applicability applicability;
 };
 
+/// A scheme's verdict in one line, as `cooperage plan` prints it:
+/// "+ map score 1.00: <why>" or "- map: <why>".
+std::string describe(const Candidate& candidate);
+
 struct Choice {
   int dim = 3;  ///< 3: volume, 2: surface
   int id = 0;
@@ -33,6 +37,8 @@ struct Selection {
   /// Choices changed because the interval assignment was infeasible, in order.
   std::vector<std::string> relaxations;
 
+  /// The plan the pipeline runs; each entry's details are its candidates'
+  /// verdicts (describe()).
   pipeline::SchemePlan plan() const;
 };
 

@@ -91,19 +91,27 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     static_cast<size_t>(options.threads));
   }
-  check_settings(model, settings);
   MeshResult result;
+  auto stage_start = Clock::now();
+  const auto lap = [&](const char* stage) {
+    result.stages.push_back({stage, seconds_since(stage_start)});
+    stage_start = Clock::now();
+  };
+  check_settings(model, settings);
   report(options, "plan", 0, 1);
   if (!options.planner) {
     throw MeshingError(ErrorCode::Internal,
                        "MeshOptions::planner is not set (use selector::planner())");
   }
   result.plan = options.planner(model, registry, settings, options.dim);
+  lap("plan");
   report(options, "intervals", 0, 1);
   result.intervals =
       intervals::solve(build_interval_problem(model, registry, result.plan, settings));
+  lap("intervals");
   report(options, "curves", 0, model.curves().size());
   mesh_curves(model, result.intervals.intervals, settings, result.mesh);
+  lap("curves");
 
   scheme::MeshParams params;
   params.size = settings.size.value_or(1.0);
@@ -119,6 +127,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
       },
       commit_surface);
+  lap("surfaces");
 
   std::vector<int> volumes;
   for (const auto& [id, entry] : result.plan.volumes) volumes.push_back(id);
@@ -129,6 +138,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
       },
       commit_volume);
+  lap("volumes");
 
   // Never hand back inverted elements silently.
   result.quality = assess_quality(result.mesh, model, {});
@@ -142,6 +152,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
                              ")");
     }
   }
+  lap("quality");
   return result;
 }
 
@@ -151,23 +162,30 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     throw MeshingError(ErrorCode::InvalidInput,
                        job.file + ": the journal has no <mesh> element, so there is nothing to run");
   }
-  RunResult result{build_geometry(job), {}, {}, {}, false};
+  auto stage_start = Clock::now();
+  RunResult result{build_geometry(job), {}, {}, {}, false, {}};
+  result.stages.push_back({"geometry", seconds_since(stage_start)});
   MeshOptions opts = options;
   if (opts.threads == 0) opts.threads = job.mesh->threads;
   result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
+  result.stages.insert(result.stages.end(), result.mesh.stages.begin(), result.mesh.stages.end());
+  stage_start = Clock::now();
   // The mesher's report already has the scaled Jacobian of every block;
   // evaluate again only when the journal checks metrics.
   result.quality = job.quality.empty() ? result.mesh.quality
                                        : assess_quality(result.mesh.mesh, result.model, job.quality);
+  if (!job.quality.empty()) result.stages.push_back({"quality checks", seconds_since(stage_start)});
   if (result.quality.failed()) {
     result.exports_skipped = !job.exports.empty();
-    return result;
-  }
-  for (const io::ExportSetting& e : job.exports) {
-    const std::string path = resolve_path(job.base_dir, e.file);
-    report(options, "export " + e.file, 0, 1);
-    io::write_mesh(path, result.mesh.mesh, result.model);
-    result.written.push_back(path);
+  } else {
+    stage_start = Clock::now();
+    for (const io::ExportSetting& e : job.exports) {
+      const std::string path = resolve_path(job.base_dir, e.file);
+      report(options, "export " + e.file, 0, 1);
+      io::write_mesh(path, result.mesh.mesh, result.model);
+      result.written.push_back(path);
+    }
+    if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});
   }
   return result;
 }

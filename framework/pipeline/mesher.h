@@ -32,6 +32,12 @@ struct MeshOptions {
   std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
 };
 
+/// Wall-clock time of one stage of a run.
+struct StageTime {
+  std::string stage;  ///< "geometry", "plan", "intervals", "curves", ...
+  double seconds = 0.0;
+};
+
 struct EntityTiming {
   int dim = 3;
   int id = 0;
@@ -55,6 +61,7 @@ struct MeshResult {
   std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
   QualityReport quality;              ///< scaled Jacobian per block (no journal checks)
   std::vector<Warning> warnings;      ///< in stage order, then by entity id
+  std::vector<StageTime> stages;      ///< plan, intervals, curves, surfaces, volumes, quality
 };
 
 /// Meshes a model. Throws MeshingError naming the entity on any failure,
@@ -68,6 +75,7 @@ struct RunResult {
   QualityReport quality;
   std::vector<std::string> written;  ///< export files written
   bool exports_skipped = false;      ///< a failing quality check stopped them
+  std::vector<StageTime> stages;     ///< geometry, the mesher's stages, checks, exports
 };
 
 /// A whole journal: geometry, meshing, quality checks, exports (written only

@@ -6,4 +6,5 @@ cooperage_framework_part(pipeline SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/commit_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/quality_report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesher.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/model_job.cpp
   PRIVATE_DEPS TBB::tbb)

@@ -29,8 +29,8 @@ std::vector<Metric> metrics_for(ElementType type, const std::vector<io::QualityC
 
 // Normal of the surface at each element's centroid (for signed 2D metrics).
 template <size_t N>
-std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& s,
-                                               const std::vector<std::array<int, N>>& elements) {
+std::vector<Eigen::Vector3d> centroid_normals(const mesh::MeshDB& db, const geom::Surface& s,
+                                              const std::vector<std::array<int, N>>& elements) {
   std::vector<Eigen::Vector3d> normals;
   normals.reserve(elements.size());
   for (const auto& e : elements) {
@@ -67,6 +67,16 @@ void add_block(QualityReport& report, const mesh::MeshDB& db, int dim, int id, E
 }
 
 }  // namespace
+
+std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& surface,
+                                               const std::vector<mesh::Quad>& quads) {
+  return centroid_normals(db, surface, quads);
+}
+
+std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& surface,
+                                               const std::vector<mesh::Tri>& tris) {
+  return centroid_normals(db, surface, tris);
+}
 
 const quality::MetricSummary* BlockReport::find(const std::string& metric) const {
   for (const auto& m : metrics) {

@@ -36,6 +36,14 @@ struct QualityReport {
   std::size_t inverted() const;  ///< elements with scaled Jacobian <= 0
 };
 
+/// The CAD surface's normal at the centroid of each element: the reference
+/// surface elements' scaled Jacobian, Jacobian and shape are signed against
+/// (quality::EvaluateOptions::normals).
+std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& surface,
+                                               const std::vector<mesh::Quad>& quads);
+std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& surface,
+                                               const std::vector<mesh::Tri>& tris);
+
 /// Volume blocks when the mesh has volume elements, otherwise surface blocks
 /// (scaled Jacobian signed against the surface normal). Unknown metric names
 /// in checks give MeshingError(InvalidInput) naming the journal line.

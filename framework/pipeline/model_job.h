@@ -1,0 +1,49 @@
+// model_job: the job of a CAD file meshed without a journal, as `cooperage
+// mesh MODEL --size S` and Python's cooperage.mesh() run it; plan_input:
+// what `cooperage plan FILE` and Python's cooperage.plan() plan.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framework/geometry/model.h"
+#include "framework/io/job.h"
+
+namespace cooperage::pipeline {
+
+struct ModelJobOptions {
+  double size = 0.0;                                ///< element size (> 0), model units
+  bool imprint_merge = true;                        ///< fragment touching solids
+  io::ElementKind elements = io::ElementKind::Hex;  ///< for every volume
+  std::vector<std::string> exports;                 ///< mesh files to write
+  /// Where the settings came from, for error messages: "command line",
+  /// "cooperage.mesh()"; each setting's element names its option.
+  std::string origin = "command line";
+  std::string elements_option = "--elements";
+  std::string export_option = "-o";
+};
+
+/// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at
+/// options.size with automatic schemes and writes the exports.
+/// Wedge and mixed elements need the volume ids, so the model is read once
+/// here for them.
+/// @throws MeshingError(InvalidInput) for a size that is not positive; the
+///         errors of pipeline::load_any() for wedge/mixed.
+io::Job model_job(const std::string& model, const ModelJobOptions& options);
+
+/// What `cooperage plan FILE` (and Python's cooperage.plan()) plans: the
+/// model and mesh settings of a journal (.xml), or of a CAD file with
+/// default settings.
+struct PlanInput {
+  geom::Model model;
+  io::MeshSettings settings;
+};
+
+/// Reads `file`, builds its model, applies `size` (overriding the
+/// journal's) and checks the settings against the model (check_settings).
+/// @throws MeshingError as read_journal(), build_geometry(), load_any() and
+///         check_settings() do.
+PlanInput plan_input(const std::string& file, std::optional<double> size);
+
+}  // namespace cooperage::pipeline
