@@ -57,20 +57,24 @@ int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
   return result.quality.failed() ? kExitQualityFailed : 0;
 }
 
-int run_journal(const std::string& file, int threads, bool quiet) {
-  return finish_run(io::read_journal(file), 3, threads, quiet);
+int run_journal(const std::string& file, const std::string& report, int threads, bool quiet) {
+  io::Job job = io::read_journal(file);
+  if (!report.empty()) job.reports.push_back({report, {"command line", 0, "--report"}});
+  return finish_run(job, 3, threads, quiet);
 }
 
-// `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]`: a
-// journal built on the fly; wedge and mixed apply to every volume.
+// `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
+// [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
+             const std::string& report, bool no_imprint, io::ElementKind elements, int threads,
+             bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   pipeline::ModelJobOptions options;
   options.size = size;
   options.imprint_merge = !no_imprint;
   options.elements = elements;
   options.exports = {output};
+  if (!report.empty()) options.reports = {report};
   return finish_run(pipeline::model_job(model, options), dim, threads, quiet);
 }
 
@@ -95,7 +99,7 @@ int main(int argc, char** argv) {
   info->add_flag("--no-imprint", info_no_imprint,
                  "Keep touching solids separate (no imprint and merge)");
 
-  std::string run_file;
+  std::string run_file, report_file;
   int threads = 0;
   bool quiet = false;
   CLI::App* run = app.add_subcommand("run", "Run a journal: geometry, meshing, quality, exports");
@@ -103,6 +107,8 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "Worker threads (0: all cores; same output for any)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("-q,--quiet", quiet, "No progress output");
+  run->add_option("--report", report_file,
+                  "Also write an HTML report (pictures, quality histograms, plan, times)");
 
   std::string mesh_file, mesh_output;
   double mesh_size = 0;
@@ -123,6 +129,8 @@ int main(int argc, char** argv) {
   mesh->add_option("--threads", threads, "Worker threads (0: all cores)")
       ->check(CLI::NonNegativeNumber);
   mesh->add_flag("-q,--quiet", quiet, "No progress output");
+  mesh->add_option("--report", report_file,
+                   "Also write an HTML report (pictures, quality histograms, plan, times)");
 
   std::string plan_file;
   double plan_size = 0;
@@ -140,6 +148,8 @@ int main(int argc, char** argv) {
       "quality", "Report the element quality of a mesh file, block by block");
   quality->add_option("FILE", quality_file, "A mesh file (.exo .e .g .msh .vtu)")->required();
   quality->add_flag("--json", quality_json, "Print one JSON object instead of text");
+  quality->add_option("--report", report_file,
+                      "Also write an HTML report (pictures coloured by scaled Jacobian, histograms)");
 
   try {
     app.parse(argc, argv);
@@ -155,8 +165,8 @@ int main(int argc, char** argv) {
 
   try {
     if (*info) return run_info(info_file, info_json, info_no_imprint);
-    if (*run) return run_journal(run_file, threads, quiet);
-    if (*quality) return app::run_quality(quality_file, quality_json, std::cout);
+    if (*run) return run_journal(run_file, report_file, threads, quiet);
+    if (*quality) return app::run_quality(quality_file, quality_json, std::cout, report_file);
     if (*plan) {
       return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
                            plan_json, std::cout);
@@ -165,8 +175,8 @@ int main(int argc, char** argv) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, elements,
-                      threads, quiet);
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_no_imprint,
+                      elements, threads, quiet);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

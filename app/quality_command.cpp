@@ -5,6 +5,8 @@
 #include "framework/io/read/read_mesh_file.h"
 #include "framework/quality/evaluate.h"
 #include "framework/quality/summary.h"
+#include "framework/report/html_report.h"
+#include "framework/report/report_from_file.h"
 
 #include <cstdio>
 #include <vector>
@@ -123,11 +125,15 @@ void write_json(const std::string& path, const io::MeshFile& file,
 
 }  // namespace
 
-int run_quality(const std::string& path, bool json, std::ostream& out) {
+int run_quality(const std::string& path, bool json, std::ostream& out, const std::string& html) {
   const io::MeshFile file = io::read_mesh_file(path);
   const auto reports = evaluate_blocks(file);
   if (json) write_json(path, file, reports, out);
   else write_text(path, file, reports, out);
+  if (!html.empty()) {
+    report::write_report(html, report::report_input(file, path));
+    if (!json) out << "wrote " << html << '\n';
+  }
   return 0;
 }
 

@@ -15,9 +15,12 @@ namespace cooperage::app {
 /// @param[in] path  the mesh file
 /// @param[in] json  one JSON object instead of text
 /// @param[out] out  where the report goes
+/// @param[in] html  when not empty, also write the HTML report there
+///                  (framework/report/html_report.h)
 /// @return 0
 /// @throws MeshingError from read_mesh_file() (missing file, parse error,
-///         unsupported variant, unknown extension).
-int run_quality(const std::string& path, bool json, std::ostream& out);
+///         unsupported variant, unknown extension) and from write_report().
+int run_quality(const std::string& path, bool json, std::ostream& out,
+                const std::string& html = "");
 
 }  // namespace cooperage::app

@@ -148,6 +148,12 @@ struct ExportSetting {
   SourceLocation where;
 };
 
+/// An HTML report of the run (framework/report/html_report.h).
+struct ReportSetting {
+  std::string file;  ///< .html or .htm
+  SourceLocation where;
+};
+
 /// A whole journal.
 struct Job {
   std::string file;                      ///< the journal path ("" when built in code)
@@ -157,6 +163,7 @@ struct Job {
   std::optional<MeshSettings> mesh;
   std::vector<QualityCheck> quality;
   std::vector<ExportSetting> exports;
+  std::vector<ReportSetting> reports;
 };
 
 }  // namespace cooperage::io

@@ -1,5 +1,5 @@
 // The journal reader: the document, the <cooperage> root and its sections in
-// order (<geometry>, <mesh>?, <quality>*, <export>*). The sections live in
+// order (<geometry>, <mesh>?, <quality>*, <export>*, <report>*). The sections live in
 // journal_geometry.cpp and journal_mesh.cpp; attribute parsing in journal_xml.cpp.
 #include "framework/io/journal_reader.h"
 
@@ -21,11 +21,12 @@ namespace {
 
 using detail::Element;
 
-const std::vector<std::string> kRootElements = {"geometry", "mesh", "quality", "export"};
+const std::vector<std::string> kRootElements = {"geometry", "mesh", "quality", "export", "report"};
 const std::vector<std::string> kMetrics = {"scaled_jacobian", "jacobian",         "skew",
                                            "taper",           "aspect_frobenius", "edge_ratio",
                                            "shape"};
 const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".inp"};
+const std::vector<std::string> kReportExtensions = {".html", ".htm"};
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -60,6 +61,17 @@ ExportSetting read_export(const Element& e) {
   return x;
 }
 
+ReportSetting read_report(const Element& e) {
+  e.allow_attributes({"file"});
+  e.expect_empty();
+  ReportSetting r{e.required("file"), e.where()};
+  if (std::none_of(kReportExtensions.begin(), kReportExtensions.end(),
+                   [&](const std::string& ext) { return ends_with(r.file, ext); }))
+    e.fail_at("file", "attribute \"file\" must end in one of " + detail::list(kReportExtensions) +
+                          " (the report is an HTML page), got \"" + r.file + "\"");
+  return r;
+}
+
 void read_root(const Element& root, Job& job) {
   if (std::string(root.name()) != "cooperage")
     root.fail("the root element must be <cooperage version=\"1\">");
@@ -76,12 +88,12 @@ void read_root(const Element& root, Job& job) {
     const auto rank = std::find(kRootElements.begin(), kRootElements.end(), tag);
     if (rank == kRootElements.end())
       e.fail("unknown element in <cooperage>" + detail::suggestion(tag, kRootElements, "<", ">") +
-             "; allowed, in this order: <geometry>, <mesh>?, <quality>*, <export>*");
+             "; allowed, in this order: <geometry>, <mesh>?, <quality>*, <export>*, <report>*");
     if ((tag == "geometry" || tag == "mesh") && seen.count(tag))
       e.fail("appears twice; the first is at line " + std::to_string(seen[tag]));
     if (!last.empty() && rank < std::find(kRootElements.begin(), kRootElements.end(), last))
       e.fail("must come before <" + last + "> (line " + std::to_string(seen[last]) +
-             "); the order is <geometry>, <mesh>?, <quality>*, <export>*");
+             "); the order is <geometry>, <mesh>?, <quality>*, <export>*, <report>*");
     if (tag != "geometry" && !seen.count("geometry"))
       e.fail("comes before <geometry>; a journal starts with <geometry>");
     seen.emplace(tag, e.line());
@@ -97,6 +109,13 @@ void read_root(const Element& root, Job& job) {
           e.fail("metric \"" + q.metric + "\" with this action is already checked at line " +
                  std::to_string(other.where.line));
       job.quality.push_back(std::move(q));
+    } else if (tag == "report") {
+      ReportSetting r = read_report(e);
+      for (const auto& other : job.reports)
+        if (other.file == r.file)
+          e.fail("file \"" + r.file + "\" is already a report at line " +
+                 std::to_string(other.where.line));
+      job.reports.push_back(std::move(r));
     } else {
       ExportSetting x = read_export(e);
       for (const auto& other : job.exports)

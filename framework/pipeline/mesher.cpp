@@ -8,6 +8,8 @@
 #include "framework/pipeline/commit_mesh.h"
 #include "framework/pipeline/interval_setup.h"
 #include "framework/pipeline/mesh_curves.h"
+#include "framework/report/html_report.h"
+#include "framework/report/report_from_run.h"
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -75,6 +77,18 @@ void run_stage(const char* stage, int dim, const std::vector<int>& ids,
     result.timings.push_back({dim, ids[i], plan.at(ids[i]).scheme, meshes[i].seconds});
   }
   report(options, stage, ids.size(), ids.size());
+}
+
+// The journal's HTML reports, after the exports (so they list them).
+void write_reports(const io::Job& job, const MeshOptions& options, RunResult& result) {
+  std::vector<std::string> written;
+  for (const io::ReportSetting& r : job.reports) {
+    const std::string path = resolve_path(job.base_dir, r.file);
+    report(options, "report " + r.file, 0, 1);
+    cooperage::report::write_report(path, cooperage::report::report_input(result, job.file));
+    written.push_back(path);
+  }
+  result.written.insert(result.written.end(), written.begin(), written.end());
 }
 
 }  // namespace
@@ -187,6 +201,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     }
     if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});
   }
+  write_reports(job, options, result);
   return result;
 }
 

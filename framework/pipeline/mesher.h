@@ -79,7 +79,9 @@ struct RunResult {
 };
 
 /// A whole journal: geometry, meshing, quality checks, exports (written only
-/// when no check with action="fail" fails; each file is written atomically).
+/// when no check with action="fail" fails; each file is written atomically),
+/// then the HTML reports of job.reports (written also when a check failed,
+/// to show why; framework/report/html_report.h).
 RunResult run_job(const io::Job& job, const scheme::Registry& registry,
                   const MeshOptions& options = {});
 

@@ -38,6 +38,9 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   for (const std::string& e : options.exports) {
     job.exports.push_back({e, {options.origin, 0, options.export_option}});
   }
+  for (const std::string& r : options.reports) {
+    job.reports.push_back({r, {options.origin, 0, options.report_option}});
+  }
   return job;
 }
 

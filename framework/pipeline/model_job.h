@@ -17,15 +17,17 @@ struct ModelJobOptions {
   bool imprint_merge = true;                        ///< fragment touching solids
   io::ElementKind elements = io::ElementKind::Hex;  ///< for every volume
   std::vector<std::string> exports;                 ///< mesh files to write
+  std::vector<std::string> reports;                 ///< HTML reports to write
   /// Where the settings came from, for error messages: "command line",
   /// "cooperage.mesh()"; each setting's element names its option.
   std::string origin = "command line";
   std::string elements_option = "--elements";
   std::string export_option = "-o";
+  std::string report_option = "--report";
 };
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at
-/// options.size with automatic schemes and writes the exports.
+/// options.size with automatic schemes and writes the exports and reports.
 /// Wedge and mixed elements need the volume ids, so the model is read once
 /// here for them.
 /// @throws MeshingError(InvalidInput) for a size that is not positive; the

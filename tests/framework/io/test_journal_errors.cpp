@@ -273,5 +273,16 @@ TEST(JournalErrors, MeshQualityAndExportSemantics) {
                {"job.xml:5: <export>:", "out.stl", ".exo, .msh, .vtu, .inp"});
 }
 
+TEST(JournalErrors, ReportFileAndOrder) {
+  expect_error(journal(kBrick, "<report file=\"out.pdf\"/>"), ErrorCode::InvalidInput,
+               {"job.xml:5: <report>:", "out.pdf", ".html, .htm"});
+  expect_error(journal(kBrick, "<report file=\"a.html\"/>\n<report file=\"a.html\"/>"),
+               ErrorCode::InvalidInput, {"job.xml:6: <report>:", "already a report at line 5"});
+  expect_error(journal(kBrick, "<report file=\"a.html\"/>\n<export file=\"a.exo\"/>"),
+               ErrorCode::InvalidInput, {"job.xml:6: <export>:", "must come before <report>"});
+  expect_error(journal(kBrick, "<report file=\"a.html\" title=\"x\"/>"), ErrorCode::InvalidInput,
+               {"<report>", "\"title\""});
+}
+
 }  // namespace
 }  // namespace cooperage::io

@@ -236,6 +236,9 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_EQ(job.exports[0].file, "out/result.exo");
   EXPECT_EQ(job.exports[3].file, "/tmp/result.inp");
   EXPECT_EQ(job.exports[0].where.element, "export");
+  ASSERT_EQ(job.reports.size(), 1u);
+  EXPECT_EQ(job.reports[0].file, "out/result.html");
+  EXPECT_EQ(job.reports[0].where.element, "report");
 }
 
 TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
@@ -255,6 +258,7 @@ TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
   EXPECT_FALSE(job.mesh);
   EXPECT_TRUE(job.quality.empty());
   EXPECT_TRUE(job.exports.empty());
+  EXPECT_TRUE(job.reports.empty());
   EXPECT_EQ(op<CylinderOp>(job, 0).base, Vec3::Zero());
   EXPECT_EQ(op<CylinderOp>(job, 0).axis, Vec3::UnitZ());
   EXPECT_DOUBLE_EQ(op<ConeOp>(job, 1).radius2, 0);
