@@ -15,7 +15,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libexodusii-dev libnetcdf-dev coinor-libcbc-dev libcli11-dev
   libxml2-utils python3-meshio python3-gmsh
-  python3-numpy python3-pytest chromium
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest chromium
 )
 
 missing=()

@@ -1,0 +1,114 @@
+// The extension module cooperage._core (pybind11): cooperage.mesh(),
+// cooperage.run(), cooperage.plan(), the Mesh class and the exceptions.
+// The GIL is released while meshing, planning and writing files.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cctype>
+#include <filesystem>
+#include <functional>
+
+#include "errors.h"
+#include "framework/core/error.h"
+#include "framework/geometry/occ/workbench.h"
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/model_job.h"
+#include "mesh_object.h"
+#include "plan_dicts.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+namespace py = pybind11;
+
+namespace cooperage::python {
+namespace {
+
+io::ElementKind element_kind(const std::string& name) {
+  if (name == "hex") return io::ElementKind::Hex;
+  if (name == "wedge") return io::ElementKind::Wedge;
+  if (name == "mixed") return io::ElementKind::Mixed;
+  throw MeshingError(ErrorCode::InvalidInput,
+                     "cooperage.mesh(): elements must be \"hex\", "
+                     "\"wedge\" or \"mixed\", got \"" +
+                         name + "\"");
+}
+
+// Runs a job with the built-in schemes and the selector, without the GIL.
+std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, int dim, int threads,
+                                    const std::string& title) {
+  if (threads < 0) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "threads must be 0 (all cores) or positive, got " + std::to_string(threads));
+  }
+  auto result = std::make_shared<MeshObject>();
+  result->title = title;
+  py::gil_scoped_release release;
+  const io::Job job = make_job();
+  scheme::Registry registry;
+  register_builtin_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{});
+  result->run = pipeline::run_job(job, registry, selector::mesh_options(dim, threads));
+  return result;
+}
+
+std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size, int dim,
+                                 const std::string& elements, int threads, bool imprint) {
+  if (dim != 2 && dim != 3) {
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        "cooperage.mesh(): dim must be 3 (volumes) or 2 (surfaces), got " + std::to_string(dim));
+  }
+  std::string ext = model.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".xml") {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       model.string() +
+                           ": cooperage.mesh() takes a CAD file (.step .stp .iges "
+                           ".igs .brep); run a journal with cooperage.run()");
+  }
+  pipeline::ModelJobOptions options;
+  options.size = size;
+  options.imprint_merge = imprint;
+  options.elements = element_kind(elements);
+  options.origin = "cooperage.mesh()";
+  options.elements_option = "elements";
+  const std::string path = model.string();
+  return run_job([&] { return pipeline::model_job(path, options); }, dim, threads, path);
+}
+
+std::shared_ptr<MeshObject> run(const std::filesystem::path& journal, int threads) {
+  const std::string path = journal.string();
+  return run_job([&] { return io::read_journal(path); }, 3, threads, path);
+}
+
+}  // namespace
+}  // namespace cooperage::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace cooperage::python;
+  cooperage::occ::silence_kernel_output();
+  m.doc() =
+      "Cooperage: all-hexahedral meshing of CAD solids (the compiled core; use the "
+      "cooperage package).";
+  m.attr("__version__") = COOPERAGE_VERSION;
+  register_errors(m);
+  bind_mesh(m);
+  m.def("mesh", &mesh, py::arg("model"), py::arg("size"), py::arg("dim") = 3,
+        py::arg("elements") = "hex", py::arg("threads") = 0, py::arg("imprint") = true,
+        R"doc(Meshes a CAD file with automatic schemes, as `cooperage mesh` does.
+
+model: a .step/.stp/.iges/.igs/.brep path; size: element size in the model's
+units; dim: 3 volume mesh, 2 surface mesh only; elements: "hex", "wedge"
+(triangle caps swept into wedges) or "mixed"; threads: 0 for all cores (the
+mesh does not depend on it); imprint: merge touching solids so they share
+nodes. Returns a Mesh. Raises InputError or MeshingError.)doc");
+  m.def("run", &run, py::arg("journal"), py::arg("threads") = 0,
+        R"doc(Runs a journal (.xml) as `cooperage run` does: geometry, meshing, quality
+checks, exports and reports. Returns a Mesh whose `written` lists the files
+written (none when a quality check with action="fail" failed: see `checks`
+and `exports_skipped`). Raises InputError or MeshingError.)doc");
+  m.def("plan", &plan_file, py::arg("model_or_journal"), py::arg("size") = py::none(),
+        R"doc(The scheme the selector picks for every volume and surface, and why, without
+meshing (as `cooperage plan --json`). size overrides the journal's; without
+any size the interval feasibility check is skipped. Returns a list of dicts:
+entity, dim, id, scheme, score, reason, pinned, candidates.)doc");
+}

@@ -1,0 +1,85 @@
+#include "plan_dicts.h"
+
+#include <pybind11/stl.h>
+
+#include "framework/core/error.h"
+#include "framework/pipeline/model_job.h"
+#include "framework/scheme/scheme.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+namespace py = pybind11;
+
+namespace cooperage::python {
+namespace {
+
+std::string entity_name(int dim, int id) {
+  return (dim == 3 ? "volume " : "surface ") + std::to_string(id);
+}
+
+py::dict choice_dict(const selector::Choice& c) {
+  py::dict d;
+  d["entity"] = entity_name(c.dim, c.id);
+  d["dim"] = c.dim;
+  d["id"] = c.id;
+  d["scheme"] = c.scheme;
+  py::object score = py::none();
+  py::list candidates;
+  for (const auto& k : c.candidates) {
+    py::dict kd;
+    kd["scheme"] = k.scheme;
+    kd["ok"] = k.applicability.ok;
+    kd["score"] = k.applicability.score;
+    kd["why"] = k.applicability.why;
+    candidates.append(kd);
+    if (k.scheme == c.scheme) score = py::float_(k.applicability.score);
+  }
+  d["score"] = score;
+  d["reason"] = c.reason;
+  d["pinned"] = c.pinned;
+  d["candidates"] = candidates;
+  return d;
+}
+
+}  // namespace
+
+py::list plan_file(const std::filesystem::path& file, std::optional<double> size) {
+  if (size && !(*size > 0)) {
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        "cooperage.plan(): the element size must be positive, got " + std::to_string(*size));
+  }
+  selector::Selection selection;
+  {
+    py::gil_scoped_release release;
+    const pipeline::PlanInput input = pipeline::plan_input(file.string(), size);
+    scheme::Registry registry;
+    register_builtin_schemes(registry, builtin_options(input.settings));
+    selector::SelectOptions options;
+    options.check_intervals = input.settings.size.has_value();
+    selection = selector::select_schemes(input.model, registry, input.settings, options);
+  }
+  py::list out;
+  for (const auto& c : selection.volumes) out.append(choice_dict(c));
+  for (const auto& c : selection.surfaces) out.append(choice_dict(c));
+  return out;
+}
+
+py::list plan_entries(const pipeline::SchemePlan& plan) {
+  py::list out;
+  for (int dim : {3, 2}) {
+    for (const auto& [id, e] : dim == 3 ? plan.volumes : plan.surfaces) {
+      py::dict d;
+      d["entity"] = entity_name(dim, id);
+      d["dim"] = dim;
+      d["id"] = id;
+      d["scheme"] = e.scheme;
+      d["reason"] = e.reason;
+      d["details"] = e.details;
+      out.append(d);
+    }
+  }
+  return out;
+}
+
+}  // namespace cooperage::python
