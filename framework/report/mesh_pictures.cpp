@@ -64,11 +64,17 @@ class Part {
 // another element incident to its lowest node has all its corners.
 std::vector<std::pair<ElementRef, std::array<int, 4>>> skin(
     const ReportInput& input, const Part& part, const std::vector<ElementRef>& elements) {
+  // Elements around each node; only nodes that may be on the boundary are
+  // looked up, so only they are indexed.
+  const auto& mask = input.maybe_boundary;
+  const auto indexed = [&](int v) { return mask.empty() || mask[static_cast<std::size_t>(v)]; };
   const std::size_t node_count = input.coords->size();
   std::vector<std::size_t> start(node_count + 1, 0);
   for (const ElementRef& e : elements) {
     const int* n = part.nodes(e);
-    for (int k = 0; k < part.corner_count(e); ++k) ++start[static_cast<std::size_t>(n[k]) + 1];
+    for (int k = 0; k < part.corner_count(e); ++k) {
+      if (indexed(n[k])) ++start[static_cast<std::size_t>(n[k]) + 1];
+    }
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<std::size_t> incident(start.back());
@@ -76,10 +82,9 @@ std::vector<std::pair<ElementRef, std::array<int, 4>>> skin(
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const int* n = part.nodes(elements[i]);
     for (int k = 0; k < part.corner_count(elements[i]); ++k) {
-      incident[fill[static_cast<std::size_t>(n[k])]++] = i;
+      if (indexed(n[k])) incident[fill[static_cast<std::size_t>(n[k])]++] = i;
     }
   }
-  const auto& mask = input.maybe_boundary;
   std::vector<std::pair<ElementRef, std::array<int, 4>>> out;
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const ElementRef& e = elements[i];
@@ -90,7 +95,7 @@ std::vector<std::pair<ElementRef, std::array<int, 4>>> skin(
       bool inside = false;
       for (int k = 0; k < 4; ++k) {
         face[k] = k < corners ? n[local[k]] : -1;
-        if (k < corners && !mask.empty() && !mask[static_cast<std::size_t>(face[k])]) inside = true;
+        if (k < corners && !indexed(face[k])) inside = true;
       }
       if (inside) continue;
       const int lowest = *std::min_element(face.begin(), face.begin() + corners);
