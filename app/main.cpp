@@ -64,7 +64,7 @@ int run_journal(const std::string& file, int threads, bool quiet) {
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]`: a
 // journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
+             bool binary, bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   io::Job job;
   job.file = model;
@@ -86,7 +86,13 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
       job.mesh->volumes.push_back(setting);
     }
   }
-  job.exports.push_back({output, {"command line", 0, "-o"}});
+  job.exports.push_back({output, {"command line", 0, "-o"}, binary});
+  if (binary && !(output.size() > 4 && (output.compare(output.size() - 4, 4, ".vtu") == 0 ||
+                                        output.compare(output.size() - 4, 4, ".msh") == 0))) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "--binary is for .vtu and .msh outputs (Exodus is always binary), got '" +
+                           output + "'");
+  }
   return finish_run(job, dim, threads, quiet);
 }
 
@@ -124,6 +130,7 @@ int main(int argc, char** argv) {
   double mesh_size = 0;
   int mesh_dim = 3;
   bool mesh_no_imprint = false;
+  bool mesh_binary = false;
   std::string mesh_elements = "hex";
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
   mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
@@ -131,6 +138,7 @@ int main(int argc, char** argv) {
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
   mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
+  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended) or .msh (Gmsh 4.1 binary)");
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
   mesh->add_option("--elements", mesh_elements,
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
@@ -181,8 +189,8 @@ int main(int argc, char** argv) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_no_imprint, elements,
-                      threads, quiet);
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, mesh_binary, mesh_no_imprint,
+                      elements, threads, quiet);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

@@ -189,6 +189,27 @@ TEST_F(RunCommand, MeshCommandElementsOption) {
   EXPECT_EQ(bad.exit_code, 2);
 }
 
+TEST_F(RunCommand, MeshCommandBinaryOutputs) {
+  occ::Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 1, 1});
+  bench.write(path("cube.step"));
+  for (const std::string ext : {".msh", ".vtu"}) {
+    const std::string ascii = path("cube_a" + ext), binary = path("cube_b" + ext);
+    ASSERT_EQ(run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q -o " + ascii)
+                  .exit_code, 0);
+    const auto r = run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q --binary -o " +
+                               binary);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // 1000 hexes: the raw numbers are smaller than their text.
+    EXPECT_LT(fs::file_size(binary), fs::file_size(ascii)) << ext;
+  }
+  const auto bad = run_command(kCli + " mesh " + path("cube.step") + " --size 0.5 --binary -o " +
+                               path("cube.exo"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--binary"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("cube.exo")));
+}
+
 TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
   occ::Workbench bench;
   bench.brick("a", {0, 0, 0}, {1, 2, 3});

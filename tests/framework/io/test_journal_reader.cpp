@@ -236,6 +236,9 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_EQ(job.exports[0].file, "out/result.exo");
   EXPECT_EQ(job.exports[3].file, "/tmp/result.inp");
   EXPECT_EQ(job.exports[0].where.element, "export");
+  EXPECT_FALSE(job.exports[0].binary);
+  EXPECT_FALSE(job.exports[1].binary);  // default ascii
+  EXPECT_TRUE(job.exports[2].binary);   // encoding="binary"
 }
 
 TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
