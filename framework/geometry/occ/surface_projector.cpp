@@ -183,34 +183,60 @@ Vec2 SurfaceProjector::global(const gp_Pnt& p) const {
   return Vec2(std::clamp(u, u0_, u1_), std::clamp(v, v0_, v1_));
 }
 
+void SurfaceProjector::build_samples() const {
+  // Denser where the surface has more spans (B-spline knots), as OCCT's own
+  // sampling; 25 x 25 at least, 65 x 65 at most. Stored in 5 x 5 tiles so a
+  // query skips the tiles whose box is farther than its best sample so far.
+  int nu = 24, nv = 24;
+  const GeomAdaptor_Surface a(surface_);
+  if (a.GetType() == GeomAbs_BSplineSurface) {
+    nu = std::clamp(3 * a.NbUIntervals(GeomAbs_C2) * std::max(1, a.UDegree()), 24, 64);
+    nv = std::clamp(3 * a.NbVIntervals(GeomAbs_C2) * std::max(1, a.VDegree()), 24, 64);
+  }
+  constexpr int kTile = 5;
+  samples_.reserve(static_cast<size_t>((nu + 1) * (nv + 1)));
+  for (int ti = 0; ti <= nu; ti += kTile) {
+    for (int tj = 0; tj <= nv; tj += kTile) {
+      Tile t{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}, samples_.size(), 0};
+      for (int i = ti; i < std::min(ti + kTile, nu + 1); ++i) {
+        for (int j = tj; j < std::min(tj + kTile, nv + 1); ++j) {
+          const double u = u0_ + (u1_ - u0_) * i / nu, v = v0_ + (v1_ - v0_) * j / nv;
+          const gp_Pnt q = surface_->Value(u, v);
+          samples_.push_back({q.X(), q.Y(), q.Z(), u, v});
+          const double c[3] = {q.X(), q.Y(), q.Z()};
+          for (int k = 0; k < 3; ++k) {
+            t.lo[k] = std::min(t.lo[k], c[k]);
+            t.hi[k] = std::max(t.hi[k], c[k]);
+          }
+        }
+      }
+      t.end = samples_.size();
+      tiles_.push_back(t);
+    }
+  }
+}
+
 std::optional<Vec2> SurfaceProjector::seeded(const gp_Pnt& p) const {
   if (kind_ != Kind::Other) return std::nullopt;
-  std::call_once(samples_once_, [this] {
-    // Denser where the surface has more spans (B-spline knots), as OCCT's
-    // own sampling; 25 x 25 at least, 65 x 65 at most.
-    int nu = 24, nv = 24;
-    const GeomAdaptor_Surface a(surface_);
-    if (a.GetType() == GeomAbs_BSplineSurface) {
-      nu = std::clamp(3 * a.NbUIntervals(GeomAbs_C2) * std::max(1, a.UDegree()), 24, 64);
-      nv = std::clamp(3 * a.NbVIntervals(GeomAbs_C2) * std::max(1, a.VDegree()), 24, 64);
-    }
-    samples_.reserve(static_cast<size_t>((nu + 1) * (nv + 1)));
-    for (int i = 0; i <= nu; ++i) {
-      for (int j = 0; j <= nv; ++j) {
-        const double u = u0_ + (u1_ - u0_) * i / nu, v = v0_ + (v1_ - v0_) * j / nv;
-        const gp_Pnt q = surface_->Value(u, v);
-        samples_.push_back({q.X(), q.Y(), q.Z(), u, v});
-      }
-    }
-  });
+  std::call_once(samples_once_, [this] { build_samples(); });
+  const double c[3] = {p.X(), p.Y(), p.Z()};
   const Sample* best = nullptr;
   double best_d2 = std::numeric_limits<double>::max();
-  for (const Sample& s : samples_) {
-    const double dx = s.x - p.X(), dy = s.y - p.Y(), dz = s.z - p.Z();
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best = &s;
+  for (const Tile& t : tiles_) {
+    double box_d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = c[k] < t.lo[k] ? t.lo[k] - c[k] : (c[k] > t.hi[k] ? c[k] - t.hi[k] : 0.0);
+      box_d2 += d * d;
+    }
+    if (box_d2 >= best_d2) continue;
+    for (size_t i = t.first; i < t.end; ++i) {
+      const Sample& s = samples_[i];
+      const double dx = s.x - c[0], dy = s.y - c[1], dz = s.z - c[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = &s;
+      }
     }
   }
   if (!best) return std::nullopt;

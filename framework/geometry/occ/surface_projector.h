@@ -71,8 +71,14 @@ class SurfaceProjector {
   struct Sample {
     double x, y, z, u, v;
   };
+  struct Tile {  // a block of neighbouring samples and their bounding box
+    double lo[3], hi[3];
+    size_t first, end;  // range in samples_
+  };
   mutable std::once_flag samples_once_;
-  mutable std::vector<Sample> samples_;
+  mutable std::vector<Sample> samples_;  // tile by tile
+  mutable std::vector<Tile> tiles_;
+  void build_samples() const;
 };
 
 }  // namespace cooperage::occ::detail
