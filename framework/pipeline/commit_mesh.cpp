@@ -2,37 +2,46 @@
 
 #include "framework/core/error.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace cooperage::pipeline {
 namespace {
 
-// Global index of every local node, adding the new ones to db (reserved
-// once, so the node arrays never grow by doubling).
-std::vector<int> globalise(const scheme::EntityMesh& local, mesh::NodeOwner owner,
-                           mesh::MeshDB& db) {
+// Global index of every local node, replacing local.global (so no second
+// index array), the new nodes moved into db in local order: local.coords is
+// compacted in place and handed to MeshDB::append_nodes, which keeps its
+// storage when it can (the node array is then never held twice).
+const std::vector<int>& globalise(scheme::EntityMesh& local, mesh::NodeOwner owner,
+                                  mesh::MeshDB& db) {
   if (local.global.size() != local.coords.size()) {
     throw MeshingError(ErrorCode::Internal, EntityRef{owner.dim, owner.id},
                        "scheme returned mismatched node arrays");
   }
   const int known = static_cast<int>(db.node_count());
-  size_t fresh = 0;
   for (const int g : local.global) {
     if (g >= known) {
       throw MeshingError(ErrorCode::Internal, EntityRef{owner.dim, owner.id},
                          "scheme referenced an unknown node");
     }
-    fresh += g < 0;
   }
-  db.reserve_nodes(db.node_count() + fresh);
-  std::vector<int> map(local.global.size());
+  std::vector<mesh::NodeOwner> owners;
+  owners.reserve(static_cast<size_t>(
+      std::count_if(local.global.begin(), local.global.end(), [](int g) { return g < 0; })));
+  size_t fresh = 0;
   for (size_t k = 0; k < local.global.size(); ++k) {
-    const int g = local.global[k];
+    if (local.global[k] >= 0) continue;
     const mesh::NodeOwner own =
         k < local.owners.size() && local.owners[k].dim >= 0 ? local.owners[k] : owner;
-    map[k] = g >= 0 ? g : db.add_node(local.coords[k], own);
+    owners.push_back(own);
+    local.coords[fresh] = local.coords[k];  // fresh <= k: compaction in place
+    local.global[k] = known + static_cast<int>(fresh);
+    ++fresh;
   }
-  return map;
+  local.coords.resize(fresh);
+  local.owners = {};
+  db.append_nodes(std::move(local.coords), std::move(owners));
+  return local.global;
 }
 
 // Renumbers elements in place from local to global indices.
@@ -69,9 +78,7 @@ void commit_surface(scheme::EntityMesh& local, int surface_id, mesh::MeshDB& db)
   const EntityRef entity = EntityRef::surface(surface_id);
   check(local.quads, local.coords.size(), entity);
   check(local.tris, local.coords.size(), entity);
-  const auto map = globalise(local, {2, surface_id}, db);
-  local.coords = {};  // the nodes are in db now
-  local.owners = {};
+  const auto& map = globalise(local, {2, surface_id}, db);
   remap(local.quads, map, entity);
   remap(local.tris, map, entity);
   mesh::SurfaceMeshData& s = db.mutable_surface(surface_id);
@@ -85,9 +92,7 @@ void commit_volume(scheme::EntityMesh& local, int volume_id, mesh::MeshDB& db) {
   check(local.wedges, nodes, EntityRef::volume(volume_id));
   for (const auto& [sid, quads] : local.surface_quads) check(quads, nodes, EntityRef::surface(sid));
   for (const auto& [sid, tris] : local.surface_tris) check(tris, nodes, EntityRef::surface(sid));
-  const auto map = globalise(local, {3, volume_id}, db);
-  local.coords = {};
-  local.owners = {};
+  const auto& map = globalise(local, {3, volume_id}, db);
   remap(local.hexes, map, EntityRef::volume(volume_id));
   remap(local.wedges, map, EntityRef::volume(volume_id));
   mesh::VolumeMeshData& v = db.mutable_volume(volume_id);
