@@ -66,7 +66,7 @@ int run_journal(const std::string& file, const std::string& report, int threads,
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             const std::string& report, bool no_imprint, io::ElementKind elements, int threads,
+             const std::string& report, bool binary, bool no_imprint, io::ElementKind elements, int threads,
              bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   pipeline::ModelJobOptions options;
@@ -74,6 +74,7 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   options.imprint_merge = !no_imprint;
   options.elements = elements;
   options.exports = {output};
+  options.binary = binary;
   if (!report.empty()) options.reports = {report};
   return finish_run(pipeline::model_job(model, options), dim, threads, quiet);
 }
@@ -114,6 +115,7 @@ int main(int argc, char** argv) {
   double mesh_size = 0;
   int mesh_dim = 3;
   bool mesh_no_imprint = false;
+  bool mesh_binary = false;
   std::string mesh_elements = "hex";
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
   mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
@@ -121,6 +123,7 @@ int main(int argc, char** argv) {
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
   mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
+  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended) or .msh (Gmsh 4.1 binary)");
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
   mesh->add_option("--elements", mesh_elements,
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
@@ -175,7 +178,7 @@ int main(int argc, char** argv) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_no_imprint,
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary, mesh_no_imprint,
                       elements, threads, quiet);
     }
   } catch (const MeshingError& e) {
