@@ -110,7 +110,7 @@ bool Imprinter::split_hole(int e, size_t bi, int x, const Loop& path, int y) {
     if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
     if (signed_area(hole, xy()) > 0) std::reverse(hole.begin(), hole.end());
     t.loops[h] = hole;
-    new_cap(e, {piece});
+    new_cap(e, {piece}, t.id);
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }
@@ -185,7 +185,10 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
       if (g < 0 || g >= static_cast<long>(gap.size())) continue;
       cands.push_back({g, pj, (xy().at(gap[static_cast<size_t>(g)]) - xy().at(p)).norm()});
     }
-    cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
+    // A node inserted on an edge of a model curve would break its mesh.
+    const int e0 = qi == 0 ? r0 : gap[qi - 1];
+    const int e1 = qi < gap.size() ? gap[qi] : r1;
+    if (!(r_.ends.fixed.count(e0) && r_.ends.fixed.count(e1))) cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Cand& u, const Cand& v) { return u.d < v.d; });
   for (const Cand& cand : cands) {
