@@ -35,7 +35,13 @@ struct CapSize {
   int curves = 0;
   double area = 0;
   bool shared = false;
+  double holes = 0;  ///< length of its hole loops
 };
+
+// A sweep whose holes grow from source to target squashes the target's
+// elements around them (the projection moves the hole's ring outward over
+// elements sized for the smaller hole); shrinking holes only stretch them.
+constexpr double kHoleGrowth = 1.25;
 
 int compare_area(double x, double y) {
   if (std::abs(x - y) <= 1e-6 * std::max(std::abs(x), std::abs(y))) return 0;
@@ -127,10 +133,14 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
       s.shared = s.shared || mf->other_volumes > 0;
       for (const auto& loop : mf->loops) ++count[curve_set(loop)];
     }
+    const std::set<int> outer = curve_set(f.loops.front());
     for (const auto& [loop, n] : count) {
       if (n == 1) {
         ++s.loops;
         s.curves += static_cast<int>(loop.size());
+        if (loop != outer) {
+          for (int c : loop) s.holes += facts.curves.at(c).length;
+        }
       }
     }
     size[f.id] = s;
@@ -179,6 +189,7 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
       if (hinted_source == tgt || hinted_target == src) std::swap(src, tgt);
       fixed = true;
     }
+    if (!fixed && size[src].holes > 0 && size[tgt].holes > kHoleGrowth * size[src].holes) std::swap(src, tgt);
     if (subcaps.count(tgt)) {  // a hint asks a composite to be the target
       why = "hinted target surface " + std::to_string(tgt) + " has subcaps; a composite cap can only be the source";
       continue;

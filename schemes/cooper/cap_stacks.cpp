@@ -7,12 +7,16 @@
 // subcap's own boundary (whose images are known through the ribs)
 // interpolated inside, then onto the real cap.
 #include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/residual_field.h"
+#include "schemes/cooper/smooth_cap.h"
 #include "schemes/cooper/sweep_state.h"
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <numeric>
+
+#include <Eigen/Geometry>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -105,6 +109,55 @@ void take_surface_mesh(SweepState& s, Piece& p) {
   p.meshed = true;
 }
 
+// Where the rings change shape a lot (a hole doubling its radius while the
+// outer loop stays), the projected subcap can fold next to its boundary:
+// then its new nodes are smoothed (sec. 6.1: "a smooth ... to optimize
+// element quality"), kept only if its worst corner improves.
+void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads, const std::vector<mesh::Tri>& tris,
+              const std::map<int, int>& index, const std::map<int, int>& image, const Piece& to) {
+  const BarrelState& st = s.barrels[b];
+  std::vector<int> node(index.size());
+  for (const auto& [n, i] : index) node[static_cast<size_t>(i)] = n;
+  std::vector<Vec3> before(node.size()), after(node.size());
+  std::vector<char> movable(node.size(), 0);
+  for (size_t i = 0; i < node.size(); ++i) {
+    before[i] = s.pos(node[i]);
+    const auto it = image.find(node[i]);
+    after[i] = it != image.end() ? s.pos(it->second) : Vec3::Zero();
+    movable[i] = it != image.end() ? 1 : 0;
+  }
+  // Faces counter-clockwise about the barrel's direction where they come from.
+  std::vector<mesh::Quad> q = quads;
+  std::vector<mesh::Tri> t = tris;
+  auto orient = [&](auto& f) {
+    Vec3 n = Vec3::Zero();
+    for (size_t k = 0; k < f.size(); ++k) n += before[static_cast<size_t>(f[k])].cross(before[static_cast<size_t>(f[(k + 1) % f.size()])]);
+    if (n.dot(st.d) < 0) std::reverse(f.begin() + 1, f.end());
+  };
+  for (auto& f : q) orient(f);
+  for (auto& f : t) orient(f);
+  // Positions on the target end for every node (the ring's images too).
+  std::map<int, int> across;
+  for (const auto& [u, l] : st.rib_pairs) {
+    across[u] = l;
+    across[l] = u;
+  }
+  for (size_t i = 0; i < node.size(); ++i) {
+    if (movable[i]) continue;
+    const auto a = across.find(node[i]);
+    after[i] = a != across.end() ? s.pos(a->second) : before[i];
+  }
+  const double q_before = std::min(min_quad_corner_quality(before, q, st.d), min_tri_corner_quality(before, t, st.d));
+  const double q_after = std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
+  if (q_after >= std::min(0.5, q_before)) return;
+  const auto& g = to.cap ? s.model.surface(to.cap).geometry : nullptr;
+  auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
+  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60)) return;
+  for (size_t i = 0; i < node.size(); ++i) {
+    if (movable[i]) s.out.coords[static_cast<size_t>(image.at(node[i]))] = after[i];
+  }
+}
+
 // Projects piece `from` through barrel b onto its match `to` (sec. 6.1).
 void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   BarrelState& st = s.barrels[b];
@@ -127,22 +180,33 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
       residual.push_back(s.pos(it->second) - map.apply(s.pos(n)));
     }
   }
+  // Cap-local numbering: the boundary (ring) first, then the interior.
+  std::map<int, int> index;
+  std::vector<Vec3> points;
+  for (int n : ring) {
+    if (index.emplace(n, static_cast<int>(points.size())).second) points.push_back(s.pos(n));
+  }
+  const size_t boundary = points.size();
+  if (boundary != ring.size()) fail(s.vid, s.barrel_name(b) + ": a subcap's loops repeat a node");
+  std::vector<mesh::Quad> quads;
+  std::vector<mesh::Tri> tris;
+  auto local = [&](int n) {
+    auto [it, added] = index.emplace(n, static_cast<int>(points.size()));
+    if (added) points.push_back(s.pos(n));
+    return it->second;
+  };
+  for (const auto& q : from.quads) quads.push_back({local(q[0]), local(q[1]), local(q[2]), local(q[3])});
+  for (const auto& t : from.tris) tris.push_back({local(t[0]), local(t[1]), local(t[2])});
+  const ResidualField field(points, boundary);
+  std::vector<Vec3> r;
+  field.apply(residual, r);
   std::map<int, int> image;
   auto image_of = [&](int n) {
     const auto a = across.find(n);
     if (a != across.end()) return a->second;
     const auto it = image.find(n);
     if (it != image.end()) return it->second;
-    const Vec3& x = s.pos(n);
-    Vec3 sum = Vec3::Zero();
-    double wsum = 0;
-    for (size_t k = 0; k < ring.size(); ++k) {
-      const double d2 = (x - s.pos(ring[k])).squaredNorm();
-      const double w = 1.0 / (d2 * std::sqrt(d2) + 1e-300);
-      sum += w * residual[k];
-      wsum += w;
-    }
-    Vec3 y = map.apply(x) + (wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero());
+    Vec3 y = map.apply(s.pos(n)) + r[static_cast<size_t>(index.at(n))];
     int m;
     if (to.cap) {
       y = s.model.surface(to.cap).geometry->project(y).point;
@@ -156,6 +220,7 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   for (const auto& q : from.quads) to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});
   for (const auto& t : from.tris) to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
   to.meshed = true;
+  untangle(s, b, quads, tris, index, image, to);
 }
 
 }  // namespace

@@ -1,11 +1,10 @@
 #include "schemes/cooper/plan_volume.h"
 
+#include "framework/core/log.h"
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_scheme.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -143,6 +142,20 @@ bool better(const VolumePlan& a, const VolumePlan& b) {
   return a.roles.scheme.size() > b.roles.scheme.size();
 }
 
+// How well the linking chains follow a straight sweep: their chords'
+// |cos| with the axis, weighted by length (1: every chain along it).
+double alignment(const VolumePlan& p) {
+  if (!p.down) return 0;
+  double sum = 0, total = 0;
+  for (const LinkChain& c : p.lattice.chains) {
+    const geom::Vec3 chord = p.facts.vertices.at(c.to_vertex) - p.facts.vertices.at(c.from_vertex);
+    if (!(chord.norm() > 0)) continue;
+    sum += c.length * std::abs(chord.normalized().dot(*p.down));
+    total += c.length;
+  }
+  return total > 0 ? sum / total : 0;
+}
+
 // The paper's Fig. 3a: virtual faces (where parts of the volume meet)
 // projecting in directions no single sweep holds.
 std::string fig3a(const VolumeFacts& facts) {
@@ -197,7 +210,7 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
   std::string first_failure;
   int deepest = -1;
   auto note = [&](const VolumePlan& p) {
-    if (std::getenv("COOPER_PLAN_DEBUG")) std::fprintf(stderr, "candidate failed: %s\n", p.why.c_str());
+    log::debug("cooper, volume " + std::to_string(volume_id) + ", candidate refused: " + p.why);
     if (p.stage > deepest) {
       deepest = p.stage;
       first_failure = p.why;
@@ -214,22 +227,32 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
     deepest = 0;
     first_failure = pair_why;
   }
-  // 2. A straight axis, both directions along it (the hint's only).
-  for (const geom::Vec3& axis : candidate_axes(facts, in.hints.direction)) {
-    CapCandidate c;
-    c.kind = CapCandidate::Kind::Axis;
-    c.caps = caps_facing(facts, axis);
+  // 2. A straight axis, both directions along it (the hint's only); of the
+  // axes that work, the one the linking curves follow best.
+  {
     std::optional<VolumePlan> best;
-    for (int sign : {1, -1}) {
-      if (in.hints.direction && sign < 0) break;
-      c.anchor.down = sign * axis;
-      c.label = "along " + direction_text(sign * axis);
-      VolumePlan p = evaluate(model, registry, facts, in, c);
-      if (!p.ok) {
-        note(p);
-        continue;
+    double best_alignment = -1;
+    for (const geom::Vec3& axis : candidate_axes(facts, in.hints.direction)) {
+      CapCandidate c;
+      c.kind = CapCandidate::Kind::Axis;
+      c.caps = caps_facing(facts, axis);
+      for (int sign : {-1, 1}) {
+        if (in.hints.direction && sign < 0) continue;
+        c.anchor.down = sign * axis;
+        c.label = "along " + direction_text(sign * axis);
+        VolumePlan p = evaluate(model, registry, facts, in, c);
+        if (!p.ok) {
+          note(p);
+          continue;
+        }
+        const double a = alignment(p);
+        const bool clearly_better = a > best_alignment + 1e-6;
+        const bool tie = std::abs(a - best_alignment) <= 1e-6;
+        if (!best || clearly_better || (tie && better(p, *best))) {
+          best_alignment = std::max(a, best_alignment);
+          best = std::move(p);
+        }
       }
-      if (!best || better(p, *best)) best = std::move(p);
     }
     if (best) return *best;
   }

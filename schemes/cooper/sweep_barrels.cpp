@@ -5,13 +5,16 @@
 // layer by layer from the cap faces and their ribs. The meshes of the caps
 // this scheme meshed are handed back with their surfaces' natural normals.
 #include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/smooth_cap.h"
 #include "schemes/cooper/sweep_barrel.h"
 #include "schemes/cooper/sweep_state.h"
 #include "schemes/cooper/sweep_volume.h"
+#include "framework/core/log.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 namespace cooperage::cooper::detail {
@@ -108,8 +111,22 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
     for (const auto& rib : st.ribs) {
       for (int g : rib) in.ribs.push_back(s.db.node(g));
     }
+    if (log::threshold() <= log::Level::Debug) {
+      std::vector<Vec3> lo(in.source);
+      for (size_t i = 0; i < cap.size(); ++i) lo[i] = i < st.ribs.size() ? s.db.node(st.ribs[i].back()) : in.fixed_target[i];
+      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + s.barrel_name(b) + ": worst corner sine of its caps " +
+                 std::to_string(min_quad_corner_quality(in.source, in.quads, st.d)) + " (upper), " +
+                 std::to_string(min_quad_corner_quality(lo, in.quads, st.d)) + " (lower)");
+    }
     const SweepResult sweep = sweep_barrel(in);
     if (!sweep.ok) fail(s.vid, s.barrel_name(b) + ": " + sweep.why);
+    if (log::threshold() <= log::Level::Debug) {
+      char line[200];
+      std::snprintf(line, sizeof line, "%s: %d layers, %zu quads, %zu triangles per layer, min scaled Jacobian %.4f%s",
+                    s.barrel_name(b).c_str(), st.layers, in.quads.size(), in.tris.size(), sweep.min_scaled_jacobian,
+                    sweep.smoothed ? " (smoothed)" : "");
+      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + line);
+    }
     const size_t n = cap.size();
     const size_t B = st.ribs.size();
     const size_t J = static_cast<size_t>(st.layers);

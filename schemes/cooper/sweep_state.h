@@ -104,6 +104,7 @@ void make_charts(SweepState& s);
 void make_pieces(SweepState& s);
 void imprint_barrels(SweepState& s);
 void mesh_stacks(SweepState& s);
+void smooth_ends(SweepState& s);
 void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports);
 
 }  // namespace cooperage::cooper::detail

@@ -16,6 +16,7 @@ scheme::EntityMesh sweep_volume(const scheme::VolumeView& view, const VolumePlan
   detail::make_pieces(s);
   detail::imprint_barrels(s);
   detail::mesh_stacks(s);
+  detail::smooth_ends(s);
   detail::sweep_barrels(s, reports);
   return std::move(s.out);
 }
