@@ -76,8 +76,8 @@ std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice, con
 // cite: Blacker 1996, sec. 3-4 (a barrel is a single-axis sweep: every rib
 // has its layers; at least one layer per barrel).
 std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const SideLattice& lattice,
-                                            const SweepOrder& order, const BarrelTree& tree, bool even_loops,
-                                            const std::string& tag) {
+                                            const SweepOrder& order, const BarrelTree& tree,
+                                            const std::set<int>& even_caps, const std::string& tag) {
   std::vector<IntervalRow> rows;
   std::vector<size_t> extra;
   const auto lambda = layer_potentials(lattice, order, &extra);
@@ -113,14 +113,14 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
                 lambda[static_cast<size_t>(node.lower_classes.front())], -1),
         intervals::Sense::GreaterEqual, 1, name + " (sides " + std::to_string(node.sides.front()) + ", ...) has a layer");
   }
-  if (even_loops) {
-    for (const auto& [cap, upper] : order.upper) {
+  for (int cap : even_caps) {
+    {
       const auto& loops = facts.face(cap)->loops;
       for (size_t l = 0; l < loops.size(); ++l) {
         Expr e;
         for (const UseFact& u : loops[l]) e[u.curve] = 1;
         rows.push_back({std::move(e), intervals::Sense::Equal, 0, true,
-                        tag + ": loop " + std::to_string(l) + " of imprinted cap " + std::to_string(cap) + " even"});
+                        tag + ": loop " + std::to_string(l) + " of cap " + std::to_string(cap) + " even"});
       }
     }
   }

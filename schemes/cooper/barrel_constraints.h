@@ -7,13 +7,16 @@
 // layer (so a blind hole's floor stays above the bottom: the outer wall
 // runs past the floor's level without a vertex there). When a polygon
 // mesher meshes imprinted pieces all-quad, every cap loop is even (sec.
-// 5.3: even parity). Plain data: testable without CAD.
+// 5.3: even parity); so is every loop of a cap paved beforehand with
+// several loops (pave joins odd loops by paths it does not always find).
+// Plain data: testable without CAD.
 #pragma once
 
 #include "framework/intervals/interval_problem.h"
 #include "schemes/cooper/barrel_tree.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,10 +36,11 @@ struct IntervalRow {
 std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice, const SweepOrder& order,
                                                  std::vector<size_t>* extra = nullptr);
 
-/// The rows; `tag` starts every label ("volume 3 (cooper)").
+/// The rows; every loop of `even_caps` is even; `tag` starts every label
+/// ("volume 3 (cooper)").
 std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const SideLattice& lattice,
-                                            const SweepOrder& order, const BarrelTree& tree, bool even_loops,
-                                            const std::string& tag);
+                                            const SweepOrder& order, const BarrelTree& tree,
+                                            const std::set<int>& even_caps, const std::string& tag);
 
 /// Adds the rows to an interval problem.
 void add_rows(const std::vector<IntervalRow>& rows, intervals::IntervalProblem& problem);

@@ -111,7 +111,13 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry, 
   p.roles = cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
   if (const std::string h = check_hints(p, in.hints); !h.empty()) return fail(6, h);
-  const bool even = p.roles.needs_polygon_mesher && in.elements != Elements::Wedge;
+  std::set<int> even;
+  for (const auto& [cap, upper] : p.order.upper) {
+    const auto it = p.roles.scheme.find(cap);
+    const bool paved = it != p.roles.scheme.end() && (it->second == "pave" || it->second == "quad_dominant");
+    const bool imprinted = p.roles.needs_polygon_mesher && in.elements != Elements::Wedge;
+    if (imprinted || (paved && facts.face(cap)->loops.size() > 1)) even.insert(cap);
+  }
   p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even, volume_name(p.volume) + " (cooper)");
   if (p.one_barrel()) {
     p.source = cand.source;

@@ -11,6 +11,7 @@
 
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
+#include "must_mesh_parts.h"
 #include "plan_helpers.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
@@ -26,9 +27,8 @@ namespace cooperage::cooper {
 namespace {
 
 using geom::Vec3;
-using Build = std::function<void(occ::Workbench&)>;
-
-constexpr double kPi = 3.14159265358979323846;
+using parts::Build;
+using namespace parts;
 
 std::unique_ptr<scheme::Registry> builtin() {
   auto r = std::make_unique<scheme::Registry>();
@@ -91,136 +91,6 @@ void expect_rotation_invariant(const char* name, const Build& build, double size
 void check(const char* name, const Build& build, double size, unsigned seed, size_t barrels = 0) {
   expect_must_mesh(name, build, size, barrels);
   expect_rotation_invariant(name, build, size, seed);
-}
-
-// A 4 x 4 x 2 block with a round blind hole from the top, 1.2 deep.
-void blind_hole(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {4, 4, 2});
-  wb.cylinder("h", {2, 2, 0.8}, {0, 0, 1}, 0.75, 2);
-  wb.cut("part", {"b", "h"});
-}
-
-// Blind holes from the top (1.2 deep) and the bottom (0.5 deep), beside
-// each other.
-void blind_holes_both_ends(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {5, 4, 2});
-  wb.cylinder("h", {1.5, 2, 0.8}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("g", {3.5, 2, -1}, {0, 0, 1}, 0.5, 1.5);
-  wb.cut("part", {"b", "h", "g"});
-}
-
-// The same on one axis, of different radii: the bottom hole's footprint
-// lies inside the top hole's floor.
-void blind_holes_coaxial(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {4, 4, 2});
-  wb.cylinder("h", {2, 2, 1.2}, {0, 0, 1}, 1.0, 2);
-  wb.cylinder("g", {2, 2, -1}, {0, 0, 1}, 0.5, 1.6);
-  wb.cut("part", {"b", "h", "g"});
-}
-
-// A 4 x 3 x 2 block with a 2 x 1 x 1 rectangular pocket.
-void pocket(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {4, 3, 2});
-  wb.brick("p", {1, 1, 1}, {2, 1, 2});
-  wb.cut("part", {"b", "p"});
-}
-
-// Three diameters along z, an axial bore through all.
-void stepped_shaft(occ::Workbench& wb) {
-  wb.cylinder("a", {0, 0, 0}, {0, 0, 1}, 2, 1);
-  wb.cylinder("b", {0, 0, 1}, {0, 0, 1}, 1.5, 1.5);
-  wb.cylinder("c", {0, 0, 2.5}, {0, 0, 1}, 1, 1);
-  wb.cylinder("bore", {0, 0, -1}, {0, 0, 1}, 0.5, 6);
-  wb.fuse("f", {"a", "b", "c"});
-  wb.cut("part", {"f", "bore"});
-}
-
-// A flange, a hub on it, a bore through both.
-void flanged_hub(occ::Workbench& wb) {
-  wb.cylinder("flange", {0, 0, 0}, {0, 0, 1}, 3, 0.75);
-  wb.cylinder("hub", {0, 0, 0.75}, {0, 0, 1}, 1.25, 1.5);
-  wb.cylinder("bore", {0, 0, -1}, {0, 0, 1}, 0.6, 4);
-  wb.fuse("f", {"flange", "hub"});
-  wb.cut("part", {"f", "bore"});
-}
-
-void flanged_hub_webcut(occ::Workbench& wb) {
-  flanged_hub(wb);
-  wb.webcut("part", {0, 0, 0.75}, {0, 0, 1});
-}
-
-// The paper's Fig. 1 style part: an 8 x 5 x 2 block, bosses of two heights
-// on top, a foot below, a through hole, a blind hole from each end.
-void fig1_part(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {8, 5, 2});
-  wb.brick("tall", {0.75, 0.75, 2}, {1.5, 1.5, 1.5});
-  wb.cylinder("short", {6.5, 1.5, 2}, {0, 0, 1}, 0.75, 0.75);
-  wb.brick("foot", {3.5, 2.75, -1}, {2, 1.5, 1});
-  wb.fuse("f", {"b", "tall", "short", "foot"});
-  wb.cylinder("through", {4, 1.25, -1}, {0, 0, 1}, 0.5, 4);
-  wb.cylinder("top", {1.5, 3.75, 1}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("bottom", {6.5, 3.75, -1}, {0, 0, 1}, 0.5, 1.75);
-  wb.cut("part", {"f", "through", "top", "bottom"});
-}
-
-// A boss whose footprint lies inside a larger foot on the other end.
-void boss_over_larger_foot(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {6, 4, 2});
-  wb.cylinder("boss", {3, 2, 2}, {0, 0, 1}, 0.75, 1);
-  wb.brick("foot", {1.5, 0.75, -1}, {3, 2.5, 1});
-  wb.fuse("part", {"b", "boss", "foot"});
-}
-
-// A round boss partly over a square foot, scaled by `k` (k = 1: radius 1,
-// square 2 x 2 shifted by 0.3 from the boss's centre).
-Build round_over_square(double k) {
-  return [k](occ::Workbench& wb) {
-    wb.brick("b", {0, 0, 0}, {6, 4, 2});
-    wb.cylinder("boss", {2.5, 2, 2}, {0, 0, 1}, k, 1);
-    wb.brick("foot", {2.5 + 0.3 * k, 2 - k, -1}, {2 * k, 2 * k, 1});
-    wb.fuse("part", {"b", "boss", "foot"});
-  };
-}
-
-// The mirror: a square boss partly over a round foot.
-Build square_over_round(double k) {
-  return [k](occ::Workbench& wb) {
-    wb.brick("b", {0, 0, 0}, {6, 4, 2});
-    wb.brick("boss", {2.5 + 0.3 * k, 2 - k, 2}, {2 * k, 2 * k, 1});
-    wb.cylinder("foot", {2.5, 2, -1}, {0, 0, 1}, k, 1);
-    wb.fuse("part", {"b", "boss", "foot"});
-  };
-}
-
-// A through hole with a countersink: a cone over a cylinder.
-void countersunk_hole(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {4, 4, 2});
-  wb.cylinder("h", {2, 2, -1}, {0, 0, 1}, 0.5, 4);
-  wb.cone("k", {2, 2, 1.5}, {0, 0, 1}, 0.5, 1.0, 0.5);
-  wb.cut("part", {"b", "h", "k"});
-}
-
-// A 6 x 4 block whose top is inclined by 20 degrees, a boss standing on it
-// (along the top's normal) and a foot below.
-void inclined_top(occ::Workbench& wb) {
-  wb.brick("b", {0, 0, 0}, {6, 4, 5});
-  wb.brick("cutter", {-1, -1, 2.5}, {8, 6, 6});
-  wb.rotate("cutter", {0, 0, 2.5}, {0, 1, 0}, -20);
-  wb.cut("body", {"b", "cutter"});
-  const double a = 20 * kPi / 180;
-  const Vec3 n(-std::sin(a), 0, std::cos(a));  // the top's normal
-  const Vec3 on_top = Vec3(2, 2, 2.5 + 2 * std::tan(a));
-  wb.cylinder("boss", on_top - 0.2 * n, n, 0.75, 1.2);
-  wb.brick("foot", {3.5, 1, -1}, {1.5, 2, 1});
-  wb.fuse("part", {"body", "boss", "foot"});
-}
-
-// A 90-degree elbow (a 2 x 2 section revolved about z) with a round boss on
-// its end face at angle 90.
-void elbow_with_boss(occ::Workbench& wb) {
-  wb.revolve("elbow", {{3, 0, 0}, {5, 0, 0}, {5, 0, 2}, {3, 0, 2}}, {0, 0, 0}, {0, 0, 1}, 90);
-  wb.cylinder("boss", {0.2, 4, 1}, {-1, 0, 0}, 0.6, 1.2);
-  wb.fuse("part", {"elbow", "boss"});
 }
 
 TEST(CooperMustMesh, BlindHole) { check("blind_hole", blind_hole, 0.25, 101, 2); }
