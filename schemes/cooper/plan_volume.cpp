@@ -290,6 +290,12 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
   return refused;
 }
 
+geom::Vec3 sweep_direction(const VolumePlan& p) {
+  if (p.down) return *p.down;
+  if (p.source && p.facts.face(p.source)) return -p.facts.face(p.source)->normal;
+  return geom::Vec3::Zero();
+}
+
 std::string imprint_operation(const BarrelNode& barrel) {
   const size_t u = barrel.upper.size(), l = barrel.lower.size();
   if (u == 1 && l == 1) return "match";
@@ -305,8 +311,12 @@ std::string describe_plan(const VolumePlan& p) {
   }
   s << "cooper plan of " << volume_name(p.volume) << ": " << p.tree.barrels.size() << " barrel"
     << (p.tree.barrels.size() == 1 ? "" : "s");
-  if (p.down) s << ", straight along " << direction_text(*p.down);
-  s << " (" << p.candidate << ")\n";
+  if (p.down) {
+    s << ", straight along " << direction_text(*p.down);
+  } else if (p.source) {
+    s << ", leaving surface " << p.source << " along " << direction_text(sweep_direction(p));
+  }
+  s << (p.down ? "" : " (" + p.candidate + ")") << "\n";
   auto piece = [&](const EndPiece& e, bool upper_end, size_t self) {
     std::ostringstream t;
     if (e.cap) {

@@ -60,6 +60,10 @@ struct VolumePlan {
   bool one_barrel() const { return tree.barrels.size() == 1; }
 };
 
+/// The direction the sweep leaves its upper caps: the straight axis, else
+/// the inward normal of the one-barrel source at its centre.
+geom::Vec3 sweep_direction(const VolumePlan& plan);
+
 /// Plans a volume for the cooper sweep.
 VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Registry& registry,
                        const PlanInputs& inputs);
