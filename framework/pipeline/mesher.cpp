@@ -107,6 +107,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
 
   scheme::MeshParams params;
   params.size = settings.size.value_or(1.0);
+  params.allow_fallback = options.dim == 2;
 
   std::vector<int> surfaces;
   for (const auto& [id, entry] : result.plan.surfaces) {
