@@ -358,6 +358,7 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     components[links.find(index_of[c.terms.front().first])].constraints.push_back(std::move(c));
 
   IntervalSolution solution;
+  solution.sizes = problem.size_functions();
   for (auto& [root, comp] : components) {
     if (comp.constraints.empty()) {
       for (const Curve* curve : comp.curves) solution.intervals[curve->id] = lone_count(*curve);

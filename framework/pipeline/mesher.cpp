@@ -103,7 +103,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   result.intervals =
       intervals::solve(build_interval_problem(model, registry, result.plan, settings));
   report(options, "curves", 0, model.curves().size());
-  mesh_curves(model, result.intervals.intervals, settings, result.mesh);
+  mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
 
   scheme::MeshParams params;
   params.size = settings.size.value_or(1.0);
