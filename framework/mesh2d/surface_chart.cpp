@@ -120,17 +120,17 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
   std::vector<Vec3> xyz(bg.points.size());
   for (size_t i = 0; i < bg.points.size(); ++i) xyz[i] = surface_.point(uv_of(bg.points[i]));
 
-  if (!lp.has_poles()) {
-    const double distortion = max_conformal_distortion(xyz, bg.points, bg.triangles);
-    if (distortion <= options.max_distortion) {
-      kind_ = Kind::ScaledUv;
-      loops_2d_ = sep.loops;
-      sources_.resize(sep.source.size());
-      for (size_t l = 0; l < sep.source.size(); ++l) {
-        for (const LoopPointRef& r : sep.source[l]) sources_[l].push_back(node_of(r));
-      }
-      return;
+  auto use_scaled_uv = [&]() {
+    kind_ = Kind::ScaledUv;
+    loops_2d_ = sep.loops;
+    sources_.assign(sep.source.size(), {});
+    for (size_t l = 0; l < sep.source.size(); ++l) {
+      for (const LoopPointRef& r : sep.source[l]) sources_[l].push_back(node_of(r));
     }
+  };
+  if (!lp.has_poles() && max_conformal_distortion(xyz, bg.points, bg.triangles) <= options.max_distortion) {
+    use_scaled_uv();
+    return;
   }
 
   // Conformal map of the background. A pole's points merge into one vertex.
@@ -185,15 +185,22 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
   }
   if (pin1 < 0 || !(far > 0)) fail("the face's boundary has no extent");
   const std::vector<Vector2d> flat = conformal_map(xyz, tris, pin0, pin1);
+  // The conformal map keeps angles but is not always one-to-one (thin slits
+  // of a face may close up); then the scaled plane, valid though distorted,
+  // is the chart when there is no pole.
   if (!std::isfinite(max_conformal_distortion(xyz, flat, tris))) {
+    if (!lp.has_poles()) return use_scaled_uv();
     fail("the conformal map of the face folds over (a triangle is inverted)");
   }
-  loops_2d_.resize(sep.loops.size());
+  loops_2d_.assign(sep.loops.size(), {});
   for (size_t l = 0; l < out_vertex.size(); ++l) {
     for (int v : out_vertex[l]) loops_2d_[l].push_back(flat[static_cast<size_t>(v)]);
   }
   why = invalid_loops(loops_2d_);
-  if (!why.empty()) fail("the conformal map of the face gives an invalid boundary (" + why + ")");
+  if (!why.empty()) {
+    if (!lp.has_poles()) return use_scaled_uv();
+    fail("the conformal map of the face gives an invalid boundary (" + why + ")");
+  }
   kind_ = Kind::Conformal;
   corner_uv_ = std::move(corner_uv);
   locator_ = std::make_unique<TriangleLocator>(flat, std::move(tris));
