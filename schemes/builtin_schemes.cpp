@@ -8,6 +8,7 @@
 #include "schemes/map/volume_map.h"
 #include "schemes/pave/pave_2d.h"
 #include "schemes/pave/pave_scheme.h"
+#include "schemes/quad_dominant/fallback_chain.h"
 #include "schemes/quad_dominant/quad_dominant_scheme.h"
 #include "schemes/submap/submap_scheme.h"
 #include "schemes/tri/tri_scheme.h"
@@ -65,9 +66,14 @@ BuiltinOptions builtin_options(const io::MeshSettings& settings) {
 }
 
 void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options) {
-  registry.add(map::make_surface_map());
-  registry.add(submap::make_submap(options.vertex_types));
-  registry.add(pave::make_pave());
+  // map, submap and pave fall back (pave, quad-dominant, triangles) when the
+  // surface mesh is the product (--dim 2); as the roles of a volume scheme
+  // they are themselves alone.
+  using quad_dominant::FallbackChain;
+  registry.add(std::make_unique<FallbackChain>(map::make_surface_map(), pave::make_pave(), tri::make_tri()));
+  registry.add(std::make_unique<FallbackChain>(submap::make_submap(options.vertex_types), pave::make_pave(),
+                                               tri::make_tri()));
+  registry.add(std::make_unique<FallbackChain>(pave::make_pave(), nullptr, tri::make_tri()));
   registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
   // Likewise; cooper's mixed caps: pave's quads, the poor ones split.
   registry.add(std::make_unique<quad_dominant::QuadDominantScheme>(pave::make_pave(),

@@ -92,12 +92,25 @@ class Selector {
     return pin && pin->scheme != "auto" ? pin : nullptr;
   }
 
+  // A mappable surface (4 END corners, map applies) meshed by map is the
+  // mesh submap makes of it (one lattice rectangle: the same constraints,
+  // opposite sides equal), so a volume that needs map and one that needs
+  // submap on it agree: the surface is mapped (issue 16, item 6). A pin is
+  // the user's word and is not reinterpreted.
+  bool compatible(int surface, const std::string& a, const std::string& b) const {
+    if (a == b) return true;
+    const bool pair = (a == "map" && b == "submap") || (a == "submap" && b == "map");
+    if (!pair) return false;
+    const scheme::SurfaceScheme* map = registry_.surface_scheme("map");
+    return map != nullptr && map->applicable(scheme::SurfaceView{model_, surface, nullptr}).ok;
+  }
+
   // Why `roles` cannot be taken by `volume`, or "" when they fit.
   std::string role_conflict(int volume, const std::string& scheme_name,
                             const scheme::SurfaceRoles& roles) const {
     for (const auto& [surface, role] : roles) {
       auto it = roles_.find(surface);
-      if (it != roles_.end() && it->second.scheme != role) {
+      if (it != roles_.end() && !compatible(surface, it->second.scheme, role)) {
         return "surface " + std::to_string(surface) + " needs " + role + " for volume " +
                std::to_string(volume) + " (" + scheme_name + ") but " + it->second.scheme +
                " for volume " + std::to_string(it->second.volume) + " (" +
@@ -160,7 +173,15 @@ class Selector {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
         continue;
       }
-      for (const auto& [surface, role] : roles) roles_[surface] = {role, id, c->scheme};
+      for (const auto& [surface, role] : roles) {
+        auto it = roles_.find(surface);
+        // map and submap on one mappable surface: mapped (compatible()).
+        if (it != roles_.end() && it->second.scheme != role) {
+          if (role == "map") it->second = {role, id, c->scheme};
+          continue;
+        }
+        roles_[surface] = {role, id, c->scheme};
+      }
       choice.scheme = c->scheme;
       choice.reason = choice.pinned ? "pinned at " + place(pin->where)
                                     : "best applicable, score " + score_text(c->applicability.score);

@@ -5,6 +5,8 @@
 // a person. solve() (solve.h) turns it into integer programs for CBC.
 #pragma once
 
+#include "framework/mesh/curve_spacing.h"
+
 #include <map>
 #include <optional>
 #include <string>
@@ -78,6 +80,11 @@ class IntervalProblem {
   void add_linear(std::vector<LinearTerm> terms, Sense sense, int rhs,
                   std::string label = {});
 
+  /// Where a curve's intervals should be smaller than its goal's mean (a
+  /// small feature nearby, curve_sizing.h): its nodes follow these sizes.
+  void set_size_function(int curve_id, mesh::SizeFunction sizes) { sizes_[curve_id] = std::move(sizes); }
+  const std::map<int, mesh::SizeFunction>& size_functions() const { return sizes_; }
+
   const std::map<int, Curve>& curves() const { return curves_; }
   const std::vector<Constraint>& constraints() const { return constraints_; }
   bool has_curve(int curve_id) const { return curves_.count(curve_id) != 0; }
@@ -85,6 +92,7 @@ class IntervalProblem {
  private:
   std::map<int, Curve> curves_;
   std::vector<Constraint> constraints_;
+  std::map<int, mesh::SizeFunction> sizes_;
 };
 
 /// "1 + 3 = 2 + 4"-style text of a constraint, used when no label is given.

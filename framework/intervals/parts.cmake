@@ -3,4 +3,5 @@ cooperage_framework_part(intervals SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/deviation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ilp.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solve.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/curve_sizing.cpp
   PRIVATE_DEPS PkgConfig::CBC)

@@ -296,7 +296,26 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   if (!build_model(comp, items, std::vector<bool>(items.size(), true), true, options, class_of,
                    columns, rows))
     throw_infeasible(comp, options);
-  const std::optional<std::vector<int>> start = uniform_start(columns, rows);
+  std::optional<std::vector<int>> start = uniform_start(columns, rows);
+  if (!start) {
+    // No uniform start (minimum counts from curve_sizing.h, e.g. a circle's
+    // 6 opposite a line's 1 on a mapped face): a feasibility solve (no
+    // costs, quick for CBC) gives it one; without, CBC searched for minutes
+    // on a 378-curve real-cad component.
+    std::vector<int> class_free;
+    std::vector<detail::Column> plain;
+    std::vector<detail::Row> plain_rows;
+    if (build_model(comp, items, std::vector<bool>(items.size(), true), false, options, class_free, plain,
+                    plain_rows)) {
+      SolveOptions quick = options;
+      quick.max_seconds = std::min(options.max_seconds, 10.0);
+      const detail::IlpResult feasible = detail::solve_ilp(plain, plain_rows, quick);
+      if ((feasible.status == detail::IlpStatus::Optimal || feasible.status == detail::IlpStatus::Feasible) &&
+          detail::satisfies(columns, rows, feasible.x)) {
+        start = feasible.x;
+      }
+    }
+  }
   const detail::IlpResult result =
       detail::solve_ilp(columns, rows, options, start ? &*start : nullptr);
   switch (result.status) {
@@ -358,6 +377,7 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     components[links.find(index_of[c.terms.front().first])].constraints.push_back(std::move(c));
 
   IntervalSolution solution;
+  solution.sizes = problem.size_functions();
   for (auto& [root, comp] : components) {
     if (comp.constraints.empty()) {
       for (const Curve* curve : comp.curves) solution.intervals[curve->id] = lone_count(*curve);

@@ -91,6 +91,9 @@ struct IntervalSolution {
   std::map<int, int> intervals;     ///< curve id -> interval count
   std::map<int, double> deviation;  ///< curve id -> relative deviation f from its target
   double objective = 0.0;           ///< sum of w_c * h_c(x_c) over all curves (unscaled)
+  /// The problem's size functions (IntervalProblem::set_size_function), for
+  /// placing the nodes of graded curves.
+  std::map<int, mesh::SizeFunction> sizes;
 };
 
 /// Assigns an interval count to every curve of the problem.

@@ -42,12 +42,57 @@ double ratio_for_first(int n, double target, CurveSpacing::Kind kind) {
   return std::sqrt(lo * hi);
 }
 
+/// The integral of ds / size over the piece [at[k], at[k+1]] up to fraction
+/// t of it (size linear on the piece).
+double piece_integral(double length, double h0, double h1, double t) {
+  const double d = h1 - h0;
+  if (std::abs(d) < 1e-9 * std::max(h0, h1)) return t * length / h0;
+  return length / d * std::log1p(d * t / h0);
+}
+
+/// Node fractions of n intervals equidistributed under the size function.
+std::vector<double> sized_fractions(int n, double length, const SizeFunction& f) {
+  const size_t m = f.at.size();
+  std::vector<double> cumulative(m, 0.0);
+  for (size_t k = 0; k + 1 < m; ++k) {
+    const double piece = (f.at[k + 1] - f.at[k]) * length;
+    cumulative[k + 1] = cumulative[k] + piece_integral(piece, f.size[k], f.size[k + 1], 1.0);
+  }
+  std::vector<double> s(static_cast<size_t>(n) + 1, 0.0);
+  s.back() = 1.0;
+  size_t k = 0;
+  for (int i = 1; i < n; ++i) {
+    const double target = cumulative.back() * i / n;
+    while (k + 2 < m && cumulative[k + 1] < target) ++k;
+    const double piece = (f.at[k + 1] - f.at[k]) * length;
+    const double h0 = f.size[k], h1 = f.size[k + 1], need = target - cumulative[k];
+    const double d = h1 - h0;
+    double t = std::abs(d) < 1e-9 * std::max(h0, h1) ? need * h0 / piece
+                                                        : h0 / d * std::expm1(need * d / piece);
+    t = std::clamp(t, 0.0, 1.0);
+    s[static_cast<size_t>(i)] = std::max(s[static_cast<size_t>(i) - 1], f.at[k] + t * (f.at[k + 1] - f.at[k]));
+  }
+  return s;
+}
+
 }  // namespace
+
+double SizeFunction::intervals(double length) const {
+  double total = 0.0;
+  for (size_t k = 0; k + 1 < at.size(); ++k) {
+    total += piece_integral((at[k + 1] - at[k]) * length, size[k], size[k + 1], 1.0);
+  }
+  return total;
+}
 
 std::vector<double> spacing_fractions(int n, double length, const CurveSpacing& spacing) {
   if (n < 1) throw MeshingError(ErrorCode::InvalidInput, "a curve needs at least 1 interval");
+  if (spacing.kind == CurveSpacing::Kind::Sized && n > 1 && !spacing.sizes.empty() && length > 0) {
+    return sized_fractions(n, length, spacing.sizes);
+  }
   std::vector<double> s(static_cast<size_t>(n) + 1, 0.0);
-  if (spacing.kind == CurveSpacing::Kind::Uniform || n == 1) {
+  if (spacing.kind == CurveSpacing::Kind::Uniform || spacing.kind == CurveSpacing::Kind::Sized ||
+      n == 1) {
     for (int i = 0; i <= n; ++i) s[static_cast<size_t>(i)] = static_cast<double>(i) / n;
     return s;
   }

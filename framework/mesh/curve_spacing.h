@@ -10,8 +10,21 @@
 
 namespace cooperage::mesh {
 
+/// A local interval length along a curve: size[k] [model units] at arc-length
+/// fraction at[k] (0 = at[0] < ... < at.back() = 1), linear in between.
+struct SizeFunction {
+  std::vector<double> at;
+  std::vector<double> size;
+  bool empty() const { return at.size() < 2; }
+  /// The number of intervals of these sizes on a curve of the given length:
+  /// the integral of ds / size(s).
+  double intervals(double length) const;
+};
+
 struct CurveSpacing {
-  enum class Kind { Uniform, Geometric, Dual };
+  /// Sized: nodes equidistributed under `sizes` (a small feature at an end
+  /// grades the intervals from its size up to the element size).
+  enum class Kind { Uniform, Geometric, Dual, Sized };
   Kind kind = Kind::Uniform;
   /// Ratio between neighbouring intervals (> 0), walking away from the start
   /// (Geometric) or from both ends toward the middle (Dual).
@@ -20,6 +33,8 @@ struct CurveSpacing {
   std::optional<double> first_size;
   /// Geometric only: measure from the end vertex instead.
   bool reverse = false;
+  /// Sized only.
+  SizeFunction sizes;
 };
 
 /// Arc-length fractions 0 = s_0 < s_1 < ... < s_n = 1 of n intervals on a

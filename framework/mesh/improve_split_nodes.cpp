@@ -106,22 +106,46 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
       for (int e : mine) {
         floors.push_back(std::min(quad_floor, quality(points, elements[static_cast<size_t>(e)])) - 1e-12);
       }
+      // Trials move in the tangent plane (the elements' mean normal), and
+      // only the best of a round is passed through `project` (onto a
+      // curved surface a projection costs far more than the trial).
+      Vec3 tangent_normal = Vec3::Zero();
+      for (int e : mine) tangent_normal += elements[static_cast<size_t>(e)].normal.normalized();
+      if (tangent_normal.norm() > 0) tangent_normal.normalize();
+      for (Vec3& d : directions) {
+        d -= d.dot(tangent_normal) * tangent_normal;
+        if (d.norm() > 0) d.normalize();
+      }
       // Step from a fifth of the mean edge down to a thousandth of it; at
       // most 100 trial rounds, so a long run of tiny gains ends too.
       int rounds = 0;
       for (double step = 0.2 * mean_length; step > 1e-3 * mean_length && rounds < 100; ++rounds) {
         const Vec3 start = x;
+        const double before = best;
         Vec3 best_x = start;
         for (const Vec3& d : directions) {
-          x = project(start + step * d);
+          if (!(d.norm() > 0)) continue;
+          x = start + step * d;
           const double q = worst(points, elements, mine);
           if (q > best + 1e-12 && quad_margin(points, elements, mine, floors) >= 0) {
             best = q;
             best_x = x;
           }
         }
-        x = best_x;
-        if (best_x == start) step *= 0.5;
+        if (best_x == start) {
+          x = start;
+          step *= 0.5;
+          continue;
+        }
+        x = project(best_x);
+        const double q = worst(points, elements, mine);
+        if (q > before + 1e-12 && quad_margin(points, elements, mine, floors) >= 0) {
+          best = q;
+        } else {  // the surface took the gain back
+          x = start;
+          best = before;
+          step *= 0.5;
+        }
       }
     }
   }

@@ -1,6 +1,7 @@
 #include "framework/pipeline/interval_setup.h"
 
 #include "framework/core/error.h"
+#include "framework/intervals/curve_sizing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,10 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
                                                   const SchemePlan& plan,
                                                   const io::MeshSettings& settings) {
   intervals::IntervalProblem problem;
+  // Goals that keep features (circles >= 6 intervals, thin faces and small
+  // neighbours graded): framework/intervals/curve_sizing.h.
+  const std::map<int, intervals::CurveSizing> sizing = intervals::curve_sizing(
+      model, [&](int id) { return curve_target_size(model, settings, id); });
   for (const geom::Curve& curve : model.curves()) {
     const bool closed = curve.start_vertex == curve.end_vertex;
     const int min = closed ? 2 : 1;  // a closed curve with one interval has no extent
@@ -74,14 +79,19 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
       problem.add_curve(curve.id, static_cast<double>(n), to_firmness(f), n, min);
       continue;
     }
-    const double size = curve_target_size(model, settings, curve.id);
-    const double goal = std::max(curve.length / size, 1e-3);
+    const intervals::CurveSizing& z = sizing.at(curve.id);
+    // Whole goals: with fractional ones from graded sizes the integer
+    // program's relaxation was weak and CBC took minutes on large
+    // components (real-cad impeller: > 2 min, whole: 3 s).
+    const double goal = std::max<double>({std::round(z.goal), 1.0, static_cast<double>(z.min)});
+    const int least = std::max(min, z.min);
+    if (z.graded) problem.set_size_function(curve.id, z.sizes);
     const io::Firmness f = own ? own->sizing.firmness : io::Firmness::Default;
     if (f == io::Firmness::Hard) {  // the count the size gives, fixed exactly
-      const int n = std::max(min, static_cast<int>(std::lround(goal)));
-      problem.add_curve(curve.id, goal, intervals::Firmness::Hard, n, min);
+      const int n = std::max(least, static_cast<int>(std::lround(goal)));
+      problem.add_curve(curve.id, goal, intervals::Firmness::Hard, n, least);
     } else {
-      problem.add_curve(curve.id, goal, to_firmness(f), std::nullopt, min);
+      problem.add_curve(curve.id, goal, to_firmness(f), std::nullopt, least);
     }
   }
   for (const auto& [id, entry] : plan.surfaces) {

@@ -21,7 +21,8 @@ mesh::CurveSpacing curve_spacing(const io::MeshSettings& settings, int curve_id)
 }
 
 void mesh_curves(const geom::Model& model, const std::map<int, int>& intervals,
-                 const io::MeshSettings& settings, mesh::MeshDB& db) {
+                 const io::MeshSettings& settings, mesh::MeshDB& db,
+                 const std::map<int, mesh::SizeFunction>* sizes) {
   for (const geom::Vertex& v : model.vertices()) {
     if (db.vertex_node(v.id) < 0) {
       db.set_vertex_node(v.id, db.add_node(v.point, {0, v.id}));
@@ -35,8 +36,16 @@ void mesh_curves(const geom::Model& model, const std::map<int, int>& intervals,
     }
     const int n = it->second;
     std::vector<double> fractions;
+    mesh::CurveSpacing spacing = curve_spacing(settings, curve.id);
+    if (sizes != nullptr && spacing.kind == mesh::CurveSpacing::Kind::Uniform) {
+      const auto sized = sizes->find(curve.id);
+      if (sized != sizes->end()) {
+        spacing.kind = mesh::CurveSpacing::Kind::Sized;
+        spacing.sizes = sized->second;
+      }
+    }
     try {
-      fractions = mesh::spacing_fractions(n, curve.length, curve_spacing(settings, curve.id));
+      fractions = mesh::spacing_fractions(n, curve.length, spacing);
     } catch (const MeshingError& e) {
       throw MeshingError(e.code(), EntityRef::curve(curve.id), e.message());
     }

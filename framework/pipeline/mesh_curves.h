@@ -15,9 +15,11 @@ namespace cooperage::pipeline {
 mesh::CurveSpacing curve_spacing(const io::MeshSettings& settings, int curve_id);
 
 /// Meshes every vertex and every curve of the model into `db` with the
-/// given interval counts (curve id -> count). Deterministic: vertices, then
-/// curves, in id order.
+/// given interval counts (curve id -> count). A curve with a size function
+/// in `sizes` (IntervalSolution::sizes) and no spacing of its own places its
+/// nodes by it. Deterministic: vertices, then curves, in id order.
 void mesh_curves(const geom::Model& model, const std::map<int, int>& intervals,
-                 const io::MeshSettings& settings, mesh::MeshDB& db);
+                 const io::MeshSettings& settings, mesh::MeshDB& db,
+                 const std::map<int, mesh::SizeFunction>* sizes = nullptr);
 
 }  // namespace cooperage::pipeline

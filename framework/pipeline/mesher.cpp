@@ -124,11 +124,12 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       intervals::solve(build_interval_problem(model, registry, result.plan, settings));
   lap("intervals");
   report(options, "curves", 0, model.curves().size());
-  mesh_curves(model, result.intervals.intervals, settings, result.mesh);
+  mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
   lap("curves");
 
   scheme::MeshParams params;
   params.size = settings.size.value_or(1.0);
+  params.allow_fallback = options.dim == 2;
 
   std::vector<int> surfaces;
   for (const auto& [id, entry] : result.plan.surfaces) {

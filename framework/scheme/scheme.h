@@ -18,6 +18,12 @@ namespace cooperage::scheme {
 /// Settings a scheme may read while meshing.
 struct MeshParams {
   double size = 1.0;  ///< target element size [model units]
+  /// The surface mesh is the product (`--dim 2`), not the input of a volume
+  /// scheme: a surface scheme that cannot reach its quality may fall back
+  /// to another one, to quad-dominant or to triangles, saying so in
+  /// EntityMesh::warnings, instead of failing. A volume scheme needs the
+  /// surface meshes it imposed, so the pipeline leaves this off in 3D.
+  bool allow_fallback = false;
 };
 
 /// A surface as a scheme sees it. `mesh` holds the meshed curves of its loops

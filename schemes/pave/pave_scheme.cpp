@@ -2,9 +2,12 @@
 
 #include "framework/core/error.h"
 #include "framework/quality/quad_metrics.h"
-#include "schemes/pave/surface_to_2d.h"
+#include "framework/mesh/loop_nodes.h"
+#include "framework/mesh2d/surface_chart.h"
+#include "framework/scheme/vertex_angles.h"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
@@ -15,33 +18,21 @@ namespace {
   throw MeshingError(code, EntityRef::surface(surface_id), "pave: " + message);
 }
 
-std::string curve_list(const geom::Loop& loop) {
-  std::string s;
-  for (const auto& use : loop.uses) s += (s.empty() ? "" : "+") + std::to_string(use.curve);
-  return s;
-}
+using mesh::loop_curve_list;
 
-/// The loop's boundary nodes as a closed ring (no repeated last node).
-std::vector<int> loop_ring(const mesh::MeshDB& db, int sid, size_t index, const geom::Loop& loop) {
-  std::vector<int> chain;
-  for (const auto& use : loop.uses) {
-    if (!db.curve_meshed(use.curve)) {
-      fail(sid, ErrorCode::MeshingFailed, "curve " + std::to_string(use.curve) + " is not meshed");
-    }
-    std::vector<int> nodes = db.curve_nodes(use.curve);
-    if (nodes.size() < 2) fail(sid, ErrorCode::MeshingFailed, "curve " + std::to_string(use.curve) + " has no intervals");
-    if (use.sense == geom::Sense::Reversed) std::reverse(nodes.begin(), nodes.end());
-    if (!chain.empty() && chain.back() != nodes.front()) {
-      fail(sid, ErrorCode::MeshingFailed,
-           "curve " + std::to_string(use.curve) + " does not continue loop " + std::to_string(index));
-    }
-    chain.insert(chain.end(), nodes.begin() + (chain.empty() ? 0 : 1), nodes.end());
+/// The fewest intervals loop `l` of a surface needs. A loop of 4 nodes is
+/// one quad, good only when its 4 nodes are the loop's 4 corners (4 curves
+/// meeting at angles of 45-135 degrees); any other loop needs 6 (a triangle
+/// face: 3 quads around its centre; a disk: a hexagon of 3 quads), and an
+/// outer loop around holes too (its every-other-node polygon must not fold).
+int fewest_intervals(const geom::Model& model, int surface_id, size_t l) {
+  const geom::Surface& s = model.surface(surface_id);
+  if (l == 0 && s.loops.size() > 1) return 6;
+  if (s.loops[l].uses.size() != 4) return 6;
+  for (const auto& corner : scheme::loop_corners(model, surface_id, static_cast<int>(l))) {
+    if (corner.angle < 45.0 || corner.angle > 135.0) return 6;
   }
-  if (chain.size() < 2 || chain.front() != chain.back()) {
-    fail(sid, ErrorCode::MeshingFailed, "loop " + std::to_string(index) + " is not closed");
-  }
-  chain.pop_back();
-  return chain;
+  return 4;
 }
 
 }  // namespace
@@ -94,10 +85,10 @@ void PaveScheme::constrain(const scheme::SurfaceView& view, intervals::IntervalP
     for (const auto& use : s.loops[l].uses) ids.push_back(use.curve);  // a seam counts twice
     if (ids.empty()) continue;
     all.insert(all.end(), ids.begin(), ids.end());
-    all_text += (all_text.empty() ? "" : "+") + curve_list(s.loops[l]);
-    const int least = (l == 0 && s.loops.size() > 1) ? 6 : 4;
+    all_text += (all_text.empty() ? "" : "+") + loop_curve_list(s.loops[l]);
+    const int least = fewest_intervals(view.model, view.surface_id, l);
     problem.add_at_least(ids, least, name + ": loop " + std::to_string(l) + " curves " +
-                                         curve_list(s.loops[l]) + " >= " + std::to_string(least));
+                                         loop_curve_list(s.loops[l]) + " >= " + std::to_string(least));
   }
   if (!all.empty()) problem.add_even(all, name + ": boundary curves " + all_text + " even");
 }
@@ -110,12 +101,9 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
   if (surface.loops.empty()) fail(sid, ErrorCode::NotApplicable, "no boundary loop");
   if (!surface.geometry) fail(sid, ErrorCode::Internal, "no surface geometry");
 
-  std::vector<std::vector<int>> rings;
+  const std::vector<std::vector<int>> rings = mesh::surface_loop_nodes(view.model, sid, db);
   size_t total = 0;
-  for (size_t l = 0; l < surface.loops.size(); ++l) {
-    rings.push_back(loop_ring(db, sid, l, surface.loops[l]));
-    total += rings.back().size();
-  }
+  for (const auto& ring : rings) total += ring.size();
   if (total % 2 != 0) {
     fail(sid, ErrorCode::InvalidInput,
          "the boundary has an odd number of intervals (" + std::to_string(total) +
@@ -125,7 +113,7 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
   for (size_t l = 0; l < rings.size(); ++l) {
     if (rings[l].size() < 4) {
       fail(sid, ErrorCode::InvalidInput,
-           "loop " + std::to_string(l) + " (curves " + curve_list(surface.loops[l]) + ") has " +
+           "loop " + std::to_string(l) + " (curves " + loop_curve_list(surface.loops[l]) + ") has " +
                std::to_string(rings[l].size()) + " intervals; pave needs at least 4 per loop");
     }
   }
@@ -137,20 +125,23 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
     loops3d.push_back(std::move(l));
   }
   const geom::SurfaceGeometry& geometry = *surface.geometry;
-  const SurfaceTo2D map(geometry, loops3d);
+  std::unique_ptr<mesh2d::SurfaceChart> chart;
   QuadMesh2D m;
   try {
-    m = pave_2d(map.loops_2d(), options_);
+    chart = std::make_unique<mesh2d::SurfaceChart>(geometry, loops3d);
+    m = pave_2d(chart->loops_2d(), options_);
   } catch (const MeshingError& e) {
     fail(sid, e.code(), e.message());
   }
+  const mesh2d::SurfaceChart& map = *chart;
 
   scheme::EntityMesh out;
   std::vector<int> local(m.points.size(), -1);
   std::unordered_map<int, int> local_of_global;  // seams: a node used twice in a ring is one node
   size_t i = 0;
-  for (const auto& ring : rings) {
-    for (int g : ring) {
+  for (const auto& loop : map.sources()) {  // chart points: loop nodes (touching loops merged)
+    for (const mesh2d::LoopPointRef& r : loop) {
+      const int g = rings[static_cast<size_t>(r.loop)][static_cast<size_t>(r.index)];
       auto it = local_of_global.find(g);
       if (it == local_of_global.end()) it = local_of_global.emplace(g, out.add(db.node(g), g)).first;
       local[i++] = it->second;

@@ -1,8 +1,10 @@
 // The surface scheme "tri": a quality triangulation of any face with any
 // number of loops, planar or curved, on the given curve meshes (no new
 // boundary nodes): constrained Delaunay triangulation with Delaunay
-// refinement (framework/mesh2d) in the face's distortion-aware 2D space
-// (face_space.h), interior nodes mapped back onto the surface. For the
+// refinement (framework/mesh2d) in the face's chart (the flattener shared
+// by the 2D schemes, framework/mesh2d/surface_chart.h: a plane frame,
+// scaled (u, v), or a conformal map), interior nodes mapped back onto the
+// surface. For the
 // wedge/hexahedral mix of Blacker 1996 (abstract: "or a wedge/hexahedral
 // element mix if desired"): triangle caps swept into wedges.
 #pragma once

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <random>
+#include <set>
 
 namespace cooperage::selector {
 namespace {
@@ -377,6 +378,55 @@ TEST(Selector, PlanIsInvariantUnderRigidMotionAndInputOrder) {
   EXPECT_EQ(p0, p1);
   EXPECT_EQ(p0, p2);
   EXPECT_EQ(p0.size(), m0.surfaces().size() + 3);
+}
+
+}  // namespace
+}  // namespace cooperage::selector
+
+namespace cooperage::selector {
+namespace {
+
+// Issue 16, item 6: a brick (volume map: every face "map") glued to an
+// L-shaped prism (cooper: its sides "submap") on one rectangular face. A
+// rectangle submapped is the mesh mapped, so the two roles agree: the
+// shared face is mapped, both volumes keep their schemes, and the model
+// meshes conformally.
+TEST(Selector, MapAndSubmapOnOneSharedRectangleAgree) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 2, 2});
+  bench.prism("l", {{2, 0, 0}, {5, 0, 0}, {5, 1, 0}, {3, 1, 0}, {3, 2, 0}, {2, 2, 0}}, {}, {0, 0, 2});
+  const geom::Model model = bench.build_model();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  int shared = 0;
+  for (const auto& s : model.surfaces()) {
+    if (s.volumes.size() == 2) shared = s.id;
+  }
+  ASSERT_GT(shared, 0);
+  Fixture f;
+  const io::MeshSettings settings = sized(0.5);
+  const Selection s = select_schemes(model, f.registry, settings);
+  std::set<std::string> volume_schemes;
+  for (const auto& v : s.volumes) volume_schemes.insert(v.scheme);
+  EXPECT_EQ(volume_schemes, (std::set<std::string>{"map", "cooper"}));
+  EXPECT_EQ(s.surfaces.at(static_cast<size_t>(shared - 1)).scheme, "map");
+
+  const pipeline::MeshResult r = pipeline::mesh_model(model, settings, f.registry, mesh_options(3));
+  size_t hexes = 0;
+  for (const auto& v : model.volumes()) hexes += r.mesh.volume(v.id).hexes.size();
+  EXPECT_GT(hexes, 0u);
+  for (const auto& b : r.quality.blocks) {
+    const auto* sj = b.find("scaled_jacobian");
+    ASSERT_NE(sj, nullptr);
+    EXPECT_EQ(sj->inverted, 0u);
+  }
+  // Conformal: the shared face's nodes are used by hexes of both volumes.
+  std::set<int> face_nodes;
+  for (const auto& q : r.mesh.surface(shared).quads) face_nodes.insert(q.begin(), q.end());
+  for (const auto& v : model.volumes()) {
+    std::set<int> used;
+    for (const auto& h : r.mesh.volume(v.id).hexes) used.insert(h.begin(), h.end());
+    for (int n : face_nodes) EXPECT_TRUE(used.count(n)) << "volume " << v.id << " misses node " << n;
+  }
 }
 
 }  // namespace

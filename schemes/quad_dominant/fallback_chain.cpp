@@ -1,0 +1,141 @@
+#include "schemes/quad_dominant/fallback_chain.h"
+
+#include "framework/core/error.h"
+#include "framework/geometry/evaluators.h"
+#include "framework/mesh/corner_sine.h"
+#include "framework/mesh/improve_split_nodes.h"
+#include "framework/scheme/vertex_angles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace cooperage::quad_dominant {
+namespace {
+
+using geom::Vec3;
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+/// One candidate mesh and its worst element.
+struct Candidate {
+  std::string what;  ///< "pave's all-quad mesh", ...
+  scheme::EntityMesh mesh;
+  mesh::SurfaceMeshQuality quality;
+};
+
+/// The smallest interior angle at a vertex of the face [degrees] (360 when none).
+double sharpest_corner(const scheme::SurfaceView& view) {
+  double sharpest = 360.0;
+  const auto& loops = view.surface().loops;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    for (const auto& c : scheme::loop_corners(view.model, view.surface_id, static_cast<int>(l))) {
+      sharpest = std::min(sharpest, c.angle);
+    }
+  }
+  return sharpest;
+}
+
+}  // namespace
+
+FallbackChain::FallbackChain(std::unique_ptr<scheme::SurfaceScheme> primary,
+                             std::unique_ptr<scheme::SurfaceScheme> quads,
+                             std::unique_ptr<scheme::SurfaceScheme> triangles, double min_quality)
+    : primary_(std::move(primary)),
+      quads_(std::move(quads)),
+      triangles_(std::move(triangles)),
+      min_quality_(min_quality) {}
+
+scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
+                                       const scheme::MeshParams& params) const {
+  if (!params.allow_fallback) return primary_->mesh(view, params);
+  const geom::SurfaceGeometry* surface = view.surface().geometry.get();
+  if (surface == nullptr) return primary_->mesh(view, params);
+  const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };
+  const std::string floor = number(min_quality_);
+
+  std::vector<std::string> given_up;  // why each step before the kept one was not kept
+  std::optional<Candidate> best;      // the valid candidate with the best worst element
+  std::optional<Candidate> best_quads;
+  auto consider = [&](Candidate c) -> bool {
+    const bool valid = c.quality.inverted == 0;
+    if (!valid) {
+      given_up.push_back(c.what + " has " + std::to_string(c.quality.inverted) + " inverted elements");
+      return false;
+    }
+    if (c.mesh.tris.empty() && (!best_quads || c.quality.min > best_quads->quality.min)) best_quads = c;
+    const bool good = c.quality.min >= min_quality_;
+    if (!good) given_up.push_back(c.what + " reaches a scaled Jacobian of only " + number(c.quality.min));
+    if (!best || c.quality.min > best->quality.min) best = std::move(c);
+    return good;
+  };
+  auto run = [&](const scheme::SurfaceScheme& s, const std::string& what) -> bool {
+    try {
+      scheme::EntityMesh m = s.mesh(view, params);
+      const mesh::SurfaceMeshQuality q = mesh::surface_mesh_quality(m.coords, m.quads, m.tris, normal_at);
+      return consider({what, std::move(m), q});
+    } catch (const MeshingError& e) {
+      given_up.push_back(what + " failed (" + e.message() + ")");
+      return false;
+    }
+  };
+  auto finish = [&](bool fell_back) {
+    scheme::EntityMesh out = std::move(best->mesh);
+    if (fell_back) {
+      std::string text;
+      for (const std::string& g : given_up) text += (text.empty() ? "" : "; ") + g;
+      std::string kept = best->what + " instead";
+      if (!out.tris.empty()) {
+        kept += " (" + std::to_string(out.quads.size()) + " quads, " + std::to_string(out.tris.size()) +
+                " triangles)";
+      }
+      if (best->quality.min < min_quality_) {
+        const double corner = sharpest_corner(view);
+        kept += "; no mesh reaches " + floor + ", the best has worst element " + number(best->quality.min);
+        if (corner < 90.0 && std::sin(corner * M_PI / 180.0) < min_quality_ + 0.05) {
+          kept += " (the face has a corner of " + number(corner) +
+                  " degrees: no element at it can exceed sin of that angle)";
+        }
+      } else {
+        kept += " (worst element " + number(best->quality.min) + ")";
+      }
+      out.warnings.push_back(std::string(primary_->name()) + ": " + text + "; " + kept);
+    }
+    return out;
+  };
+
+  // 1. The primary scheme; 2. the all-quad fallback.
+  if (run(*primary_, std::string(primary_->name()) + "'s mesh")) return finish(false);
+  if (quads_ && run(*quads_, std::string(quads_->name()) + "'s all-quad mesh")) return finish(true);
+  // 3. Quad-dominant: the best quad mesh with its poor quads split.
+  if (best_quads) {
+    Candidate qd = *best_quads;
+    std::vector<bool> movable(qd.mesh.coords.size());
+    for (size_t i = 0; i < movable.size(); ++i) movable[i] = qd.mesh.global[i] < 0;
+    const mesh::QuadDominant split = mesh::make_quad_dominant(
+        qd.mesh.coords, qd.mesh.quads, movable,
+        [surface](const Vec3& x) { return surface->project(x).point; }, min_quality_);
+    qd.mesh.quads = split.quads;
+    qd.mesh.tris = split.tris;
+    qd.what = "a quad-dominant mesh (" + best_quads->what + ", quads below " + floor + " split)";
+    qd.quality = mesh::surface_mesh_quality(qd.mesh.coords, qd.mesh.quads, qd.mesh.tris, normal_at);
+    if (consider(std::move(qd))) return finish(true);
+  }
+  // 4. Triangles.
+  if (triangles_ && run(*triangles_, "a triangle mesh (" + std::string(triangles_->name()) + ")")) {
+    return finish(true);
+  }
+  if (best) return finish(true);
+  std::string text;
+  for (const std::string& g : given_up) text += (text.empty() ? "" : "; ") + g;
+  throw MeshingError(ErrorCode::MeshingFailed, EntityRef::surface(view.surface_id),
+                     "no valid mesh: " + text);
+}
+
+}  // namespace cooperage::quad_dominant

@@ -1,0 +1,55 @@
+// Total surface meshing (issue 16, item 1): a surface scheme that, when the
+// surface mesh is the product (MeshParams::allow_fallback, `--dim 2`), never
+// gives up on a valid face. It tries, in order, and keeps the first mesh
+// whose every element reaches `min_quality` (scaled Jacobian against the
+// surface normal, measured in 3D):
+//   1. its primary scheme (map, submap or pave, as the selector chose);
+//   2. the all-quad fallback (pave), if the primary is not pave;
+//   3. quad-dominant: the best quad mesh of 1-2 with its quads below
+//      min_quality split into triangles (framework/mesh/split_poor_quads.h);
+//   4. triangles (the tri scheme), the last resort.
+// When none reaches min_quality, the valid mesh (nothing inverted) with the
+// best worst element is kept. Every step past the primary adds a sentence to
+// EntityMesh::warnings saying what was given up and why; nothing inverted is
+// ever returned (no valid mesh at all: the primary's error, with the
+// fallbacks' reasons). Without allow_fallback (a volume scheme imposed the
+// surface's scheme, e.g. cooper's submapped sides) it is the primary alone.
+// applicable() and constrain() are the primary's: every quad scheme's
+// constraints make the boundary interval total even, which pave and the
+// quad-dominant split need, and tri takes any count.
+#pragma once
+
+#include "framework/scheme/scheme.h"
+
+#include <memory>
+
+namespace cooperage::quad_dominant {
+
+class FallbackChain final : public scheme::SurfaceScheme {
+ public:
+  /// \param[in] primary      the scheme whose name, a-priori test and constraints this is
+  /// \param[in] quads        the all-quad fallback (nullptr when primary is it)
+  /// \param[in] triangles    the last resort
+  /// \param[in] min_quality  the scaled Jacobian every element should reach
+  FallbackChain(std::unique_ptr<scheme::SurfaceScheme> primary,
+                std::unique_ptr<scheme::SurfaceScheme> quads,
+                std::unique_ptr<scheme::SurfaceScheme> triangles, double min_quality = 0.2);
+  std::string_view name() const override { return primary_->name(); }
+  scheme::Applicability applicable(const scheme::SurfaceView& view) const override {
+    return primary_->applicable(view);
+  }
+  void constrain(const scheme::SurfaceView& view,
+                 intervals::IntervalProblem& problem) const override {
+    primary_->constrain(view, problem);
+  }
+  scheme::EntityMesh mesh(const scheme::SurfaceView& view,
+                          const scheme::MeshParams& params) const override;
+
+ private:
+  std::unique_ptr<scheme::SurfaceScheme> primary_;
+  std::unique_ptr<scheme::SurfaceScheme> quads_;
+  std::unique_ptr<scheme::SurfaceScheme> triangles_;
+  double min_quality_;
+};
+
+}  // namespace cooperage::quad_dominant
