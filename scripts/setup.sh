@@ -15,6 +15,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libexodusii-dev libnetcdf-dev coinor-libcbc-dev libcli11-dev
   libxml2-utils python3-meshio python3-gmsh
+  clang libclang-rt-14-dev
 )
 
 missing=()
