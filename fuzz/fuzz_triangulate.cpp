@@ -1,5 +1,7 @@
 // Fuzz target: the 2D constrained triangulator (framework/mesh2d) on loops
-// decoded from the bytes, at scales 1e-6 to 1e6 and offsets up to 1e6.
+// decoded from the bytes, at scales 1e-6 to 1e6, away from the origin by up
+// to 1e4 times their size (a face's chart; loops of 1e-12 of their distance
+// from the origin are beyond double precision once refined).
 // Loops are oriented as the contract asks (outer counter-clockwise, holes
 // clockwise); crossing or touching loops must end in MeshingError. A result
 // must keep the input points first and unchanged, use valid indices and
@@ -47,7 +49,7 @@ double signed_area(const std::vector<Eigen::Vector2d>& loop) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Bytes in(data, size);
   const double scale = std::pow(10.0, static_cast<int>(in.byte() % 13) - 6);
-  const double offset = std::pow(10.0, static_cast<int>(in.byte() % 7)) - 1.0;
+  const double offset = scale * (std::pow(10.0, static_cast<int>(in.byte() % 5)) - 1.0);
   const std::uint8_t flags = in.byte();
   const int n_loops = 1 + (flags >> 1) % 3;
   std::vector<std::vector<Eigen::Vector2d>> loops;
