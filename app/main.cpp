@@ -33,7 +33,7 @@ constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 3;
 /// An error line longer than this is cut: a sentence, not a listing of
 /// every face (issue 16 item 5).
-constexpr std::size_t kMaxErrorLine = 400;
+constexpr std::size_t kMaxErrorLine = 240;
 
 int run_info(const std::string& file, bool json, bool no_imprint) {
   const geom::Model model = pipeline::load_any(file, !no_imprint);
@@ -53,6 +53,22 @@ struct RunLimits {
   double volume_tolerance = 0;  ///< percent; 0: the journal's or the default
   bool allow_partial = false;
 };
+
+/// An error in at most three lines (issue 16 item 5): the entity and the
+/// reason; the details of a long reason ("no hex scheme applies (map: ...;
+/// cooper: ...)") on a second line, cut; what to do on the last.
+void print_error(const MeshingError& e) {
+  std::string first = e.what();
+  std::string details;
+  const std::size_t open = first.find(" (");
+  if (first.size() > 120 && open != std::string::npos && open < 120 && first.back() == ')') {
+    details = first.substr(open + 2, first.size() - open - 3);
+    first.resize(open);
+  }
+  std::cerr << "cooperage: error: " << clip(first, kMaxErrorLine) << '\n';
+  if (!details.empty()) std::cerr << "  " << clip(details, kMaxErrorLine) << '\n';
+  if (!e.hint().empty()) std::cerr << "  " << clip(e.hint(), kMaxErrorLine) << '\n';
+}
 
 int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   scheme::Registry registry;
@@ -222,9 +238,7 @@ int main(int argc, char** argv) {
                       limits);
     }
   } catch (const MeshingError& e) {
-    // At most three lines: the entity and the reason, then what to do.
-    std::cerr << "cooperage: error: " << clip(e.what(), kMaxErrorLine) << '\n';
-    if (!e.hint().empty()) std::cerr << "  " << clip(e.hint(), kMaxErrorLine) << '\n';
+    print_error(e);
     return e.code() == ErrorCode::Internal ? kExitInternal : kExitBadInput;
   } catch (const std::bad_alloc&) {
     std::cerr << "cooperage: error: out of memory; use a larger element size or --max-elements\n";

@@ -116,6 +116,12 @@ std::string number(double v) {
   return buf;
 }
 
+/// What to do about a volume no scheme fits (issue 16 item 5: an error says
+/// what to do).
+constexpr const char* kNoSchemeHint =
+    "`cooperage plan` gives every scheme's reason; cut the volume with <webcut> or give it a "
+    "sweep hint (<volume sources/targets/direction>)";
+
 /// TBB workers: the request, at most the hardware's (a journal asking for
 /// 2,147,483,647 threads ran out of memory; issue 21).
 std::unique_ptr<tbb::global_control> limit_threads(int requested) {
@@ -181,7 +187,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
 
   // Verdict entities: volumes in 3D, surfaces in 2D.
   Refusals refusals;
-  for (const auto& [vid, r] : result.plan.refused_volumes) refusals.refuse(vid, r.code, r.message, r.hint);
+  for (const auto& [vid, r] : result.plan.refused_volumes)
+    refusals.refuse(vid, r.code, r.message,
+                    r.hint.empty() && r.code == ErrorCode::NotApplicable ? kNoSchemeHint : r.hint);
   auto surface_blocked = [&](int sid) {  // every volume it bounds is refused
     const auto& vols = model.surface(sid).volumes;
     return dim == 3 && !vols.empty() &&
