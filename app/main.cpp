@@ -9,6 +9,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/log.h"
+#include "framework/core/text.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
@@ -19,6 +20,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -29,6 +32,9 @@ using namespace cooperage;
 constexpr int kExitQualityFailed = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 3;
+/// An error line longer than this is cut: a sentence, not a listing of
+/// every face (issue 16 item 5).
+constexpr std::size_t kMaxErrorLine = 240;
 
 int run_info(const std::string& file, bool json, bool no_imprint) {
   const geom::Model model = pipeline::load_any(file, !no_imprint);
@@ -40,35 +46,70 @@ int run_info(const std::string& file, bool json, bool no_imprint) {
   return 0;
 }
 
-int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
+/// Options of `run` and `mesh` that limit or relax a run.
+struct RunLimits {
+  int threads = 0;
+  bool quiet = false;
+  double max_elements = 0;      ///< 0: the journal's or the default
+  double volume_tolerance = 0;  ///< percent; 0: the journal's or the default
+  bool allow_partial = false;
+};
+
+/// An error in at most three lines (issue 16 item 5): the entity and the
+/// reason; the details of a long reason ("no hex scheme applies (map: ...;
+/// cooper: ...)") on a second line, cut; what to do on the last.
+void print_error(const MeshingError& e) {
+  std::string first = e.what();
+  std::string details;
+  const std::size_t open = first.find(" (");
+  if (first.size() > 120 && open != std::string::npos && open < 120 && first.back() == ')') {
+    details = first.substr(open + 2, first.size() - open - 3);
+    first.resize(open);
+  }
+  std::cerr << "cooperage: error: " << clip(first, kMaxErrorLine) << '\n';
+  if (!details.empty()) std::cerr << "  " << clip(details, kMaxErrorLine) << '\n';
+  if (!e.hint().empty()) std::cerr << "  " << clip(e.hint(), kMaxErrorLine) << '\n';
+}
+
+int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   scheme::Registry registry;
   register_builtin_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{});
-  app::Progress progress(!quiet);
+  app::Progress progress(!limits.quiet);
   pipeline::MeshOptions options;
   options.planner = selector::planner();
   options.dim = dim;
-  options.threads = threads;
+  options.threads = limits.threads;
+  if (limits.max_elements > 0) options.max_elements = limits.max_elements;
+  if (limits.volume_tolerance > 0) options.volume_tolerance = limits.volume_tolerance / 100.0;
+  options.allow_partial = limits.allow_partial;
   options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
     progress.update(stage, done, total);
   };
-  const pipeline::RunResult result = pipeline::run_job(job, registry, options);
-  progress.finish();
-  app::write_run_report(result, std::cout);
-  return result.quality.failed() ? kExitQualityFailed : 0;
+  try {
+    const pipeline::RunResult result = pipeline::run_job(job, registry, options);
+    progress.finish();
+    app::write_run_report(result, std::cout);
+    return result.failed() ? kExitQualityFailed : 0;
+  } catch (const pipeline::IncompleteMesh& e) {
+    progress.finish();
+    app::write_verdicts(e.verdicts(), std::cout);
+    throw;
+  }
 }
 
-int run_journal(const std::string& file, const std::string& report, int threads, bool quiet) {
+int run_journal(const std::string& file, const std::string& report, const RunLimits& limits) {
   io::Job job = io::read_journal(file);
   if (!report.empty()) job.reports.push_back({report, {"command line", 0, "--report"}});
-  return finish_run(job, 3, threads, quiet);
+  return finish_run(job, 3, limits);
 }
 
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             const std::string& report, bool binary, bool no_imprint, io::ElementKind elements, int threads,
-             bool quiet) {
-  if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
+             const std::string& report, bool binary, bool no_imprint, io::ElementKind elements,
+             const RunLimits& limits) {
+  if (!(size > 0) || !std::isfinite(size))
+    throw MeshingError(ErrorCode::InvalidInput, "--size must be a positive number");
   pipeline::ModelJobOptions options;
   options.size = size;
   options.imprint_merge = !no_imprint;
@@ -76,7 +117,7 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   options.exports = {output};
   options.binary = binary;
   if (!report.empty()) options.reports = {report};
-  return finish_run(pipeline::model_job(model, options), dim, threads, quiet);
+  return finish_run(pipeline::model_job(model, options), dim, limits);
 }
 
 }  // namespace
@@ -101,15 +142,27 @@ int main(int argc, char** argv) {
                  "Keep touching solids separate (no imprint and merge)");
 
   std::string run_file, report_file;
-  int threads = 0;
-  bool quiet = false;
+  RunLimits limits;
+  auto add_limits = [&](CLI::App* cmd) {
+    cmd->add_option("--threads", limits.threads,
+                    "Worker threads (0: all cores; at most the hardware's; same output for any)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("-q,--quiet", limits.quiet, "No progress output");
+    cmd->add_option("--max-elements", limits.max_elements,
+                    "Refuse a mesh estimated above this many elements (default 2e8, at most 1e9)")
+        ->check(CLI::Range(1.0, 1e9));
+    cmd->add_option("--volume-tolerance", limits.volume_tolerance,
+                    "Fail when a meshed volume (area) deviates from the CAD's by more than this "
+                    "many percent (default 1)")
+        ->check(CLI::Range(1e-6, 100.0));
+    cmd->add_flag("--allow-partial", limits.allow_partial,
+                  "Write the volumes that meshed when others cannot be meshed (exit code 1)");
+    cmd->add_option("--report", report_file,
+                    "Also write an HTML report (pictures, quality histograms, plan, times)");
+  };
   CLI::App* run = app.add_subcommand("run", "Run a journal: geometry, meshing, quality, exports");
   run->add_option("JOURNAL", run_file, "The journal (.xml)")->required();
-  run->add_option("--threads", threads, "Worker threads (0: all cores; same output for any)")
-      ->check(CLI::NonNegativeNumber);
-  run->add_flag("-q,--quiet", quiet, "No progress output");
-  run->add_option("--report", report_file,
-                  "Also write an HTML report (pictures, quality histograms, plan, times)");
+  add_limits(run);
 
   std::string mesh_file, mesh_output;
   double mesh_size = 0;
@@ -129,11 +182,7 @@ int main(int argc, char** argv) {
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
                    "caps swept into hexes and wedges")
       ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
-  mesh->add_option("--threads", threads, "Worker threads (0: all cores)")
-      ->check(CLI::NonNegativeNumber);
-  mesh->add_flag("-q,--quiet", quiet, "No progress output");
-  mesh->add_option("--report", report_file,
-                   "Also write an HTML report (pictures, quality histograms, plan, times)");
+  add_limits(mesh);
 
   std::string plan_file;
   double plan_size = 0;
@@ -168,7 +217,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*info) return run_info(info_file, info_json, info_no_imprint);
-    if (*run) return run_journal(run_file, report_file, threads, quiet);
+    if (*run) return run_journal(run_file, report_file, limits);
     if (*quality) return app::run_quality(quality_file, quality_json, std::cout, report_file);
     if (*plan) {
       return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
@@ -178,14 +227,17 @@ int main(int argc, char** argv) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary, mesh_no_imprint,
-                      elements, threads, quiet);
+      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
+                      mesh_no_imprint, elements, limits);
     }
   } catch (const MeshingError& e) {
-    std::cerr << "cooperage: error: " << e.what() << '\n';
+    print_error(e);
     return e.code() == ErrorCode::Internal ? kExitInternal : kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cooperage: error: out of memory; use a larger element size or --max-elements\n";
+    return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "cooperage: internal error: " << e.what() << '\n';
+    std::cerr << "cooperage: internal error: " << clip(e.what(), kMaxErrorLine) << '\n';
     return kExitInternal;
   }
   return 0;

@@ -1,5 +1,7 @@
 #include "run_report.h"
 
+#include "framework/core/text.h"
+
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -14,6 +16,19 @@ std::string fmt(const char* format, double v) {
 }
 
 }  // namespace
+
+void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out) {
+  using State = pipeline::Verdict::State;
+  for (const auto& v : verdicts) {
+    out << v.entity.name() << ": ";
+    switch (v.state) {
+      case State::Meshed: out << "meshed"; break;
+      case State::Refused: out << "refused: " << clip(v.reason, 200); break;
+      case State::Deviates: out << "failed the volume check: " << clip(v.reason, 200); break;
+    }
+    out << "\n";
+  }
+}
 
 void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
   std::map<std::pair<int, int>, double> seconds;
@@ -61,9 +76,16 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     out << ": " << c.violations << " elements outside"
         << (c.failed ? " -- FAILED" : (c.violations ? " (warning)" : ", ok")) << "\n";
   }
-  for (const auto& w : result.mesh.warnings) out << "warning: " << w.text() << "\n";
+  if (result.mesh.verdicts.size() > 1 || result.mesh.incomplete())
+    write_verdicts(result.mesh.verdicts, out);
+  for (const auto& w : result.mesh.warnings) out << "warning: " << clip(w.text(), 300) << "\n";
   for (const auto& f : result.written) out << "wrote " << f << "\n";
-  if (result.exports_skipped) out << "exports skipped: a quality check failed\n";
+  if (result.exports_skipped)
+    out << "exports skipped: " << (result.quality.failed() ? "a quality check failed"
+                                                             : "a volume check failed")
+        << "\n";
+  else if (result.mesh.incomplete() && !result.written.empty())
+    out << "partial: only the volumes that meshed were written\n";
 }
 
 }  // namespace cooperage::app

@@ -4,11 +4,17 @@
 #include "framework/pipeline/mesher.h"
 
 #include <ostream>
+#include <vector>
 
 namespace cooperage::app {
 
 /// Table: entity, scheme, elements, min / mean scaled Jacobian, time; then
-/// the journal's quality checks and the files written.
+/// the verdict of every volume of an assembly, the journal's quality
+/// checks, warnings and the files written.
 void write_run_report(const pipeline::RunResult& result, std::ostream& out);
+
+/// One line per volume (surface, for surface meshes): "volume 2: meshed",
+/// "volume 3: refused: <reason>", "volume 4: deviates: <reason>".
+void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out);
 
 }  // namespace cooperage::app

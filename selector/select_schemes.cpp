@@ -78,7 +78,14 @@ class Selector {
 
   Selection run() {
     if (options_.dim == 3) {
-      for (const geom::Volume& v : model_.volumes()) choose_volume(v.id);
+      for (const geom::Volume& v : model_.volumes()) {
+        try {
+          choose_volume(v.id);
+        } catch (const MeshingError& e) {
+          if (!options_.refuse_per_volume || e.entity().dim != 3) throw;
+          selection_.refused[v.id] = {e.code(), e.message(), e.hint()};
+        }
+      }
     }
     for (const geom::Surface& s : model_.surfaces()) choose_surface(s.id);
     if (options_.check_intervals) relax_until_feasible();
@@ -325,6 +332,7 @@ pipeline::SchemePlan Selection::plan() const {
   pipeline::SchemePlan plan;
   for (const Choice& c : volumes) plan.volumes[c.id] = entry(c);
   for (const Choice& c : surfaces) plan.surfaces[c.id] = entry(c);
+  plan.refused_volumes = refused;
   return plan;
 }
 
@@ -338,6 +346,7 @@ pipeline::Planner planner() {
             const io::MeshSettings& settings, int dim) {
     SelectOptions options;
     options.dim = dim;
+    options.refuse_per_volume = true;
     return select_schemes(model, registry, settings, options).plan();
   };
 }

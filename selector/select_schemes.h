@@ -16,6 +16,10 @@ struct SelectOptions {
   int dim = 3;                ///< 3: volumes and surfaces; 2: surfaces only
   int max_relaxations = 64;   ///< bound on map -> submap -> pave steps
   bool check_intervals = true;
+  /// A volume no scheme fits is recorded in Selection::refused (and left
+  /// out of the plan) instead of failing the whole selection, so an
+  /// assembly can report every volume (issue 16 item 5).
+  bool refuse_per_volume = false;
 };
 
 /// Volumes first, in id order: the applicable scheme with the best score
@@ -32,7 +36,8 @@ struct SelectOptions {
 Selection select_schemes(const geom::Model& model, const scheme::Registry& registry,
                          const io::MeshSettings& settings, const SelectOptions& options = {});
 
-/// The selector as the pipeline's planner (MeshOptions::planner).
+/// The selector as the pipeline's planner (MeshOptions::planner), refusing
+/// volumes one by one (SchemePlan::refused_volumes).
 pipeline::Planner planner();
 
 /// MeshOptions with the selector as planner.

@@ -5,6 +5,7 @@
 #include "framework/pipeline/scheme_plan.h"
 #include "framework/scheme/applicability.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct Selection {
   std::vector<Choice> surfaces;  ///< ascending id
   /// Choices changed because the interval assignment was infeasible, in order.
   std::vector<std::string> relaxations;
+  /// With SelectOptions::refuse_per_volume: volumes without a scheme, and why.
+  std::map<int, pipeline::Refusal> refused;
 
   /// The plan the pipeline runs; each entry's details are its candidates'
   /// verdicts (describe()).

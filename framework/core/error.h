@@ -43,16 +43,25 @@ class MeshingError : public std::runtime_error {
   MeshingError(ErrorCode code, EntityRef entity, const std::string& message);
   MeshingError(ErrorCode code, const std::string& message)
       : MeshingError(code, EntityRef::none(), message) {}
+  /// With a hint: what the person can do about it ("use a larger size").
+  MeshingError(ErrorCode code, EntityRef entity, const std::string& message,
+               const std::string& hint)
+      : MeshingError(code, entity, message) {
+    hint_ = hint;
+  }
 
   ErrorCode code() const { return code_; }
   const EntityRef& entity() const { return entity_; }
   /// The message without the entity prefix.
   const std::string& message() const { return message_; }
+  /// What to do about it, one sentence, or "" (not part of what()).
+  const std::string& hint() const { return hint_; }
 
  private:
   ErrorCode code_;
   EntityRef entity_;
   std::string message_;
+  std::string hint_;
 };
 
 }  // namespace cooperage

@@ -16,8 +16,10 @@ const T& at(const std::vector<T>& items, int id, int dim) {
   return items[static_cast<size_t>(id - 1)];
 }
 
+// Broken topology comes from the input (a damaged file), not from a bug here.
 [[noreturn]] void broken(int dim, int id, const std::string& what) {
-  throw MeshingError(ErrorCode::Internal, EntityRef{dim, id}, what);
+  throw MeshingError(ErrorCode::GeometryError, EntityRef{dim, id},
+                     what + "; the B-rep is not valid, repair it in the CAD tool");
 }
 
 }  // namespace
@@ -98,9 +100,9 @@ void Model::validate() const {
   }
   for (const auto& s : surfaces_) {
     if (!s.geometry) broken(2, s.id, "no geometry");
-    if (s.loops.empty()) broken(2, s.id, "no loops");
+    if (s.loops.empty()) broken(2, s.id, "has no boundary loop");
     for (const auto& loop : s.loops) {
-      if (loop.uses.empty()) broken(2, s.id, "empty loop");
+      if (loop.uses.empty()) broken(2, s.id, "has an empty boundary loop");
       for (size_t i = 0; i < loop.uses.size(); ++i) {
         const CurveUse& a = loop.uses[i];
         const CurveUse& b = loop.uses[(i + 1) % loop.uses.size()];
@@ -110,7 +112,7 @@ void Model::validate() const {
         const int a_end = a.sense == Sense::Forward ? ca.end_vertex : ca.start_vertex;
         const int b_start = b.sense == Sense::Forward ? cb.start_vertex : cb.end_vertex;
         if (a_end != b_start)
-          broken(2, s.id, "loop not closed between curves " + std::to_string(a.curve) + " and " +
+          broken(2, s.id, "boundary loop is not closed between curves " + std::to_string(a.curve) + " and " +
                               std::to_string(b.curve));
         const auto& owners = ca.surfaces;
         if (std::find(owners.begin(), owners.end(), s.id) == owners.end())

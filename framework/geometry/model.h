@@ -102,7 +102,9 @@ class Model {
   void set_unit_in_metres(double u) { unit_in_metres_ = u; }
 
   /// Checks ids, back references, loop closure and shell senses; throws
-  /// MeshingError(Internal) naming the first broken entity.
+  /// MeshingError(GeometryError) naming the first broken entity (broken
+  /// topology comes from the input). geom::validate() (validate.h) adds the
+  /// geometric checks.
   void validate() const;
 
  private:

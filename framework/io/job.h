@@ -123,7 +123,12 @@ struct VertexTypeSetting {
 
 struct MeshSettings {
   std::optional<double> size;      ///< global element size
-  int threads = 0;                 ///< 0: all cores
+  int threads = 0;                 ///< 0: all cores (capped at the hardware's)
+  /// Refuse a mesh estimated above this many elements (default 200 M).
+  std::optional<double> max_elements;
+  /// Largest deviation of a meshed volume (area) from the CAD's, as a
+  /// fraction (the journal gives percent); default 0.01.
+  std::optional<double> volume_tolerance;
   std::vector<CurveSetting> curves;
   std::vector<SurfaceSetting> surfaces;
   std::vector<VolumeSetting> volumes;

@@ -3,6 +3,8 @@
 // defined once, and a boolean consumes its inputs.
 #include "framework/io/journal_xml.h"
 
+#include "framework/core/text.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -209,7 +211,7 @@ GeometryOp read_op(const Element& e, const std::string& tag, ShapeTable& shapes)
     }
     if (!known)
       e.fail_at("file", "attribute \"file\" must end in .step, .stp, .iges, .igs or .brep, got \"" +
-                            op.file + "\"");
+                            clip_path(op.file) + "\"");
     return op;
   }
   if (tag == "brick") {

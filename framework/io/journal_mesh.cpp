@@ -20,7 +20,7 @@ class FirstLine {
     auto [it, inserted] = lines_.emplace(key, e.line());
     if (!inserted)
       e.fail(what + " is already set at line " + std::to_string(it->second) +
-             "; give each entity one <" + e.name() + "> element");
+             "; give each entity one <" + e.tag() + "> element");
   }
 
  private:
@@ -130,10 +130,18 @@ VertexTypeSetting read_vertex_type(const Element& e) {
 }  // namespace
 
 MeshSettings read_mesh(const Element& mesh) {
-  mesh.allow_attributes({"size", "threads"});
+  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance"});
   MeshSettings m;
   m.size = mesh.number("size", NumberKind::Positive);
   m.threads = mesh.integer("threads", 0).value_or(0);
+  if (const auto n = mesh.integer("max_elements", 1)) m.max_elements = static_cast<double>(*n);
+  if (const auto t = mesh.number("volume_tolerance", NumberKind::Positive)) {
+    if (*t > 100)
+      mesh.fail_at("volume_tolerance",
+                   "attribute \"volume_tolerance\" is in percent and at most 100, got \"" +
+                       *mesh.text("volume_tolerance") + "\"");
+    m.volume_tolerance = *t / 100.0;
+  }
   m.where = mesh.where();
   FirstLine<int> curves, surfaces, volumes;
   FirstLine<std::pair<int, int>> vertices;

@@ -4,6 +4,7 @@
 #include "framework/io/journal_reader.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 #include "framework/io/journal_xml.h"
 
 #include <tinyxml2.h>
@@ -43,7 +44,8 @@ QualityCheck read_quality(const Element& e) {
   q.max = e.number("max", detail::NumberKind::Any);
   if (!q.min && !q.max) e.fail("needs \"min\", \"max\" or both");
   if (q.min && q.max && *q.min > *q.max)
-    e.fail("\"min\" (" + *e.text("min") + ") is greater than \"max\" (" + *e.text("max") + ")");
+    e.fail("\"min\" (" + clip(*e.text("min")) + ") is greater than \"max\" (" +
+           clip(*e.text("max")) + ")");
   if (e.choice("action", {"warn", "fail"}).value_or(0) == 1) q.action = QualityCheck::Action::Fail;
   q.where = e.where();
   return q;
@@ -57,11 +59,11 @@ ExportSetting read_export(const Element& e) {
                    [&](const std::string& ext) { return ends_with(x.file, ext); }))
     e.fail_at("file", "attribute \"file\" must end in one of " +
                           detail::list(kExportExtensions) + " (the extension picks the format), got \"" +
-                          x.file + "\"");
+                          clip_path(x.file) + "\"");
   x.binary = e.choice("encoding", {"ascii", "binary"}).value_or(0) == 1;
   if (x.binary && !ends_with(x.file, ".vtu") && !ends_with(x.file, ".msh"))
     e.fail_at("encoding", "encoding=\"binary\" is for .vtu and .msh files (Exodus is always "
-                          "binary, Abaqus .inp always text), got \"" + x.file + "\"");
+                          "binary, Abaqus .inp always text), got \"" + clip_path(x.file) + "\"");
   return x;
 }
 
@@ -83,7 +85,7 @@ void read_root(const Element& root, Job& job) {
   const auto version = root.text("version");
   if (!version) root.fail("missing required attribute \"version\" (use version=\"1\")");
   if (*version != "1")
-    root.fail_at("version", "unsupported version \"" + *version + "\"; this release reads version=\"1\"");
+    root.fail_at("version", "unsupported version \"" + clip(*version) + "\"; this release reads version=\"1\"");
 
   std::map<std::string, int> seen;  // section -> line of its first occurrence
   std::string last;                 // the last section read
@@ -124,7 +126,7 @@ void read_root(const Element& root, Job& job) {
       ExportSetting x = read_export(e);
       for (const auto& other : job.exports)
         if (other.file == x.file)
-          e.fail("file \"" + x.file + "\" is already exported at line " +
+          e.fail("file \"" + clip_path(x.file) + "\" is already exported at line " +
                  std::to_string(other.where.line));
       job.exports.push_back(std::move(x));
     }
@@ -139,7 +141,7 @@ void check_root_attributes(const tinyxml2::XMLElement* root, const Element& e) {
     if (name == "version" || name == "xmlns" || name.rfind("xmlns:", 0) == 0 ||
         name.rfind("xsi:", 0) == 0)
       continue;
-    e.fail_at(a->Name(), "unknown attribute \"" + name + "\"" +
+    e.fail_at(a->Name(), "unknown attribute \"" + clip(name, 40) + "\"" +
                              detail::suggestion(name, {"version"}, "\"", "\"") +
                              "; allowed: version (and xmlns/xsi declarations)");
   }
@@ -155,7 +157,7 @@ Job parse_journal(const std::string& xml_text, const std::string& file_name_for_
     // ErrorStr() is "Error=NAME ErrorID=.. Line number=N: detail"; keep NAME and detail.
     std::string detail = doc.ErrorStr();
     const size_t colon = detail.find(": ", detail.find("Line number="));
-    detail = colon == std::string::npos ? std::string() : ": " + detail.substr(colon + 2);
+    detail = colon == std::string::npos ? std::string() : ": " + clip(detail.substr(colon + 2));
     std::string hint;
     if (doc.ErrorID() == tinyxml2::XML_ERROR_MISMATCHED_ELEMENT)
       hint = " (an element opened here is not closed, or closed by the wrong tag)";

@@ -1,6 +1,7 @@
 #include "framework/io/journal_xml.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 
 #include <tinyxml2.h>
 
@@ -54,6 +55,9 @@ std::optional<double> to_number(const std::string& word) {
   double value = 0;
   auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
   if (ec != std::errc() || ptr != last || !std::isfinite(value)) return std::nullopt;
+  // Normal range only: no denormals (4.9e-324 passed as "positive"), nothing
+  // the kernel cannot place (a cylinder at 1e300 hung the boolean).
+  if (value != 0 && (!std::isnormal(value) || std::abs(value) > kMaxMagnitude)) return std::nullopt;
   return value;
 }
 
@@ -68,7 +72,7 @@ std::optional<int> to_integer(const std::string& word) {
 }
 
 bool valid_name(const std::string& s) {
-  if (s.empty()) return false;
+  if (s.empty() || s.size() > kMaxNameLength) return false;
   auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
   if (!alpha(s[0])) return false;
   return std::all_of(s.begin(), s.end(), [&](char c) {
@@ -91,12 +95,14 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-const char* kNumberWords[] = {"a number", "a positive number", "a non-negative number"};
+const char* kNumberWords[] = {"a number between -1e7 and 1e7",
+                              "a positive number between 1e-7 and 1e7",
+                              "a non-negative number up to 1e7"};
 
 }  // namespace
 
 std::string at(const std::string& file, int line) {
-  return file + ":" + std::to_string(line) + ": ";
+  return clip_path(file) + ":" + std::to_string(line) + ": ";
 }
 
 std::string list(const std::vector<std::string>& options, const char* pre, const char* post) {
@@ -126,13 +132,14 @@ Element::Element(const tinyxml2::XMLElement* element, const std::string& file)
     : element_(element), file_(&file) {}
 
 const char* Element::name() const { return element_->Name(); }
+std::string Element::tag() const { return clip(element_->Name(), 40); }
 int Element::line() const { return element_->GetLineNum(); }
 
-SourceLocation Element::where() const { return {*file_, line(), name()}; }
+SourceLocation Element::where() const { return {*file_, line(), tag()}; }
 
 void Element::fail(const std::string& message) const {
   throw MeshingError(ErrorCode::InvalidInput,
-                     at(*file_, line()) + "<" + name() + ">: " + message);
+                     at(*file_, line()) + "<" + tag() + ">: " + message);
 }
 
 void Element::fail_at(const char* attribute, const std::string& message) const {
@@ -140,12 +147,12 @@ void Element::fail_at(const char* attribute, const std::string& message) const {
   for (auto* a = element_->FirstAttribute(); a; a = a->Next())
     if (std::strcmp(a->Name(), attribute) == 0) where_line = a->GetLineNum();
   throw MeshingError(ErrorCode::InvalidInput,
-                     at(*file_, where_line) + "<" + name() + ">: " + message);
+                     at(*file_, where_line) + "<" + tag() + ">: " + message);
 }
 
 void Element::bad_value(const char* attribute, const std::string& expected) const {
   fail_at(attribute, "attribute \"" + std::string(attribute) + "\" must be " + expected +
-                         ", got \"" + element_->Attribute(attribute) + "\"");
+                         ", got \"" + clip(element_->Attribute(attribute)) + "\"");
 }
 
 void Element::allow_attributes(std::initializer_list<const char*> allowed) const {
@@ -153,7 +160,7 @@ void Element::allow_attributes(std::initializer_list<const char*> allowed) const
   for (auto* a = element_->FirstAttribute(); a; a = a->Next()) {
     if (std::find(names.begin(), names.end(), a->Name()) != names.end()) continue;
     const std::string allowed_text = names.empty() ? "none" : list(names);
-    fail_at(a->Name(), "unknown attribute \"" + std::string(a->Name()) + "\"" +
+    fail_at(a->Name(), "unknown attribute \"" + clip(a->Name(), 40) + "\"" +
                            suggestion(a->Name(), names, "\"", "\"") +
                            "; allowed: " + allowed_text);
   }
@@ -163,12 +170,12 @@ void Element::expect_empty() const {
   for (auto* node = element_->FirstChild(); node; node = node->NextSibling()) {
     if (auto* child = node->ToElement())
       throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, child->GetLineNum()) + "<" + name() +
-                             ">: takes no child elements, got <" + child->Name() + ">");
+                         at(*file_, child->GetLineNum()) + "<" + tag() +
+                             ">: takes no child elements, got <" + clip(child->Name(), 40) + ">");
     if (auto* text = node->ToText(); text && !trim(text->Value()).empty())
       throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, text->GetLineNum()) + "<" + name() +
-                             ">: takes no text, got \"" + trim(text->Value()) + "\"");
+                         at(*file_, text->GetLineNum()) + "<" + tag() +
+                             ">: takes no text, got \"" + clip(trim(text->Value())) + "\"");
   }
 }
 
@@ -179,8 +186,8 @@ std::vector<Element> Element::children() const {
       out.emplace_back(child, *file_);
     } else if (auto* text = node->ToText(); text && !trim(text->Value()).empty()) {
       throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, text->GetLineNum()) + "<" + name() +
-                             ">: unexpected text \"" + trim(text->Value()) + "\"");
+                         at(*file_, text->GetLineNum()) + "<" + tag() +
+                             ">: unexpected text \"" + clip(trim(text->Value())) + "\"");
     }
   }
   return out;
@@ -204,7 +211,8 @@ std::string Element::required(const char* attribute) const {
 std::string Element::shape_name(const char* attribute) const {
   const std::string value = required(attribute);
   if (!valid_name(value))
-    bad_value(attribute, "a name (a letter or '_', then letters, digits, '_', '.', '-')");
+    bad_value(attribute, "a name of at most 64 characters (a letter or '_', then letters, "
+                         "digits, '_', '.', '-')");
   return value;
 }
 
@@ -222,7 +230,7 @@ std::optional<double> Element::number(const char* attribute, NumberKind kind) co
   const auto value_text = text(attribute);
   if (!value_text) return std::nullopt;
   const auto value = to_number(trim(*value_text));
-  const bool ok = value && (kind == NumberKind::Any || (kind == NumberKind::Positive && *value > 0) ||
+  const bool ok = value && (kind == NumberKind::Any || (kind == NumberKind::Positive && *value >= kMinPositive) ||
                             (kind == NumberKind::NonNegative && *value >= 0));
   if (!ok) bad_value(attribute, kNumberWords[static_cast<int>(kind)]);
   return value;
@@ -237,10 +245,10 @@ std::optional<int> Element::integer(const char* attribute, int min) const {
   const auto value_text = text(attribute);
   if (!value_text) return std::nullopt;
   const auto value = to_integer(trim(*value_text));
-  if (!value || *value < min)
-    bad_value(attribute, min == 1   ? std::string("a positive integer")
-                         : min == 0 ? std::string("a non-negative integer")
-                                    : "an integer >= " + std::to_string(min));
+  if (!value || *value < min || *value > kMaxInteger)
+    bad_value(attribute, min == 1   ? std::string("a positive integer up to 1e9")
+                         : min == 0 ? std::string("a non-negative integer up to 1e9")
+                                    : "an integer >= " + std::to_string(min) + " up to 1e9");
   return value;
 }
 
@@ -297,7 +305,8 @@ std::optional<Vec3> Element::vector(const char* attribute, VectorKind kind) cons
       if (!v || v->norm() == 0) bad_value(attribute, "a nonzero vector of three numbers \"x y z\"");
       break;
     case VectorKind::Positive:
-      if (!v || v->minCoeff() <= 0) bad_value(attribute, "three positive numbers");
+      if (!v || v->minCoeff() < kMinPositive)
+        bad_value(attribute, "three positive numbers between 1e-7 and 1e7");
       break;
   }
   return v;

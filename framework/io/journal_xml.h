@@ -5,6 +5,7 @@
 
 #include "framework/io/job.h"
 
+#include <cstddef>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -17,6 +18,17 @@ class XMLAttribute;
 
 namespace cooperage::io::detail {
 
+/// Bounds on journal values (issue 21, 3c): numbers are 0 or normal with a
+/// magnitude up to kMaxMagnitude (the kernel works to 1e-7; coordinates of
+/// 1e300 hang it); positive numbers are at least kMinPositive (the kernel's
+/// confusion distance); integers at most kMaxInteger (32-bit sums stay
+/// exact); shape names at most kMaxNameLength characters (names are carried
+/// into every export).
+inline constexpr double kMaxMagnitude = 1e7;
+inline constexpr double kMinPositive = 1e-7;
+inline constexpr int kMaxInteger = 1000000000;
+inline constexpr std::size_t kMaxNameLength = 64;
+
 enum class NumberKind { Any, Positive, NonNegative };
 enum class VectorKind { Any, NonZero, Positive };
 
@@ -26,6 +38,8 @@ class Element {
   Element(const tinyxml2::XMLElement* element, const std::string& file);
 
   const char* name() const;
+  /// The element name for messages: name(), cut to 40 characters.
+  std::string tag() const;
   int line() const;
   SourceLocation where() const;
 
@@ -40,7 +54,8 @@ class Element {
   /// Value of a required attribute, which must not be blank.
   std::string required(const char* attribute) const;
   std::optional<std::string> text(const char* attribute) const;
-  /// A shape name: a letter or '_' then letters, digits, '_', '.', '-'.
+  /// A shape name: a letter or '_' then letters, digits, '_', '.', '-';
+  /// at most kMaxNameLength characters.
   std::string shape_name(const char* attribute) const;
   /// Two or more distinct shape names separated by blanks.
   std::vector<std::string> shape_names(const char* attribute) const;

@@ -7,6 +7,7 @@
 
 #include "framework/core/error.h"
 #include "framework/mesh2d/cdt.h"
+#include "framework/mesh2d/predicates.h"
 #include "framework/mesh2d/refine.h"
 
 namespace cooperage::mesh2d {
@@ -44,6 +45,16 @@ Triangulation2D triangulate(const std::vector<std::vector<Eigen::Vector2d>>& loo
       if (!std::isfinite(loop[i].x()) || !std::isfinite(loop[i].y())) bad_input("non-finite point");
       lo = lo.cwiseMin(loop[i]);
       hi = hi.cwiseMax(loop[i]);
+    }
+    // A loop that turns back on itself (a point between its neighbours'
+    // line and behind the previous one) overlaps itself: exact, in the
+    // input's coordinates (the work frame below is rotated and rounds).
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const auto& a = loop[(i + loop.size() - 1) % loop.size()];
+      const auto& b = loop[i];
+      const auto& c = loop[(i + 1) % loop.size()];
+      if (orient2d(a, b, c) == 0.0 && (b - a).dot(c - b) < 0.0)
+        bad_input("loop " + std::to_string(l) + " turns back on itself at point " + std::to_string(i));
     }
     nb += loop.size();
     area += signed_area(loop);
@@ -122,6 +133,24 @@ Triangulation2D triangulate(const std::vector<std::vector<Eigen::Vector2d>>& loo
   cdt.make_delaunay();
   cdt.canonicalize();
 
+  // Loop of each boundary point, to tell consecutive points of one loop.
+  std::vector<std::pair<size_t, size_t>> where;  // (loop, index in loop)
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (size_t i = 0; i < loops[l].size(); ++i) where.emplace_back(l, i);
+  auto consecutive = [&](const std::array<int, 3>& v) {
+    for (int k = 0; k < 3; ++k) {
+      const auto [l, i] = where[static_cast<size_t>(v[static_cast<size_t>(k)])];
+      const size_t n = loops[l].size();
+      int neighbours = 0;
+      for (int m = 0; m < 3; ++m) {
+        const auto [l2, j] = where[static_cast<size_t>(v[static_cast<size_t>(m)])];
+        neighbours += l2 == l && (j == (i + 1) % n || (j + 1) % n == i);
+      }
+      if (neighbours == 2) return true;  // v[k] sits between the other two
+    }
+    return false;
+  };
+
   Triangulation2D out;
   if (options.refine) {
     size_t cap = options.max_points;
@@ -140,6 +169,16 @@ Triangulation2D triangulate(const std::vector<std::vector<Eigen::Vector2d>>& loo
   for (const detail::Tri& T : cdt.tris) {
     if (!T.inside) continue;
     out.triangles.push_back({T.v[0] - 3, T.v[1] - 3, T.v[2] - 3});
+    // The work frame is rotated, so input points on one line may round to a
+    // sliver there. Three consecutive points of a loop on a straight side
+    // may give one (as before); three others with no area in the input's
+    // own coordinates mean the loops touch (found by
+    // fuzz/fuzz_triangulate.cpp; issue 21).
+    const auto& v = out.triangles.back();
+    if (static_cast<size_t>(std::max({v[0], v[1], v[2]})) < nb && !consecutive(v) &&
+        !(orient2d(out.points[static_cast<size_t>(v[0])], out.points[static_cast<size_t>(v[1])],
+                   out.points[static_cast<size_t>(v[2])]) > 0.0))
+      bad_input("the loops touch (three boundary points on a line form a triangle)");
   }
   return out;
 }

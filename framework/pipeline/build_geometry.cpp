@@ -1,6 +1,7 @@
 #include "framework/pipeline/build_geometry.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/io/journal_reader.h"
 
@@ -58,6 +59,11 @@ void apply(occ::Workbench& bench, const io::GeometryOp& op, const std::string& b
 
 }  // namespace
 
+std::string where_prefix(const io::SourceLocation& where) {
+  if (where.line <= 0) return {};
+  return clip_path(where.file) + ":" + std::to_string(where.line) + ": <" + where.element + ">: ";
+}
+
 std::string resolve_path(const std::string& base_dir, const std::string& path) {
   const std::filesystem::path p(path);
   if (p.is_absolute() || base_dir.empty()) return path;
@@ -67,17 +73,16 @@ std::string resolve_path(const std::string& base_dir, const std::string& path) {
 geom::Model build_geometry(const io::Job& job) {
   if (job.geometry.empty()) {
     throw MeshingError(ErrorCode::InvalidInput,
-                       (job.file.empty() ? std::string("job") : job.file) +
+                       (job.file.empty() ? std::string("job") : clip_path(job.file)) +
                            ": the journal defines no geometry");
   }
   occ::Workbench bench;
+  bench.set_imprint_merge(job.imprint_merge);
   for (const io::GeometryStep& step : job.geometry) {
     try {
       apply(bench, step.op, job.base_dir);
     } catch (const MeshingError& e) {
-      throw MeshingError(e.code(), e.entity(),
-                         step.where.file + ":" + std::to_string(step.where.line) + ": <" +
-                             step.where.element + ">: " + e.message());
+      throw MeshingError(e.code(), e.entity(), where_prefix(step.where) + e.message(), e.hint());
     }
   }
   occ::BuildOptions options;

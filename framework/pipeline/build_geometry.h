@@ -15,6 +15,11 @@ namespace cooperage::pipeline {
 /// failing operation.
 geom::Model build_geometry(const io::Job& job);
 
+/// "job.xml:12: <export>: " for a journal element, "" for a step made on
+/// the command line (line 0): `cooperage mesh part.step` errors name the
+/// file, not a journal that does not exist.
+std::string where_prefix(const io::SourceLocation& where);
+
 /// Reads a model from a CAD file (.step/.stp/.iges/.igs/.brep) or a journal
 /// (.xml, geometry only).
 geom::Model load_any(const std::string& path, bool imprint_merge = true);

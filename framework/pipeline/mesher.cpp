@@ -2,6 +2,8 @@
 
 #include "framework/core/error.h"
 #include "framework/core/log.h"
+#include "framework/core/text.h"
+#include "framework/geometry/validate.h"
 #include "framework/io/export/write_mesh.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/check_settings.h"
@@ -10,14 +12,21 @@
 #include "framework/pipeline/mesh_curves.h"
 #include "framework/report/html_report.h"
 #include "framework/report/report_from_run.h"
+#include "framework/pipeline/mesh_size.h"
+#include "framework/pipeline/partial_mesh.h"
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
+#include <thread>
 
 namespace cooperage::pipeline {
 namespace {
@@ -34,8 +43,8 @@ struct Outcome {
   double seconds = 0;
 };
 
-// Runs `work(id)` for every id, in parallel; results and the first error
-// (by id, not by time) are deterministic.
+// Runs `work(id)` for every id, in parallel; every entity's result or error
+// is kept, in id order, whatever the scheduling.
 template <class Work>
 std::vector<Outcome> for_each_entity(const std::vector<int>& ids, Work work) {
   std::vector<Outcome> out(ids.size());
@@ -45,14 +54,14 @@ std::vector<Outcome> for_each_entity(const std::vector<int>& ids, Work work) {
       out[i].mesh = work(ids[i]);
     } catch (const MeshingError& e) {
       out[i].error = e;
+    } catch (const std::bad_alloc&) {
+      out[i].error = MeshingError(ErrorCode::InvalidInput, EntityRef::none(), "ran out of memory while meshing it",
+                                  "use a larger element size");
     } catch (const std::exception& e) {
       out[i].error = MeshingError(ErrorCode::Internal, e.what());
     }
     out[i].seconds = seconds_since(t0);
   });
-  for (const auto& o : out) {
-    if (o.error) throw *o.error;
-  }
   return out;
 }
 
@@ -60,15 +69,33 @@ void report(const MeshOptions& options, const std::string& stage, size_t done, s
   if (options.progress) options.progress(stage, done, total);
 }
 
-// One stage: mesh every entity of `ids` in parallel, then commit the results
-// in id order (so the node numbering never depends on the thread count).
-template <class MeshOne, class Commit>
+/// Per entity of the run (volume in 3D, surface in 2D): its refusal, if any.
+class Refusals {
+ public:
+  bool refused(int id) const { return refused_.count(id) > 0; }
+  void refuse(int id, ErrorCode code, const std::string& reason, const std::string& hint) {
+    refused_.emplace(id, Verdict{EntityRef{}, Verdict::State::Refused, code, reason, hint});
+  }
+  const std::map<int, Verdict>& all() const { return refused_; }
+
+ private:
+  std::map<int, Verdict> refused_;  // first reason wins
+};
+
+// One stage: mesh every entity of `ids` in parallel, then commit the
+// successes in id order (so the node numbering never depends on the thread
+// count) and hand each failure to `failed`.
+template <class MeshOne, class Commit, class Failed>
 void run_stage(const char* stage, int dim, const std::vector<int>& ids,
                const std::map<int, PlanEntry>& plan, MeshResult& result,
-               const MeshOptions& options, MeshOne mesh_one, Commit commit) {
+               const MeshOptions& options, MeshOne mesh_one, Commit commit, Failed failed) {
   report(options, stage, 0, ids.size());
   auto meshes = for_each_entity(ids, mesh_one);
   for (size_t i = 0; i < ids.size(); ++i) {
+    if (meshes[i].error) {
+      failed(ids[i], *meshes[i].error);
+      continue;
+    }
     for (std::string& w : meshes[i].mesh.warnings) {
       result.warnings.push_back({EntityRef{dim, ids[i]}, std::move(w)});
     }
@@ -91,6 +118,33 @@ void write_reports(const io::Job& job, const MeshOptions& options, RunResult& re
   result.written.insert(result.written.end(), written.begin(), written.end());
 }
 
+std::string percent(double fraction) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g %%", 100.0 * fraction);
+  return buf;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+/// What to do about a volume no scheme fits (issue 16 item 5: an error says
+/// what to do).
+constexpr const char* kNoSchemeHint =
+    "`cooperage plan` gives every scheme's reason; cut the volume with <webcut> or give it a "
+    "sweep hint (<volume sources/targets/direction>)";
+
+/// TBB workers: the request, at most the hardware's (a journal asking for
+/// 2,147,483,647 threads ran out of memory; issue 21).
+std::unique_ptr<tbb::global_control> limit_threads(int requested) {
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int n = requested > 0 ? std::min(requested, hardware) : hardware;
+  return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                               static_cast<size_t>(n));
+}
+
 }  // namespace
 
 std::string Warning::text() const {
@@ -98,30 +152,53 @@ std::string Warning::text() const {
   return who.empty() ? message : who + ": " + message;
 }
 
+bool MeshResult::incomplete() const {
+  return std::any_of(verdicts.begin(), verdicts.end(),
+                     [](const Verdict& v) { return v.state != Verdict::State::Meshed; });
+}
+
+bool RunResult::failed() const { return quality.failed() || mesh.incomplete(); }
+
+IncompleteMesh::IncompleteMesh(const Verdict& first, std::vector<Verdict> verdicts,
+                               const std::string& hint)
+    : MeshingError(first.code, first.entity, first.reason, hint), verdicts_(std::move(verdicts)) {}
+
 MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
                       const scheme::Registry& registry, const MeshOptions& options) {
-  std::unique_ptr<tbb::global_control> threads;
-  if (options.threads > 0) {
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    static_cast<size_t>(options.threads));
-  }
+  const auto threads = limit_threads(options.threads);
   MeshResult result;
   auto stage_start = Clock::now();
   const auto lap = [&](const char* stage) {
     result.stages.push_back({stage, seconds_since(stage_start)});
     stage_start = Clock::now();
   };
-  check_settings(model, settings);
-  report(options, "plan", 0, 1);
   if (!options.planner) {
     throw MeshingError(ErrorCode::Internal,
                        "MeshOptions::planner is not set (use selector::planner())");
   }
-  result.plan = options.planner(model, registry, settings, options.dim);
+  const double max_elements =
+      std::min(options.max_elements.value_or(settings.max_elements.value_or(kDefaultMaxElements)),
+               kMaxElementsCeiling);
+  const double tolerance = options.volume_tolerance.value_or(settings.volume_tolerance.value_or(0.01));
+  const int dim = options.dim;
+
+  geom::validate(model);
+  check_settings(model, settings);
+  // Before planning: the selector solves interval problems already.
+  check_mesh_size(estimate_mesh_size(model, interval_goals(model, settings), dim), max_elements);
+
+  result.volume_tolerance = tolerance;
+  report(options, "plan", 0, 1);
+  result.plan = options.planner(model, registry, settings, dim);
   lap("plan");
   report(options, "intervals", 0, 1);
   result.intervals =
       intervals::solve(build_interval_problem(model, registry, result.plan, settings));
+  {
+    std::map<int, double> counts;
+    for (const auto& [curve, n] : result.intervals.intervals) counts[curve] = n;
+    check_mesh_size(estimate_mesh_size(model, counts, dim), max_elements);
+  }
   lap("intervals");
   report(options, "curves", 0, model.curves().size());
   mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
@@ -131,9 +208,28 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   params.size = settings.size.value_or(1.0);
   params.allow_fallback = options.dim == 2;
 
+  // Verdict entities: volumes in 3D, surfaces in 2D.
+  Refusals refusals;
+  for (const auto& [vid, r] : result.plan.refused_volumes)
+    refusals.refuse(vid, r.code, r.message,
+                    r.hint.empty() && r.code == ErrorCode::NotApplicable ? kNoSchemeHint : r.hint);
+  auto surface_blocked = [&](int sid) {  // every volume it bounds is refused
+    const auto& vols = model.surface(sid).volumes;
+    return dim == 3 && !vols.empty() &&
+           std::all_of(vols.begin(), vols.end(), [&](int v) { return refusals.refused(v); });
+  };
+  auto surface_failed = [&](int sid, const MeshingError& e) {
+    if (dim == 2 || model.surface(sid).volumes.empty()) {
+      refusals.refuse(sid, e.code(), e.message(), e.hint());
+      return;
+    }
+    for (int v : model.surface(sid).volumes)
+      refusals.refuse(v, e.code(), "surface " + std::to_string(sid) + ": " + e.message(), e.hint());
+  };
+
   std::vector<int> surfaces;
   for (const auto& [id, entry] : result.plan.surfaces) {
-    if (entry.scheme != scheme::kMeshedByVolume) surfaces.push_back(id);
+    if (entry.scheme != scheme::kMeshedByVolume && !surface_blocked(id)) surfaces.push_back(id);
   }
   run_stage(
       "surfaces", 2, surfaces, result.plan.surfaces, result, options,
@@ -141,31 +237,113 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         const auto* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
         return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
       },
-      commit_surface);
+      commit_surface, surface_failed);
   lap("surfaces");
 
   std::vector<int> volumes;
-  for (const auto& [id, entry] : result.plan.volumes) volumes.push_back(id);
+  for (const auto& [id, entry] : result.plan.volumes)
+    if (!refusals.refused(id)) volumes.push_back(id);
   run_stage(
       "volumes", 3, volumes, result.plan.volumes, result, options,
       [&](int id) {
         const auto* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
         return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
       },
-      commit_volume);
+      commit_volume, [&](int id, const MeshingError& e) {
+        refusals.refuse(id, e.code(), e.message(), e.hint());
+      });
   lap("volumes");
 
   // Never hand back inverted elements silently.
   result.quality = assess_quality(result.mesh, model, {});
   for (const auto& block : result.quality.blocks) {
     const auto* sj = block.find("scaled_jacobian");
-    if (sj && sj->inverted > 0) {
+    if (!sj || sj->inverted == 0) continue;
+    const int entity = dim == 3 && block.dim == 2 ? (model.surface(block.id).volumes.empty()
+                                                        ? 0
+                                                        : model.surface(block.id).volumes.front())
+                                                  : block.id;
+    if (entity == 0) {  // a free face in a volume run: no verdict entity to carry it
       throw MeshingError(ErrorCode::MeshingFailed, EntityRef{block.dim, block.id},
-                         std::to_string(sj->inverted) + " inverted " +
-                             std::string(quality::to_string(block.type)) +
-                             " elements (minimum scaled Jacobian " + std::to_string(sj->min) +
-                             ")");
+                         std::to_string(sj->inverted) + " inverted elements");
     }
+    refusals.refuse(entity, ErrorCode::MeshingFailed,
+                    (block.dim == 2 && dim == 3 ? "surface " + std::to_string(block.id) + ": "
+                                                : std::string()) +
+                        std::to_string(sj->inverted) + " inverted " +
+                        std::string(quality::to_string(block.type)) +
+                        " elements (minimum scaled Jacobian " + std::to_string(sj->min) + ")",
+                    "");
+  }
+
+  // The meshed volume (area) against the CAD's, for what meshed.
+  std::map<int, std::string> deviates;
+  for (MeasureCheck& m : compare_measures(model, result.mesh)) {
+    if (refusals.refused(m.entity.id)) continue;
+    const double d = m.deviation();
+    const char* what = m.entity.dim == 3 ? "volume" : "area";
+    const std::string text = "its meshed " + std::string(what) + " " + number(m.mesh + m.faceting) +
+                             " deviates " + percent(d) + " from the CAD's " + number(m.cad) +
+                             (m.faceting != 0 ? " (faceting of curved faces credited)" : "");
+    if (d > 0.01) result.warnings.push_back({m.entity, text});
+    if (d > tolerance) deviates[m.entity.id] = text + "; the tolerance is " + percent(tolerance);
+    result.measures.push_back(m);
+  }
+
+  // Verdicts, in id order.
+  std::vector<int> entities;
+  if (dim == 3) {
+    for (const geom::Volume& v : model.volumes()) entities.push_back(v.id);
+  } else {
+    for (const auto& [id, entry] : result.plan.surfaces) entities.push_back(id);
+  }
+  std::set<int> good;
+  const int verdict_dim = dim == 3 ? 3 : 2;
+  for (int id : entities) {
+    Verdict v{EntityRef{verdict_dim, id}, Verdict::State::Meshed, ErrorCode::NotApplicable, "", ""};
+    if (auto it = refusals.all().find(id); it != refusals.all().end()) {
+      v = it->second;
+      v.entity = EntityRef{verdict_dim, id};
+    } else if (auto d = deviates.find(id); d != deviates.end()) {
+      v.state = Verdict::State::Deviates;
+      v.reason = d->second;
+    } else {
+      good.insert(id);
+    }
+    result.verdicts.push_back(std::move(v));
+  }
+
+  const auto first_refused = std::find_if(result.verdicts.begin(), result.verdicts.end(), [](const Verdict& v) {
+    return v.state == Verdict::State::Refused;
+  });
+  if (first_refused != result.verdicts.end() && !options.allow_partial) {
+    if (result.verdicts.size() == 1)
+      throw MeshingError(first_refused->code, first_refused->entity, first_refused->reason,
+                         first_refused->hint);
+    Verdict first = *first_refused;
+    for (const Verdict& v : result.verdicts)
+      if (v.state == Verdict::State::Refused && v.code == ErrorCode::Internal) first.code = v.code;
+    const std::size_t refused = static_cast<std::size_t>(std::count_if(
+        result.verdicts.begin(), result.verdicts.end(),
+        [](const Verdict& v) { return v.state == Verdict::State::Refused; }));
+    const char* kind = verdict_dim == 3 ? "volumes" : "surfaces";
+    const std::string hint =
+        std::to_string(refused) + " of " + std::to_string(result.verdicts.size()) + " " + kind +
+        " could not be meshed" +
+        (good.empty() ? std::string()
+                      : "; --allow-partial writes the " + std::to_string(good.size()) +
+                            " that meshed");
+    throw IncompleteMesh(first, result.verdicts, hint);
+  }
+  if (options.allow_partial && result.incomplete()) {
+    if (good.empty()) {
+      const Verdict& v = first_refused != result.verdicts.end() ? *first_refused : result.verdicts.front();
+      throw MeshingError(v.state == Verdict::State::Refused ? v.code : ErrorCode::MeshingFailed,
+                         v.entity, v.reason.empty() ? "nothing could be meshed" : v.reason, v.hint);
+    }
+    result.mesh = keep_entities(result.mesh, model, dim == 3 ? good : std::set<int>{},
+                                dim == 3 ? std::set<int>{} : good);
+    result.quality = assess_quality(result.mesh, model, {});
   }
   lap("quality");
   return result;
@@ -175,7 +353,26 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
                   const MeshOptions& options) {
   if (!job.mesh) {
     throw MeshingError(ErrorCode::InvalidInput,
-                       job.file + ": the journal has no <mesh> element, so there is nothing to run");
+                       clip_path(job.file) +
+                           ": the journal has no <mesh> element, so there is nothing to run");
+  }
+  // Every target is checked before any work, and no two name one file.
+  std::map<std::string, const io::ExportSetting*> targets;
+  for (const io::ExportSetting& e : job.exports) {
+    const std::string path = resolve_path(job.base_dir, e.file);
+    try {
+      io::check_export_target(path);
+    } catch (const MeshingError& err) {
+      throw MeshingError(err.code(), where_prefix(e.where) + err.message());
+    }
+    std::error_code ec;
+    std::string key = std::filesystem::weakly_canonical(path, ec).string();
+    if (ec) key = path;
+    if (auto [it, fresh] = targets.emplace(key, &e); !fresh)
+      throw MeshingError(ErrorCode::InvalidInput,
+                         where_prefix(e.where) + "\"" + clip_path(e.file) +
+                             "\" is the same file as the export at line " +
+                             std::to_string(it->second->where.line));
   }
   auto stage_start = Clock::now();
   RunResult result{build_geometry(job), {}, {}, {}, false, {}};
@@ -190,20 +387,27 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   result.quality = job.quality.empty() ? result.mesh.quality
                                        : assess_quality(result.mesh.mesh, result.model, job.quality);
   if (!job.quality.empty()) result.stages.push_back({"quality checks", seconds_since(stage_start)});
-  if (result.quality.failed()) {
+  const bool deviates = std::any_of(result.mesh.verdicts.begin(), result.mesh.verdicts.end(),
+                                    [](const Verdict& v) { return v.state == Verdict::State::Deviates; });
+  if (result.quality.failed() || (deviates && !options.allow_partial)) {
     result.exports_skipped = !job.exports.empty();
-  } else {
-    stage_start = Clock::now();
-    for (const io::ExportSetting& e : job.exports) {
-      const std::string path = resolve_path(job.base_dir, e.file);
-      report(options, "export " + e.file, 0, 1);
-      io::ExportOptions export_options;
-      export_options.binary = e.binary;
-      io::write_mesh(path, result.mesh.mesh, result.model, export_options);
-      result.written.push_back(path);
-    }
-    if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});
+    write_reports(job, options, result);
+    return result;
   }
+  stage_start = Clock::now();
+  io::ExportBatch batch;
+  for (const io::ExportSetting& e : job.exports) {
+    report(options, "export " + clip_path(e.file), 0, 1);
+    io::ExportOptions export_options;
+    export_options.binary = e.binary;
+    try {
+      batch.stage(resolve_path(job.base_dir, e.file), result.mesh.mesh, result.model, export_options);
+    } catch (const MeshingError& err) {
+      throw MeshingError(err.code(), err.entity(), where_prefix(e.where) + err.message(), err.hint());
+    }
+  }
+  result.written = batch.commit();
+  if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});
   write_reports(job, options, result);
   return result;
 }

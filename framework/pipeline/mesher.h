@@ -8,11 +8,13 @@
 #include "framework/intervals/solve.h"
 #include "framework/io/job.h"
 #include "framework/mesh/mesh_db.h"
+#include "framework/pipeline/measure_check.h"
 #include "framework/pipeline/quality_report.h"
 #include "framework/pipeline/scheme_plan.h"
 #include "framework/scheme/registry.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,17 @@ using Planner = std::function<SchemePlan(const geom::Model&, const scheme::Regis
 struct MeshOptions {
   Planner planner;  ///< required: selector::planner()
   int dim = 3;      ///< 3: volumes (and their surfaces); 2: surfaces only
-  int threads = 0;  ///< 0: all cores; the result does not depend on it
+  int threads = 0;  ///< 0: all cores (capped at the hardware's); the result does not depend on it
+  /// Refuse before meshing when the estimated element count exceeds this
+  /// (mesh_size.h); unset: MeshSettings::max_elements, else 200 M.
+  std::optional<double> max_elements;
+  /// Largest relative deviation of a volume's meshed volume (a surface's
+  /// area) from the CAD's before the run fails (measure_check.h); unset:
+  /// MeshSettings::volume_tolerance, else 0.01. Above 0.01 it is a warning.
+  std::optional<double> volume_tolerance;
+  /// Keep what meshed when some volumes (surfaces, in 2D) cannot be meshed
+  /// or fail the volume check, instead of throwing; see MeshResult::verdicts.
+  bool allow_partial = false;
   /// Called as work advances: stage name, items done, items in the stage.
   std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
 };
@@ -54,18 +66,56 @@ struct Warning {
   std::string text() const;
 };
 
+/// What became of one volume (3D) or surface (surface meshes).
+struct Verdict {
+  enum class State {
+    Meshed,   ///< meshed and within the volume tolerance
+    Refused,  ///< no scheme, a scheme failed, or inverted elements
+    Deviates, ///< meshed, but its volume (area) is off the CAD's beyond the tolerance
+  };
+  EntityRef entity;
+  State state = State::Meshed;
+  ErrorCode code = ErrorCode::NotApplicable;  ///< Refused: why, as an error code
+  std::string reason;  ///< Refused / Deviates: one sentence, no entity prefix
+  std::string hint;    ///< Refused: what to do, or ""
+};
+
 struct MeshResult {
   SchemePlan plan;
   intervals::IntervalSolution intervals;
+  /// The mesh; with allow_partial, only the entities whose verdict is Meshed.
   mesh::MeshDB mesh;
   std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
   QualityReport quality;              ///< scaled Jacobian per block (no journal checks)
   std::vector<Warning> warnings;      ///< in stage order, then by entity id
   std::vector<StageTime> stages;      ///< plan, intervals, curves, surfaces, volumes, quality
+  std::vector<Verdict> verdicts;      ///< every volume (3D) or surface (2D), by id
+  std::vector<MeasureCheck> measures; ///< meshed volume / area against the CAD's
+  double volume_tolerance = 0.01;     ///< the tolerance the verdicts used
+
+  /// True when some verdict is not Meshed (a partial or failed result).
+  bool incomplete() const;
 };
 
-/// Meshes a model. Throws MeshingError naming the entity on any failure,
-/// including inverted volume elements (never returned silently).
+/// Thrown by mesh_model when some volumes of a model with several cannot be
+/// meshed and allow_partial is off: the first refusal's entity, code and
+/// reason, and every verdict, so a report can list them all.
+class IncompleteMesh : public MeshingError {
+ public:
+  IncompleteMesh(const Verdict& first, std::vector<Verdict> verdicts, const std::string& hint);
+  const std::vector<Verdict>& verdicts() const { return verdicts_; }
+
+ private:
+  std::vector<Verdict> verdicts_;
+};
+
+/// Meshes a model. Every model is validated first (geom::validate) and its
+/// size estimated against the element limit. Inverted elements are never
+/// returned. A failure of a single-volume (single-surface) model throws
+/// MeshingError naming the entity; in an assembly every volume gets a
+/// verdict, and unless allow_partial, any refusal throws IncompleteMesh.
+/// A volume deviating beyond the tolerance does not throw: its verdict is
+/// Deviates (the caller fails the run, or drops it with allow_partial).
 MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
                       const scheme::Registry& registry, const MeshOptions& options = {});
 
@@ -74,14 +124,20 @@ struct RunResult {
   MeshResult mesh;
   QualityReport quality;
   std::vector<std::string> written;  ///< export files written
-  bool exports_skipped = false;      ///< a failing quality check stopped them
+  bool exports_skipped = false;      ///< a failing check stopped them
   std::vector<StageTime> stages;     ///< geometry, the mesher's stages, checks, exports
+
+  /// A quality check or the volume check failed, or (allow_partial) some
+  /// volumes were left out: the command exits 1.
+  bool failed() const;
 };
 
-/// A whole journal: geometry, meshing, quality checks, exports (written only
-/// when no check with action="fail" fails; each file is written atomically),
-/// then the HTML reports of job.reports (written also when a check failed,
-/// to show why; framework/report/html_report.h).
+/// A whole journal: geometry, meshing, quality checks, exports, then the HTML
+/// reports of job.reports (framework/report/html_report.h; written also when
+/// a check failed, to show why). Every export target is checked before the
+/// geometry is built (an error names its <export> line); exports are written
+/// only when no check fails (with allow_partial: for the volumes that
+/// meshed), all of them or none (io::ExportBatch).
 RunResult run_job(const io::Job& job, const scheme::Registry& registry,
                   const MeshOptions& options = {});
 

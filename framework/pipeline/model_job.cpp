@@ -1,6 +1,7 @@
 #include "framework/pipeline/model_job.h"
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 #include "framework/core/error.h"
@@ -11,15 +12,18 @@
 namespace cooperage::pipeline {
 
 io::Job model_job(const std::string& model, const ModelJobOptions& options) {
-  if (!(options.size > 0)) {
+  if (!(options.size > 0) || !std::isfinite(options.size)) {
     throw MeshingError(ErrorCode::InvalidInput, options.origin +
-                                                    ": the element size must be positive, got " +
+                                                    ": the element size must be a positive number, got " +
                                                     std::to_string(options.size));
   }
   io::Job job;
   job.file = model;
   io::ImportOp import;
-  import.name = std::filesystem::path(model).stem().string();
+  // The shape's name (and so the volumes' names in the exports) is the file
+  // name, bounded like a journal name.
+  import.name = std::filesystem::path(model).stem().string().substr(0, 64);
+  if (import.name.empty()) import.name = "part";
   import.file = model;
   job.geometry.push_back({import, {model, 0, "import"}});
   job.imprint_merge = options.imprint_merge;

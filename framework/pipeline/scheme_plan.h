@@ -1,6 +1,8 @@
 // Which scheme meshes each volume and surface, and why (the selector's output).
 #pragma once
 
+#include "framework/core/error.h"
+
 #include <map>
 #include <string>
 #include <vector>
@@ -15,9 +17,19 @@ struct PlanEntry {
   std::vector<std::string> details;
 };
 
+/// Why the planner found no scheme for an entity.
+struct Refusal {
+  ErrorCode code = ErrorCode::NotApplicable;
+  std::string message;  ///< without the entity prefix
+  std::string hint;     ///< what to do, or ""
+};
+
 struct SchemePlan {
   std::map<int, PlanEntry> volumes;   ///< volume id -> volume scheme
   std::map<int, PlanEntry> surfaces;  ///< surface id -> surface scheme
+  /// Volumes no scheme can mesh (a planner may refuse volumes one by one
+  /// instead of failing the whole plan; the pipeline reports each).
+  std::map<int, Refusal> refused_volumes;
 };
 
 }  // namespace cooperage::pipeline

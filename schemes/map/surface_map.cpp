@@ -5,6 +5,7 @@
 #include "schemes/map/tfi.h"
 
 #include <algorithm>
+#include <limits>
 #include <unordered_map>
 
 namespace cooperage::map {
@@ -111,9 +112,16 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
     local_of_global.emplace(global, local);
     return local;
   };
+  // Node counts in size_t: (n + 1) * (m + 1) overflows int at 65,535 x
+  // 65,536 intervals (issue 21); local node ids are int, so refuse beyond.
+  const size_t grid_nodes = (static_cast<size_t>(n) + 1) * (static_cast<size_t>(m) + 1);
+  if (grid_nodes > static_cast<size_t>(std::numeric_limits<int>::max()))
+    fail(sid, std::to_string(n) + " x " + std::to_string(m) + " intervals are more than a mesh can hold");
   const geom::SurfaceGeometry& geometry = *view.surface().geometry;
-  std::vector<int> local(static_cast<size_t>((n + 1) * (m + 1)));
-  auto at = [&](int i, int j) -> int& { return local[static_cast<size_t>(i * (m + 1) + j)]; };
+  std::vector<int> local(grid_nodes);
+  auto at = [&](int i, int j) -> int& {
+    return local[static_cast<size_t>(i) * (static_cast<size_t>(m) + 1) + static_cast<size_t>(j)];
+  };
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= m; ++j) {
       const size_t ui = static_cast<size_t>(i), uj = static_cast<size_t>(j);
@@ -124,7 +132,7 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
       else at(i, j) = out.add(geometry.project(grid(i, j)).point);
     }
   }
-  out.quads.reserve(static_cast<size_t>(n * m));
+  out.quads.reserve(static_cast<size_t>(n) * static_cast<size_t>(m));
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < m; ++j) {
       out.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});

@@ -25,7 +25,7 @@ Grid2 tfi_2d(const std::vector<Vec3>& bottom, const std::vector<Vec3>& top,
   Grid2 g;
   g.n = static_cast<int>(bottom.size()) - 1;
   g.m = static_cast<int>(left.size()) - 1;
-  g.at.assign(static_cast<size_t>((g.n + 1) * (g.m + 1)), Vec3::Zero());
+  g.at.assign((static_cast<size_t>(g.n) + 1) * (static_cast<size_t>(g.m) + 1), Vec3::Zero());
   const std::vector<double> fb = arc_fractions(bottom), ft = arc_fractions(top);
   const std::vector<double> fl = arc_fractions(left), fr = arc_fractions(right);
   const Vec3& p00 = bottom.front();

@@ -24,8 +24,12 @@ struct Grid2 {
   int n = 0;
   int m = 0;
   std::vector<Vec3> at;
-  Vec3& operator()(int i, int j) { return at[static_cast<size_t>(i * (m + 1) + j)]; }
-  const Vec3& operator()(int i, int j) const { return at[static_cast<size_t>(i * (m + 1) + j)]; }
+  // size_t arithmetic: i * (m + 1) overflows int at 65,535 x 65,536 (issue 21).
+  size_t index(int i, int j) const {
+    return static_cast<size_t>(i) * (static_cast<size_t>(m) + 1) + static_cast<size_t>(j);
+  }
+  Vec3& operator()(int i, int j) { return at[index(i, j)]; }
+  const Vec3& operator()(int i, int j) const { return at[index(i, j)]; }
 };
 
 /// 2D TFI of a grid from its four sides, all given in increasing i or j:

@@ -93,6 +93,7 @@ void Workbench::webcut(const std::string& shape, const Vec3& origin, const Vec3&
   if (!target) detail::invalid(shape, "no such shape");
   const gp_Dir dir = detail::checked_dir(shape, normal, "webcut normal");
   if (!origin.allFinite()) detail::invalid(shape, "webcut origin must be finite");
+  target->merged.Nullify();
   target->shape = detail::guarded(ErrorCode::GeometryError, "shape '" + shape + "': webcut", [&] {
     Bnd_Box box;
     BRepBndLib::Add(target->shape, box);

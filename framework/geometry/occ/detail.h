@@ -29,6 +29,11 @@ using geom::Vec2;
 struct NamedShape {
   std::string name;
   TopoDS_Shape shape;
+  /// Imports only: the shape's solids and free faces imprinted and merged
+  /// among themselves (a compound, solids first), made in the import's child
+  /// process. build_model uses it instead of imprinting again when this is
+  /// the only shape; any change to `shape` clears it.
+  TopoDS_Shape merged;
 };
 
 struct Workbench::Impl {
@@ -37,6 +42,8 @@ struct Workbench::Impl {
   double unit_in_metres = 0.0;
   /// OCCT name of that unit ("MM", "INCH", ...), used when writing STEP.
   std::string unit_name = "MM";
+  /// Whether build_model will imprint and merge (imports merge in their child).
+  bool merge_on_import = true;
 
   NamedShape* find(const std::string& name);
   const NamedShape* find(const std::string& name) const;
@@ -103,6 +110,16 @@ void check_in_plane(const std::string& shape, const std::vector<Vec3>& pts, cons
 TopoDS_Wire polygon_wire(const std::vector<Vec3>& pts);
 /// Throws GeometryError unless s is non-null and passes BRepCheck_Analyzer.
 void check_valid(const std::string& shape, const TopoDS_Shape& s);
+
+/// Workbench::build_model over any list of named shapes (model_builder.cpp):
+/// collect, imprint and merge when asked, number, validate (geom::validate).
+geom::Model build_model_of(const std::vector<NamedShape>& shapes, const BuildOptions& options,
+                           double unit_in_metres);
+
+/// The solids and free faces of one shape imprinted and merged among
+/// themselves, as build_model_of would (a compound, solids then faces, in
+/// the order build_model_of numbers them).
+TopoDS_Shape merge_alone(const TopoDS_Shape& shape);
 
 /// True when the shape holds at least one sub-shape of the given type.
 bool contains_solid(const TopoDS_Shape& shape);

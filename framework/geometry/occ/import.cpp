@@ -1,11 +1,24 @@
 // Workbench::import_file: STEP, IGES and BREP, keeping the file's length
 // unit, with optional shape healing. Every failure becomes a MeshingError
 // naming the file; corrupt input never escapes as a kernel exception.
+//
+// The kernel's readers are not safe on damaged files: they dereference null
+// handles (SIGSEGV) and loop at a truncated end (issue 21: 79 crashes and
+// 25 hangs in 800 mutated files). Signal handlers cannot make that safe (a
+// fault leaves the kernel's state half-updated, and a loop raises nothing),
+// so the file is read in a forked child with a time and memory limit
+// (framework/core/isolate.h). The child reads, heals, checks that the model
+// can be built and is valid, and sends the shape back in OCCT's binary
+// format, which round-trips exactly; the parent never runs the readers.
+#include "framework/core/isolate.h"
+#include "framework/core/text.h"
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/validate.h"
 
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
+#include <BinTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
@@ -17,12 +30,16 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Shell.hxx>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace cooperage::occ {
 namespace {
@@ -138,6 +155,73 @@ TopoDS_Shape solidify(const TopoDS_Shape& shape) {
   return any ? TopoDS_Shape(out) : shape;
 }
 
+/// Which reader a file needs, from its extension.
+enum class CadKind { Step, Iges, Brep };
+
+/// The child's work: read, heal, solidify; imprint and merge the file's own
+/// solids when the model will be merged; build and validate the model of the
+/// result as the parent will (so that a kernel fault in any of these steps
+/// happens here, not in the parent); then serialise the unit and the shapes
+/// (one compound: the shape, then its merged pieces, sharing what they share).
+void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge, std::string& out) {
+  Unit unit{"MM", 1e-3};
+  const TopoDS_Shape shape = detail::guarded(ErrorCode::ParseError, path, [&] {
+    TopoDS_Shape s = kind == CadKind::Step   ? read_step(path, unit)
+                     : kind == CadKind::Iges ? read_iges(path, unit)
+                                             : read_brep(path);
+    if (s.IsNull()) parse_error(path, "the file holds no shape");
+    BRepLib::BuildCurves3d(s);
+    if (heal) {
+      ShapeFix_Shape fix(s);
+      fix.Perform();
+      s = fix.Shape();
+    }
+    s = solidify(s);
+    if (!detail::contains_solid(s)) parse_error(path, "the file holds no solids");
+    return s;
+  });
+  TopoDS_Shape merged;
+  if (merge) {
+    merged = detail::guarded(ErrorCode::GeometryError, path + ": imprint and merge",
+                             [&] { return detail::merge_alone(shape); });
+  }
+  // A MeshingError from the trial reaches the parent the same way when it
+  // builds; only faults must stay here.
+  try {
+    (void)detail::build_model_of({NamedShape{"part", merge ? merged : shape, {}}},
+                                 BuildOptions{false}, 0.0);
+  } catch (const MeshingError&) {
+  }
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, shape);
+  if (merge) builder.Add(both, merged);
+  std::ostringstream bytes(std::ios::binary);
+  BinTools::Write(both, bytes, Standard_False, Standard_False, BinTools_FormatVersion_CURRENT);
+  char header[96];
+  std::snprintf(header, sizeof header, "%s %.17g\n", unit.occt, unit.metres);
+  out = header + bytes.str();
+}
+
+/// Time and memory the child may take: generous for real files (30 s plus
+/// 10 s per MB; 4 GB plus 100 times the file), bounded for damaged ones.
+/// COOPERAGE_CAD_TIMEOUT (seconds) overrides the time.
+IsolationLimits limits_for(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const double mb = ec ? 0.0 : static_cast<double>(size) / 1e6;
+  IsolationLimits limits;
+  limits.seconds = 30.0 + 10.0 * mb;
+  if (const char* env = std::getenv("COOPERAGE_CAD_TIMEOUT")) {
+    char* end = nullptr;
+    const double s = std::strtod(env, &end);
+    if (end != env && s > 0 && s < 1e6) limits.seconds = s;
+  }
+  limits.memory_bytes = static_cast<std::size_t>(4e9 + 100.0 * mb * 1e6);
+  return limits;
+}
+
 }  // namespace
 
 void Workbench::import_file(const std::string& name, const std::string& path, bool heal) {
@@ -154,25 +238,37 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
   const bool brep = ext == ".brep" || ext == ".brp";
   if (!step && !iges && !brep)
     throw MeshingError(ErrorCode::InvalidInput,
-                       path + ": unknown CAD file extension '" + ext +
+                       path + ": unknown CAD file extension '" + clip(ext, 16) +
                            "' (expected .step, .stp, .iges, .igs or .brep)");
+  const CadKind kind = step ? CadKind::Step : iges ? CadKind::Iges : CadKind::Brep;
 
+  const IsolationLimits limits = limits_for(path);
+  const IsolatedRun run =
+      run_isolated([&](std::string& out) { read_in_child(path, kind, heal, impl_->merge_on_import, out); },
+                   limits);
+  if (run.outcome == IsolatedRun::Outcome::Failed) throw MeshingError(run.code, run.payload);
+  if (run.outcome != IsolatedRun::Outcome::Done)
+    throw MeshingError(ErrorCode::ParseError,
+                       path + ": the CAD kernel could not read it (" + run.describe(limits) + ")");
+
+  // "<unit name> <metres>\n" then the binary shape, both from our child.
+  const std::size_t eol = run.payload.find('\n');
   Unit unit{"MM", 1e-3};
-  bool has_unit = !brep;
-  const TopoDS_Shape shape = detail::guarded(ErrorCode::ParseError, path, [&] {
-    TopoDS_Shape s = step ? read_step(path, unit) : iges ? read_iges(path, unit) : read_brep(path);
-    if (s.IsNull()) parse_error(path, "the file holds no shape");
-    BRepLib::BuildCurves3d(s);
-    if (heal) {
-      ShapeFix_Shape fix(s);
-      fix.Perform();
-      s = fix.Shape();
-    }
-    s = solidify(s);
-    if (!detail::contains_solid(s)) parse_error(path, "the file holds no solids");
-    return s;
+  char unit_name[16] = {0};
+  if (eol == std::string::npos ||
+      std::sscanf(run.payload.substr(0, eol).c_str(), "%15s %lf", unit_name, &unit.metres) != 2 ||
+      !unit_from_name(unit_name, unit))
+    throw MeshingError(ErrorCode::Internal, path + ": the import child sent a malformed header");
+  TopoDS_Shape both, shape, merged;
+  detail::guarded(ErrorCode::Internal, path, [&] {
+    std::istringstream bytes(run.payload.substr(eol + 1), std::ios::binary);
+    BinTools::Read(both, bytes);
   });
-  if (has_unit) {
+  int k = 0;
+  for (TopoDS_Iterator it(both); it.More(); it.Next(), ++k) (k == 0 ? shape : merged) = it.Value();
+  if (shape.IsNull())
+    throw MeshingError(ErrorCode::Internal, path + ": the import child sent no shape");
+  if (!brep) {
     if (impl_->unit_in_metres > 0.0 && std::abs(impl_->unit_in_metres - unit.metres) > 1e-12)
       throw MeshingError(ErrorCode::InvalidInput,
                          path + ": its length unit differs from a file imported before");
@@ -180,6 +276,7 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
     impl_->unit_name = unit.occt;
   }
   impl_->add(name, shape);
+  impl_->find(name)->merged = merged;
 }
 
 }  // namespace cooperage::occ

@@ -12,6 +12,7 @@
 // normal; its wires, explored from that oriented face, run with the material
 // on the left seen against that normal (OCCT's convention).
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/validate.h"
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepBndLib.hxx>
@@ -19,7 +20,9 @@
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <TopoDS_Compound.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
@@ -247,19 +250,46 @@ class Numbering {
 
 }  // namespace
 
-geom::Model Workbench::build_model(const BuildOptions& options) const {
+namespace detail {
+
+TopoDS_Shape merge_alone(const TopoDS_Shape& shape) {
+  std::vector<Piece> solids, faces;
+  collect({NamedShape{"", shape, {}}}, solids, faces);
+  imprint_merge(solids, faces);
+  TopoDS_Compound out;
+  BRep_Builder b;
+  b.MakeCompound(out);
+  for (const auto& p : solids) b.Add(out, p.shape);
+  for (const auto& p : faces) b.Add(out, p.shape);
+  return out;
+}
+
+geom::Model build_model_of(const std::vector<NamedShape>& shapes, const BuildOptions& options,
+                           double unit_in_metres) {
   silence_kernel_output();
-  return detail::guarded(ErrorCode::GeometryError, "building the model", [&] {
+  return guarded(ErrorCode::GeometryError, "building the model", [&] {
     std::vector<Piece> solids, faces;
-    collect(impl_->shapes, solids, faces);
+    // A lone import merged in its child: the same pieces, in the same order.
+    const bool premerged = options.imprint_merge && shapes.size() == 1 && !shapes[0].merged.IsNull();
+    if (premerged) {
+      collect({NamedShape{shapes[0].name, shapes[0].merged, {}}}, solids, faces);
+    } else {
+      collect(shapes, solids, faces);
+    }
     if (solids.empty() && faces.empty())
       throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
-    if (options.imprint_merge) imprint_merge(solids, faces);
-    geom::Model model = Numbering().build(solids, faces, impl_->shapes);
-    if (impl_->unit_in_metres > 0.0) model.set_unit_in_metres(impl_->unit_in_metres);
-    model.validate();
+    if (options.imprint_merge && !premerged) imprint_merge(solids, faces);
+    geom::Model model = Numbering().build(solids, faces, shapes);
+    if (unit_in_metres > 0.0) model.set_unit_in_metres(unit_in_metres);
+    geom::validate(model);
     return model;
   });
+}
+
+}  // namespace detail
+
+geom::Model Workbench::build_model(const BuildOptions& options) const {
+  return detail::build_model_of(impl_->shapes, options, impl_->unit_in_metres);
 }
 
 }  // namespace cooperage::occ

@@ -38,7 +38,7 @@ void Workbench::Impl::check_new_name(const std::string& name) const {
 }
 void Workbench::Impl::add(const std::string& name, const TopoDS_Shape& shape) {
   check_new_name(name);
-  shapes.push_back({name, shape});
+  shapes.push_back({name, shape, {}});
 }
 void Workbench::Impl::remove(const std::string& name) {
   shapes.erase(std::remove_if(shapes.begin(), shapes.end(),
@@ -79,11 +79,14 @@ std::vector<std::string> Workbench::names() const {
 
 bool Workbench::has(const std::string& name) const { return impl_->find(name) != nullptr; }
 
+void Workbench::set_imprint_merge(bool merge) { impl_->merge_on_import = merge; }
+
 namespace {
 
 void apply(Workbench::Impl& impl, const std::string& name, const gp_Trsf& trsf) {
   NamedShape* s = impl.find(name);
   if (!s) detail::invalid(name, "no such shape");
+  s->merged.Nullify();
   s->shape = detail::guarded(ErrorCode::GeometryError, "shape '" + name + "': transform", [&] {
     BRepBuilderAPI_Transform t(s->shape, trsf, /*copy=*/Standard_True);
     if (!t.IsDone()) detail::invalid(name, "transform failed");
@@ -122,6 +125,7 @@ geom::Model load_model(const std::string& path, const BuildOptions& options) {
   Workbench wb;
   std::string name = std::filesystem::path(path).stem().string();
   if (name.empty()) name = "part";
+  wb.set_imprint_merge(options.imprint_merge);
   wb.import_file(name, path);
   return wb.build_model(options);
 }

@@ -35,8 +35,17 @@ class Workbench {
 
   /// STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep); the file's length
   /// unit is kept (no conversion to mm). `heal` runs shape healing for small
-  /// tolerance defects.
+  /// tolerance defects. The kernel reads the file in a child process with a
+  /// time and memory limit (30 s + 10 s per MB, or $COOPERAGE_CAD_TIMEOUT
+  /// seconds): a crash or a hang there is a ParseError "<file>: the CAD
+  /// kernel could not read it (...)". The child also builds and validates
+  /// the model of the file's shape, so a fault there stays in the child too.
   void import_file(const std::string& name, const std::string& path, bool heal = true);
+
+  /// Tells imports whether build_model will imprint and merge (default: it
+  /// will). With true, an import merges its own solids in its child process,
+  /// and build_model reuses that when the import is the only shape.
+  void set_imprint_merge(bool merge);
 
   void brick(const std::string& name, const Vec3& origin, const Vec3& size);
   void cylinder(const std::string& name, const Vec3& base, const Vec3& axis, double radius,

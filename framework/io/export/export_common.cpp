@@ -6,15 +6,25 @@
 #include "framework/quality/wedge_metrics.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
+#include <filesystem>
 #include <limits>
+#include <streambuf>
+
+#include <fcntl.h>
+#include <sys/random.h>
 #include <unistd.h>
 
 namespace cooperage::io::detail {
@@ -83,34 +93,108 @@ bool has_volume_elements(const mesh::MeshDB& db) {
   return false;
 }
 
-std::string temp_path_for(const std::string& path) {
-  return path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+namespace {
+
+/// 64 unpredictable bits (getrandom; the clock and a counter if it fails).
+std::uint64_t random_bits() {
+  std::uint64_t v = 0;
+  if (::getrandom(&v, sizeof v, GRND_NONBLOCK) == static_cast<ssize_t>(sizeof v)) return v;
+  static std::atomic<std::uint64_t> counter{0};
+  const auto t = static_cast<std::uint64_t>(
+      std::chrono::high_resolution_clock::now().time_since_epoch().count());
+  return t * 0x9E3779B97F4A7C15ull ^ (counter++ << 32) ^ static_cast<std::uint64_t>(::getpid());
 }
 
-void remove_temp_file(const std::string& tmp) noexcept { std::remove(tmp.c_str()); }
+/// An ostream over a file descriptor it owns; every write is checked.
+class FdBuffer : public std::streambuf {
+ public:
+  explicit FdBuffer(int fd) : fd_(fd) { setp(buf_, buf_ + sizeof buf_); }
+  ~FdBuffer() override { close(); }
+  /// Flushes and closes; false when any write or the close failed.
+  bool close() {
+    if (fd_ < 0) return ok_;
+    ok_ = flush_buffer() && ok_;
+    ok_ = ::close(fd_) == 0 && ok_;
+    fd_ = -1;
+    return ok_;
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!flush_buffer()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return flush_buffer() ? 0 : -1; }
+
+ private:
+  bool flush_buffer() {
+    const char* p = pbase();
+    std::size_t left = static_cast<std::size_t>(pptr() - pbase());
+    while (left > 0 && ok_) {
+      const ssize_t n = ::write(fd_, p, left);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) ok_ = false;
+      else {
+        p += n;
+        left -= static_cast<std::size_t>(n);
+      }
+    }
+    setp(buf_, buf_ + sizeof buf_);
+    return ok_;
+  }
+
+  int fd_;
+  bool ok_ = true;
+  char buf_[1 << 16];
+};
+
+}  // namespace
+
+std::string temp_path_for(const std::string& path) {
+  const std::filesystem::path p(path);
+  std::string name = p.filename().string().substr(0, 32);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(random_bits()));
+  return (p.parent_path() / ("." + name + "." + hex + ".tmp")).string();
+}
+
+void remove_temp_file(const std::string& tmp) noexcept { ::unlink(tmp.c_str()); }
 
 void commit_temp_file(const std::string& tmp, const std::string& path) {
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
     remove_temp_file(tmp);
     throw MeshingError(ErrorCode::FileNotFound,
-                       "cannot rename '" + tmp + "' to '" + path + "'");
+                       "cannot write '" + clip_path(path) + "' (" + std::strerror(err) + ")");
   }
 }
 
 void write_text_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write) {
-  const std::string tmp = temp_path_for(path);
+  std::string tmp;
+  int fd = -1;
+  for (int attempt = 0; attempt < 8 && fd < 0; ++attempt) {
+    tmp = temp_path_for(path);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0 && errno != EEXIST) break;
+  }
+  if (fd < 0) {
+    const int err = errno;
+    throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + clip_path(path) + "' (" +
+                                                    std::strerror(err) + ")");
+  }
   try {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw MeshingError(ErrorCode::FileNotFound, "cannot create '" + tmp +
-                                                      "' (does the directory exist?)");
-    }
+    FdBuffer buffer(fd);
+    std::ostream out(&buffer);
     write(out);
     out.flush();
-    if (!out) throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + tmp + "'");
-    out.close();
-    if (out.fail()) throw MeshingError(ErrorCode::FileNotFound, "cannot close '" + tmp + "'");
+    if (!out || !buffer.close())
+      throw MeshingError(ErrorCode::FileNotFound,
+                         "cannot write '" + clip_path(path) + "' (the disk may be full)");
   } catch (...) {
     remove_temp_file(tmp);
     throw;
@@ -267,11 +351,11 @@ std::string volume_label(const geom::Model& model, int volume_id) {
     }
     return s;
   };
-  const std::string own = clean(model.volume(volume_id).name);
+  const std::string own = clean(model.volume(volume_id).name.substr(0, kMaxLabelLength));
   const std::string fallback = "V" + std::to_string(volume_id);
   if (own.empty() || !std::isalpha(static_cast<unsigned char>(own[0]))) return fallback;
   for (const auto& v : model.volumes()) {
-    if (v.id != volume_id && clean(v.name) == own) return fallback;
+    if (v.id != volume_id && clean(v.name.substr(0, kMaxLabelLength)) == own) return fallback;
   }
   return own;
 }

@@ -25,7 +25,11 @@ void validate_mesh(const mesh::MeshDB& db, const geom::Model& model);
 /// True when the mesh has at least one hex or wedge.
 bool has_volume_elements(const mesh::MeshDB& db);
 
-/// "<path>.tmp-<pid>": the temporary file a writer fills before renaming.
+/// A fresh, unpredictable name for the temporary file a writer fills before
+/// renaming: "<dir>/.<name>.<16 random hex digits>.tmp" in the directory of
+/// `path` (so the rename stays on one file system). Unpredictable so that
+/// nobody can plant a link under it in a shared directory (issue 21: the
+/// old "<path>.tmp-<pid>" could be guessed).
 std::string temp_path_for(const std::string& path);
 
 /// Renames `tmp` over `path`; throws MeshingError(FileNotFound) on failure
@@ -35,10 +39,11 @@ void commit_temp_file(const std::string& tmp, const std::string& path);
 /// Removes `tmp` if it exists; never throws.
 void remove_temp_file(const std::string& tmp) noexcept;
 
-/// Opens "<path>.tmp-<pid>", lets `write` fill it, checks the stream, and
-/// renames it to `path`. Any failure (including an exception from `write`)
-/// removes the temporary file and throws MeshingError, leaving an existing
-/// `path` untouched.
+/// Creates temp_path_for(path) exclusively (O_CREAT | O_EXCL | O_NOFOLLOW:
+/// never an existing file, never through a link), lets `write` fill it,
+/// checks every write, and renames it to `path`. Any failure (including an
+/// exception from `write`) removes the temporary file and throws
+/// MeshingError, leaving an existing `path` untouched.
 void write_text_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write);
 
@@ -101,8 +106,11 @@ double scaled_jacobian(const mesh::Quad& q, const std::vector<geom::Vec3>& x);
 double scaled_jacobian(const mesh::Tri& t, const std::vector<geom::Vec3>& x);
 
 /// A name usable as an identifier in the output formats: the volume name with
-/// characters other than [A-Za-z0-9_] replaced by '_', or "V<id>" when the
-/// volume has no name or its name is used by another volume.
+/// characters other than [A-Za-z0-9_] replaced by '_' and cut to
+/// kMaxLabelLength characters, or "V<id>" when the volume has no name or its
+/// label is used by another volume. Bounded so that a 100 KB shape name is
+/// not carried into every export (issue 21, 3c).
+inline constexpr std::size_t kMaxLabelLength = 32;
 std::string volume_label(const geom::Model& model, int volume_id);
 
 }  // namespace cooperage::io::detail

@@ -58,10 +58,13 @@ class Cursor {
     if (t.empty() || *end != '\0') fail(std::string("expected ") + what + ", got \"" + t + "\"");
     return v;
   }
-  /// Counts in a header must be >= 0 and not absurdly larger than the file.
+  /// Counts in a header must be >= 0 and fit in the rest of the file (every
+  /// item takes at least two characters), checked before anything is
+  /// allocated for them.
   std::size_t count(const char* what) {
     const int64_t v = integer(what);
-    if (v < 0 || static_cast<uint64_t>(v) > s_.size()) fail(std::string("bad ") + what);
+    if (v < 0 || static_cast<uint64_t>(v) > (s_.size() - pos_) / 2)
+      fail(std::string("bad ") + what + " " + std::to_string(v) + " (more than the file holds)");
     return static_cast<std::size_t>(v);
   }
   /// The tokens of the next non-empty line.

@@ -4,6 +4,7 @@ cooperage_framework_part(io_read
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/read_common.cpp
     ${CMAKE_CURRENT_LIST_DIR}/read_mesh_file.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf_header.cpp
     ${CMAKE_CURRENT_LIST_DIR}/exodus_reader.cpp
     ${CMAKE_CURRENT_LIST_DIR}/msh_reader.cpp
     ${CMAKE_CURRENT_LIST_DIR}/vtu_reader.cpp

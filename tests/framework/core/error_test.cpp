@@ -35,3 +35,15 @@ TEST(ErrorCode, EveryCodeHasAName) {
 }
 
 }  // namespace cooperage
+
+namespace cooperage {
+
+TEST(MeshingError, AHintSaysWhatToDoAndIsNotPartOfWhat) {
+  const MeshingError e(ErrorCode::InvalidInput, EntityRef::volume(2), "the mesh would be too big",
+                       "use a larger element size");
+  EXPECT_STREQ(e.what(), "volume 2: the mesh would be too big");
+  EXPECT_EQ(e.hint(), "use a larger element size");
+  EXPECT_EQ(MeshingError(ErrorCode::InvalidInput, "x").hint(), "");
+}
+
+}  // namespace cooperage

@@ -97,7 +97,7 @@ TEST(JournalErrors, UnknownAttributeIsNamed) {
 
 TEST(JournalErrors, NegativeSizeNamesElementAndLine) {
   expect_error(journal("<brick name=\"b\" size=\"1 -2 3\"/>"), ErrorCode::InvalidInput,
-               {"job.xml:3: <brick>: attribute \"size\" must be three positive numbers, got \"1 -2 3\""});
+               {"job.xml:3: <brick>: attribute \"size\" must be three positive numbers between 1e-7 and 1e7, got \"1 -2 3\""});
   expect_error(journal(kBrick, "<mesh size=\"-0.5\"/>"), ErrorCode::InvalidInput,
                {"job.xml:5: <mesh>:", "\"size\"", "positive", "-0.5"});
   expect_error(journal(kBrick, "<mesh>\n<curve id=\"1\" size=\"0\"/></mesh>"),

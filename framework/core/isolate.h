@@ -1,0 +1,51 @@
+// Running untrusted work (a CAD kernel reading a damaged file, libnetcdf
+// opening one) in a child process, so that a crash, a hang or a runaway
+// allocation there becomes an error here (issue 21 items 1-2). The child is
+// a fork() of this process: `work` sees all of its memory, and hands back
+// bytes through a pipe.
+#pragma once
+
+#include "framework/core/error.h"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace cooperage {
+
+struct IsolationLimits {
+  double seconds = 60;            ///< wall-clock limit; the child is killed after it
+  std::size_t memory_bytes = 0;   ///< extra address space the child may take (0: no limit)
+};
+
+/// How an isolated piece of work ended.
+struct IsolatedRun {
+  enum class Outcome {
+    Done,      ///< work returned; `payload` holds the bytes it produced
+    Failed,    ///< work threw; `code` and `payload` (the message) say why
+    Crashed,   ///< the child died of `signal` (or exited without a word)
+    TimedOut,  ///< killed after IsolationLimits::seconds
+    OutOfMemory,  ///< an allocation failed under IsolationLimits::memory_bytes
+  };
+  Outcome outcome = Outcome::Crashed;
+  std::string payload;
+  ErrorCode code = ErrorCode::Internal;
+  int signal = 0;
+
+  /// A clause for a person: "it crashed (signal 11, SIGSEGV)", "it did not
+  /// finish within 30 s", "it needed more than 2 GB of memory"; "" for Done.
+  std::string describe(const IsolationLimits& limits) const;
+};
+
+/// Runs `work(out)` in a forked child: stdout and stderr of the child go to
+/// /dev/null (kernels print), core dumps are off, the address space is
+/// capped when asked. A MeshingError thrown by `work` comes back as Failed
+/// with its code and message; any other exception as Failed(Internal).
+/// Never throws for what happens in the child; throws MeshingError(Internal)
+/// only when the process cannot fork or make a pipe.
+/// Do not call it while other threads of this process hold locks the work
+/// needs (only the calling thread exists in the child).
+IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
+                         const IsolationLimits& limits);
+
+}  // namespace cooperage

@@ -1,0 +1,260 @@
+#include "framework/pipeline/measure_check.h"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace cooperage::pipeline {
+namespace {
+
+using geom::Vec3;
+
+constexpr double kMaxGapRatio = 0.3;  // of a facet's size: an arc of ~120 degrees
+
+double capped(double gap, double size) {
+  const double cap = kMaxGapRatio * size;
+  return std::clamp(gap, -cap, cap);
+}
+
+template <std::size_t N>
+std::array<Vec3, N> gather(const std::array<int, N>& e, const mesh::MeshDB& db) {
+  std::array<Vec3, N> p;
+  for (std::size_t i = 0; i < N; ++i) p[i] = db.node(e[i]);
+  return p;
+}
+
+/// Area of a bilinear quad (2 x 2 Gauss points of |x_u x x_v|).
+double quad_area(const std::array<Vec3, 4>& p) {
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  double a = 0;
+  for (double u : g)
+    for (double v : g) {
+      const Vec3 xu = (1 - v) * (p[1] - p[0]) + v * (p[2] - p[3]);
+      const Vec3 xv = (1 - u) * (p[3] - p[0]) + u * (p[2] - p[1]);
+      a += 0.25 * xu.cross(xv).norm();
+    }
+  return a;
+}
+
+// ---- 3D: a volume against its CAD volume ---------------------------------------
+
+/// Volume between a facet and its surface, positive where the surface lies
+/// outside (the facet cuts the volume short).
+template <std::size_t N>
+double facet_sliver(const std::array<Vec3, N>& p, const geom::SurfaceGeometry& surface,
+                    double outward_sign) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& q : p) c += q;
+  c /= static_cast<double>(N);
+  double area = 0, size = 0;
+  if constexpr (N == 4) {
+    area = 0.5 * (p[2] - p[0]).cross(p[3] - p[1]).norm();
+    size = std::max((p[2] - p[0]).norm(), (p[3] - p[1]).norm());
+  } else {
+    area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    size = std::max({(p[1] - p[0]).norm(), (p[2] - p[1]).norm(), (p[0] - p[2]).norm()});
+  }
+  const geom::SurfaceProjection proj = surface.project(c);
+  if (!proj.point.allFinite() || !proj.normal.allFinite()) return 0;
+  const double gap = capped((proj.point - c).dot(outward_sign * proj.normal), size);
+  return area * gap * (N == 4 ? 2.0 / 3.0 : 3.0 / 4.0);
+}
+
+MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int vid) {
+  MeasureCheck m;
+  m.entity = EntityRef::volume(vid);
+  m.cad = model.volume(vid).volume;
+  const mesh::VolumeMeshData& v = db.volume(vid);
+  for (const mesh::Hex& h : v.hexes) m.mesh += hex_volume(gather(h, db));
+  for (const mesh::Wedge& w : v.wedges) m.mesh += wedge_volume(gather(w, db));
+  for (const auto& shell : model.volume(vid).shells) {
+    for (const geom::SurfaceUse& use : shell) {
+      const geom::Surface& s = model.surface(use.surface);
+      if (!db.surface_meshed(s.id) || s.geometry->type() == geom::SurfaceType::Plane) continue;
+      const mesh::SurfaceMeshData& sm = db.surface(s.id);
+      const double out = geom::sign(use.sense);
+      for (const mesh::Quad& q : sm.quads) m.faceting += facet_sliver(gather(q, db), *s.geometry, out);
+      for (const mesh::Tri& t : sm.tris) m.faceting += facet_sliver(gather(t, db), *s.geometry, out);
+    }
+  }
+  return m;
+}
+
+// ---- 2D: a surface against its CAD area ------------------------------------------
+
+struct EdgeGap {
+  Vec3 gap = Vec3::Zero();  ///< from the edge midpoint to the surface or curve
+  bool on_curve = false;    ///< a boundary edge along a model curve
+};
+
+std::uint64_t edge_key(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+/// The model curve of surface `s` that a boundary edge (a, b) follows, or 0.
+int curve_of_edge(const geom::Model& model, const mesh::MeshDB& db, const geom::Surface& s,
+                  int a, int b, const Vec3& mid) {
+  for (int n : {a, b})
+    if (db.owner(n).dim == 1) return db.owner(n).id;
+  if (db.owner(a).dim != 0 || db.owner(b).dim != 0) return 0;
+  // Both ends on vertices: a curve of the loops between those vertices
+  // (the nearest, when two arcs join the same pair).
+  const int va = db.owner(a).id, vb = db.owner(b).id;
+  int best = 0;
+  double best_distance = 0;
+  for (const geom::Loop& loop : s.loops)
+    for (const geom::CurveUse& u : loop.uses) {
+      const geom::Curve& c = model.curve(u.curve);
+      const bool joins = (c.start_vertex == va && c.end_vertex == vb) ||
+                         (c.start_vertex == vb && c.end_vertex == va);
+      if (!joins) continue;
+      const double d = (c.geometry->point(c.geometry->closest_parameter(mid)) - mid).norm();
+      if (best == 0 || d < best_distance) {
+        best = c.id;
+        best_distance = d;
+      }
+    }
+  return best;
+}
+
+MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int sid) {
+  MeasureCheck m;
+  m.entity = EntityRef::surface(sid);
+  const geom::Surface& s = model.surface(sid);
+  m.cad = s.area;
+  const mesh::SurfaceMeshData& sm = db.surface(sid);
+  const bool planar = s.geometry->type() == geom::SurfaceType::Plane;
+
+  // Every edge once: how many facets use it, then its gap.
+  std::unordered_map<std::uint64_t, int> uses;
+  auto count = [&](const int* n, int k) {
+    for (int i = 0; i < k; ++i) ++uses[edge_key(n[i], n[(i + 1) % k])];
+  };
+  for (const mesh::Quad& q : sm.quads) count(q.data(), 4);
+  for (const mesh::Tri& t : sm.tris) count(t.data(), 3);
+  std::unordered_map<std::uint64_t, EdgeGap> gaps;
+  gaps.reserve(uses.size());
+  auto gap_of = [&](int a, int b) -> const EdgeGap& {
+    const std::uint64_t key = edge_key(a, b);
+    auto it = gaps.find(key);
+    if (it != gaps.end()) return it->second;
+    EdgeGap g;
+    const Vec3 mid = 0.5 * (db.node(a) + db.node(b));
+    const int curve = uses[key] == 1 ? curve_of_edge(model, db, s, a, b, mid) : 0;
+    if (curve > 0) {
+      const geom::Curve& c = model.curve(curve);
+      g.on_curve = true;
+      if (c.geometry->type() != geom::CurveType::Line) {
+        const Vec3 q = c.geometry->point(c.geometry->closest_parameter(mid));
+        if (q.allFinite()) g.gap = q - mid;
+      }
+    } else if (!planar) {
+      const geom::SurfaceProjection p = s.geometry->project(mid);
+      if (p.point.allFinite()) g.gap = p.point - mid;
+    }
+    return gaps.emplace(key, g).first->second;
+  };
+
+  auto facet = [&](const int* n, int k) {
+    Vec3 p[4];
+    Vec3 centre = Vec3::Zero();
+    for (int i = 0; i < k; ++i) {
+      p[i] = db.node(n[i]);
+      centre += p[i];
+    }
+    centre /= k;
+    const Vec3 vector_area = k == 4 ? Vec3(0.5 * (p[2] - p[0]).cross(p[3] - p[1]))
+                                    : Vec3(0.5 * (p[1] - p[0]).cross(p[2] - p[0]));
+    const double area = k == 4 ? quad_area({p[0], p[1], p[2], p[3]}) : vector_area.norm();
+    m.mesh += area;
+    if (!(vector_area.norm() > 0)) return;
+    const Vec3 normal = vector_area.normalized();
+    double ratio2[4] = {0, 0, 0, 0};
+    for (int i = 0; i < k; ++i) {
+      const Vec3& a = p[i];
+      const Vec3& b = p[(i + 1) % k];
+      const double length = (b - a).norm();
+      if (!(length > 0)) continue;
+      const EdgeGap& g = gap_of(n[i], n[(i + 1) % k]);
+      const double r = capped(g.gap.dot(normal), length) / length;
+      ratio2[i] = r * r;
+      if (!g.on_curve) continue;
+      // The parabolic segment between the chord and its curve, in the facet's plane.
+      const Vec3 t = (b - a) / length;
+      Vec3 outward = 0.5 * (a + b) - centre;
+      outward -= outward.dot(t) * t + outward.dot(normal) * normal;
+      if (!(outward.norm() > 0)) continue;
+      outward.normalize();
+      m.faceting += 2.0 / 3.0 * length * capped(g.gap.dot(outward), length);
+    }
+    const double stretch = k == 4 ? 0.5 * (ratio2[0] + ratio2[2]) + 0.5 * (ratio2[1] + ratio2[3])
+                                  : (ratio2[0] + ratio2[1] + ratio2[2]) / 3.0;
+    m.faceting += area * 8.0 / 3.0 * stretch;
+  };
+  for (const mesh::Quad& q : sm.quads) facet(q.data(), 4);
+  for (const mesh::Tri& t : sm.tris) facet(t.data(), 3);
+  return m;
+}
+
+}  // namespace
+
+double MeasureCheck::deviation() const {
+  if (!(cad > 0)) return mesh == 0 ? 0.0 : 1.0;
+  return std::abs(mesh + faceting - cad) / cad;
+}
+
+double hex_volume(const std::array<Vec3, 8>& p) {
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  double v = 0;
+  for (double a : g)
+    for (double b : g)
+      for (double c : g) {
+        const Vec3 du = (1 - b) * (1 - c) * (p[1] - p[0]) + b * (1 - c) * (p[2] - p[3]) +
+                        (1 - b) * c * (p[5] - p[4]) + b * c * (p[6] - p[7]);
+        const Vec3 dv = (1 - a) * (1 - c) * (p[3] - p[0]) + a * (1 - c) * (p[2] - p[1]) +
+                        (1 - a) * c * (p[7] - p[4]) + a * c * (p[6] - p[5]);
+        const Vec3 dw = (1 - a) * (1 - b) * (p[4] - p[0]) + a * (1 - b) * (p[5] - p[1]) +
+                        a * b * (p[6] - p[2]) + (1 - a) * b * (p[7] - p[3]);
+        v += 0.125 * du.cross(dv).dot(dw);
+      }
+  return v;
+}
+
+double wedge_volume(const std::array<Vec3, 6>& p) {
+  // det J is linear in the triangle coordinates (the centroid rule is
+  // exact) and quadratic in the height (two Gauss points).
+  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  double v = 0;
+  for (double z : g) {
+    const Vec3 dr = (1 - z) * (p[1] - p[0]) + z * (p[4] - p[3]);
+    const Vec3 ds = (1 - z) * (p[2] - p[0]) + z * (p[5] - p[3]);
+    const Vec3 dz = ((p[3] - p[0]) + (p[4] - p[1]) + (p[5] - p[2])) / 3.0;
+    v += 0.25 * dr.cross(ds).dot(dz);
+  }
+  return v;
+}
+
+std::vector<MeasureCheck> compare_measures(const geom::Model& model, const mesh::MeshDB& db) {
+  std::vector<std::pair<int, int>> entities;  // (dim, id)
+  for (const auto& [id, v] : db.volumes())
+    if (v.size() > 0) entities.emplace_back(3, id);
+  if (entities.empty()) {
+    for (const auto& [id, s] : db.surfaces())
+      if (s.size() > 0) entities.emplace_back(2, id);
+  }
+  std::vector<MeasureCheck> out(entities.size());
+  tbb::parallel_for(std::size_t{0}, entities.size(), [&](std::size_t i) {
+    const auto [dim, id] = entities[i];
+    out[i] = dim == 3 ? check_volume(model, db, id) : check_surface(model, db, id);
+  });
+  return out;
+}
+
+}  // namespace cooperage::pipeline
