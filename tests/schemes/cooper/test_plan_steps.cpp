@@ -164,7 +164,9 @@ TEST(PlanSteps, ABossEndsItsBarrelOnTheShoulder) {
   EXPECT_EQ(at_least, 2);
   EXPECT_GE(equal, 6);  // 3 + 3 parallel chains tied to the first of each barrel
   // Nothing projects into the boss top or the shoulder.
-  std::vector<int> caps(z_caps(facts).begin(), z_caps(facts).end());
+  // One container: two calls would give iterators into two temporaries.
+  const auto z = z_caps(facts);
+  std::vector<int> caps(z.begin(), z.end());
   const auto cut = cut_caps(facts, caps, kDown, 1e-3);
   EXPECT_EQ(cut.size(), 1u);  // the bottom: the boss's footprint lies inside it
 }
