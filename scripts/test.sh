@@ -10,4 +10,4 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
 fi
 cmake --build "$build" -j2
 cd "$build"
-ctest -j2 --output-on-failure --timeout 900 "$@"
+ctest -j2 --output-on-failure --timeout 300 "$@"
