@@ -62,7 +62,9 @@ void print_error(const MeshingError& e) {
   std::string first = e.what();
   std::string details;
   const std::size_t open = first.find(" (");
-  if (first.size() > 120 && open != std::string::npos && open < 120 && first.back() == ')') {
+  // Long details (a list of every scheme's reason) go to a line of their own;
+  // a short parenthesis stays, however long the file name before it.
+  if (open != std::string::npos && first.size() - open > 60 && first.back() == ')') {
     details = first.substr(open + 2, first.size() - open - 3);
     first.resize(open);
   }

@@ -14,7 +14,7 @@ namespace cooperage::pipeline {
 io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   if (!(options.size > 0) || !std::isfinite(options.size)) {
     throw MeshingError(ErrorCode::InvalidInput, options.origin +
-                                                    ": the element size must be a positive number, got " +
+                                                    ": the element size must be positive, got " +
                                                     std::to_string(options.size));
   }
   io::Job job;

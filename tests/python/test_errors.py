@@ -29,7 +29,7 @@ def test_missing_cad_file_has_the_cli_message(cli, tmp_path):
         cooperage.mesh(missing, size=1)
     r = cli("mesh", missing, "--size", 1, "-o", tmp_path / "x.exo")
     assert r.returncode == 2
-    assert str(e.value) == cli_message(r)
+    assert str(e.value).startswith(cli_message(r))  # the CLI may put long details on a second line
     assert e.value.code == "file not found"
     assert "missing.step" in str(e.value)
 
@@ -40,7 +40,7 @@ def test_malformed_journal_has_the_cli_message_and_line(cli, journal):
         cooperage.run(job)
     r = cli("run", job)
     assert r.returncode == 2
-    assert str(e.value) == cli_message(r)
+    assert str(e.value).startswith(cli_message(r))  # the CLI may put long details on a second line
     assert e.value.code == "parse error"
     assert "job.xml:" in str(e.value)
 
@@ -76,7 +76,7 @@ def test_error_names_the_entity(journal, cli):
     assert e.value.entity == (3, 1)
     assert str(e.value).startswith("volume 1: map pinned at ")
     r = cli("run", job)
-    assert r.returncode == 2 and str(e.value) == cli_message(r)
+    assert r.returncode == 2 and str(e.value).startswith(cli_message(r))
 
 
 def test_failed_run_writes_no_file(journal, tmp_path):

@@ -1,7 +1,10 @@
-// Gmsh .msh reader (format_readers.h): 4.1 and 2.2 ASCII.
+// Gmsh .msh reader (format_readers.h): 4.1 ASCII and binary, 2.2 ASCII.
 // cite: Gmsh reference manual, sec. 10.1 "MSH file format" (4.1) and
 // sec. 10.4 "Legacy formats" (2.2); node order of types 2, 3, 5, 6 equals
 // Exodus II's (the Gmsh prism's first triangle is wound like the Exodus wedge's).
+// Binary 4.1 keeps the section names and $PhysicalNames as text; the bodies
+// of $Entities, $Nodes and $Elements are the same records as raw
+// little-endian int (4 bytes), size_t (the header's data size, 8) and double.
 #include "framework/io/read/format_readers.h"
 #include "framework/io/read/read_common.h"
 
@@ -9,6 +12,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <optional>
 #include <string>
@@ -98,6 +102,33 @@ class Cursor {
     }
     fail("missing " + end);
   }
+  /// Binary bodies: the raw value of T at the cursor (the file's byte order
+  /// was checked to be ours).
+  template <class T>
+  T raw(const char* what) {
+    if (s_.size() - pos_ < sizeof(T)) fail(std::string("unexpected end of file, expected ") + what);
+    T v;
+    std::memcpy(&v, s_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    return v;
+  }
+  /// A binary count of items of at least `item_bytes` each, checked
+  /// against the rest of the file before anything is allocated for it.
+  std::size_t raw_count(const char* what, std::size_t item_bytes) {
+    const auto v = raw<uint64_t>(what);
+    if (v > (s_.size() - pos_) / item_bytes)
+      fail(std::string("bad ") + what + " " + std::to_string(v) + " (more than the file holds)");
+    return static_cast<std::size_t>(v);
+  }
+  /// Past the end of the current line (where a binary body starts).
+  void next_line() {
+    while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+    if (pos_ < s_.size()) {
+      ++pos_;
+      ++line_;
+    }
+  }
+
   void expect(const std::string& word) {
     const std::string_view t = token(word.c_str());
     if (t != word) fail("expected " + word + ", got \"" + std::string(t) + "\"");
@@ -316,6 +347,110 @@ void read_elements_22(Cursor& c, MshState& st) {
   c.expect("$EndElements");
 }
 
+
+// ---- binary 4.1 --------------------------------------------------------
+
+/// Nodes of the Gmsh element types we skip (binary records have no line end
+/// to skip to): 0 for a type not listed.
+int skipped_node_count(int64_t t) {
+  switch (t) {
+    case 15: return 1;   // point
+    case 1: return 2;    // line
+    case 8: return 3;    // line3
+    case 4: return 4;    // tetra
+    case 7: return 5;    // pyramid
+    case 9: return 6;    // triangle6
+    case 16: return 8;   // quad8
+    case 10: return 9;   // quad9
+    case 11: return 10;  // tetra10
+    default: return 0;
+  }
+}
+
+void read_entities_41_binary(Cursor& c, MshState& st) {
+  std::size_t counts[4];
+  for (auto& n : counts) n = c.raw_count("number of entities", 4);
+  for (int dim = 0; dim < 4; ++dim) {
+    for (std::size_t i = 0; i < counts[dim]; ++i) {
+      const int64_t tag = c.raw<int32_t>("entity tag");
+      for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) c.raw<double>("bounding box coordinate");
+      const std::size_t n_phys = c.raw_count("number of physical tags", 4);
+      for (std::size_t k = 0; k < n_phys; ++k) {
+        const int64_t p = c.raw<int32_t>("physical tag");
+        if (k == 0) st.physical[{dim, tag}] = p;
+      }
+      if (dim > 0) {
+        const std::size_t n_bound = c.raw_count("number of bounding entities", 4);
+        for (std::size_t k = 0; k < n_bound; ++k) c.raw<int32_t>("bounding entity tag");
+      }
+    }
+  }
+  c.expect("$EndEntities");
+}
+
+void read_nodes_41_binary(Cursor& c, MshState& st) {
+  const std::size_t blocks = c.raw_count("number of node blocks", 20);
+  c.raw<uint64_t>("number of nodes");
+  c.raw<uint64_t>("minimum node tag");
+  c.raw<uint64_t>("maximum node tag");
+  for (std::size_t b = 0; b < blocks; ++b) {
+    c.raw<int32_t>("entity dimension");
+    c.raw<int32_t>("entity tag");
+    const bool parametric = c.raw<int32_t>("parametric flag") != 0;
+    if (parametric) c.fail("parametric node coordinates in a binary .msh are not supported");
+    const std::size_t n = c.raw_count("number of nodes in block", 32);
+    std::vector<int64_t> tags(n);
+    for (auto& t : tags) t = static_cast<int64_t>(c.raw<uint64_t>("node tag"));
+    for (int64_t t : tags) {
+      Eigen::Vector3d x;
+      for (int k = 0; k < 3; ++k) x[k] = c.raw<double>("node coordinate");
+      add_node(c, st, t, x);
+    }
+  }
+  c.expect("$EndNodes");
+  st.have_nodes = true;
+}
+
+void read_elements_41_binary(Cursor& c, MshState& st) {
+  if (!st.have_nodes) c.fail("$Elements before $Nodes");
+  const std::size_t blocks = c.raw_count("number of element blocks", 20);
+  c.raw<uint64_t>("number of elements");
+  c.raw<uint64_t>("minimum element tag");
+  c.raw<uint64_t>("maximum element tag");
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const int dim = c.raw<int32_t>("entity dimension");
+    const int64_t entity = c.raw<int32_t>("entity tag");
+    const int64_t gtype = c.raw<int32_t>("element type");
+    const auto type = gmsh_type(gtype);
+    const int other = skipped_node_count(gtype);
+    if (!type && other == 0)
+      c.fail("element type " + std::to_string(gtype) + " in a binary .msh (its node count is unknown here)");
+    const auto per = static_cast<std::size_t>(type ? quality::node_count(*type) : other);
+    const std::size_t n = c.raw_count("number of elements in block", 8 * (1 + per));
+    if (!type) {  // skipped, as in ASCII files
+      for (std::size_t k = 0; k < n * (1 + per); ++k) c.raw<uint64_t>("element data");
+      if (n > 0) st.out.skipped[skipped_name(gtype)] += n;
+      continue;
+    }
+    const std::string key = std::to_string(dim) + ":" + std::to_string(entity);
+    const auto it = st.physical.find({dim, entity});
+    const std::string name = block_name(
+        st, dim, entity, it == st.physical.end() ? std::nullopt : std::optional<int64_t>(it->second));
+    for (std::size_t e = 0; e < n; ++e) {
+      c.raw<uint64_t>("element tag");
+      int nodes[8];
+      for (std::size_t k = 0; k < per; ++k) {
+        const auto tag = static_cast<int64_t>(c.raw<uint64_t>("node tag"));
+        const auto found = st.node_index.find(tag);
+        if (found == st.node_index.end()) c.fail("element uses undefined node " + std::to_string(tag));
+        nodes[k] = found->second;
+      }
+      st.blocks.add(key, name, *type, nodes);
+    }
+  }
+  c.expect("$EndElements");
+}
+
 }  // namespace
 
 MeshFile read_msh(const std::string& path) {
@@ -323,6 +458,7 @@ MeshFile read_msh(const std::string& path) {
   Cursor c(path, text);
   MshState st;
   bool legacy = false;
+  bool binary = false;
   bool have_format = false;
   while (!c.at_end()) {
     const std::string section(c.token("a section"));
@@ -331,10 +467,19 @@ MeshFile read_msh(const std::string& path) {
     if (name == "MeshFormat") {
       const std::string version(c.token("the format version"));
       const int64_t file_type = c.integer("the file type");
-      c.integer("the data size");
-      if (file_type != 0) {
-        throw MeshingError(ErrorCode::NotSupported,
-                           path + ": binary .msh is not supported; save as ASCII");
+      const int64_t data_size = c.integer("the data size");
+      binary = file_type != 0;
+      if (binary) {
+        if (version != "4.1") {
+          throw MeshingError(ErrorCode::NotSupported,
+                             path + ": binary .msh " + version + " is not supported (use 4.1)");
+        }
+        if (data_size != 8) c.fail("binary data size " + std::to_string(data_size) + " (8 expected)");
+        c.next_line();
+        if (c.raw<int32_t>("the byte order mark") != 1) {
+          throw MeshingError(ErrorCode::NotSupported,
+                             path + ": a binary .msh of the other byte order is not supported");
+        }
       }
       if (version == "4.1") legacy = false;
       else if (version.rfind("2.", 0) == 0) legacy = true;
@@ -349,6 +494,12 @@ MeshFile read_msh(const std::string& path) {
     }
     if (!have_format) c.fail("the file does not start with $MeshFormat");
     if (name == "PhysicalNames") read_physical_names(c, st);
+    else if (binary && (name == "Entities" || name == "Nodes" || name == "Elements")) {
+      c.next_line();
+      if (name == "Entities") read_entities_41_binary(c, st);
+      else if (name == "Nodes") read_nodes_41_binary(c, st);
+      else read_elements_41_binary(c, st);
+    }
     else if (name == "Entities" && !legacy) read_entities_41(c, st);
     else if (name == "Nodes") legacy ? read_nodes_22(c, st) : read_nodes_41(c, st);
     else if (name == "Elements") legacy ? read_elements_22(c, st) : read_elements_41(c, st);

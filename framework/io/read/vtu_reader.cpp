@@ -1,7 +1,9 @@
 // VTK XML UnstructuredGrid (.vtu) reader (format_readers.h).
 // cite: "VTK File Formats", VTK User's Guide sec. 19.3 (XML formats): inline
 // DataArrays are "ascii" text or "binary" base64 of a UInt32/UInt64 byte
-// count (header_type) followed by the raw little/big-endian values.
+// count (header_type) followed by the raw little/big-endian values;
+// "appended" ones point (offset) into the raw <AppendedData> block after the
+// XML, each as the same byte count followed by the values.
 #include "framework/io/read/format_readers.h"
 #include "framework/io/read/read_common.h"
 
@@ -18,6 +20,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cooperage::io::detail {
@@ -71,8 +74,11 @@ bool base64_decode(const char* text, std::vector<unsigned char>& out) {
 
 class VtuParser {
  public:
-  VtuParser(const std::string& path, bool big_endian, std::size_t header_size)
-      : path_(path), big_endian_(big_endian), header_size_(header_size) {}
+  /// `appended`: the raw bytes after the '_' of <AppendedData
+  /// encoding="raw"> (empty when the file has none).
+  VtuParser(const std::string& path, bool big_endian, std::size_t header_size,
+            std::string_view appended)
+      : path_(path), big_endian_(big_endian), header_size_(header_size), appended_(appended) {}
 
   /// The values of an inline DataArray as doubles (exact for the integer
   /// types up to 2^53, far beyond any index we can store in an int).
@@ -87,7 +93,7 @@ class VtuParser {
     if (size == 0) parse_error(path_, where + ": unknown type \"" + type + "\"");
     const char* text = a->GetText();
     std::vector<double> out;
-    if (format == "appended") not_supported(path_, where + ": appended data");
+    if (format == "appended") return appended_values(a, where, type, size);
     if (format == "ascii") {
       if (!text) return out;
       std::istringstream in(text);
@@ -118,6 +124,30 @@ class VtuParser {
   }
 
  private:
+  std::vector<double> appended_values(const tinyxml2::XMLElement* a, const std::string& where,
+                                      const std::string& type, std::size_t size) const {
+    const int64_t offset = a->Int64Attribute("offset", -1);
+    if (offset < 0) parse_error(path_, where + ": appended data without an offset");
+    const auto at = static_cast<uint64_t>(offset);
+    if (at > appended_.size() || appended_.size() - at < header_size_) {
+      parse_error(path_, where + ": offset " + std::to_string(offset) + " is past the " +
+                             std::to_string(appended_.size()) + " bytes of appended data");
+    }
+    const auto* p = reinterpret_cast<const unsigned char*>(appended_.data()) + at;
+    const uint64_t length = read_uint(p, header_size_);
+    const uint64_t left = appended_.size() - at - header_size_;
+    if (length > left || length % size != 0) {
+      parse_error(path_, where + ": its byte count " + std::to_string(length) + " does not fit the " +
+                             std::to_string(left) + " bytes after it");
+    }
+    p += header_size_;
+    const std::size_t n = static_cast<std::size_t>(length) / size;
+    std::vector<double> out;
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i, p += size) out.push_back(decode(p, type, size));
+    return out;
+  }
+
   uint64_t read_uint(const unsigned char* p, std::size_t size) const {
     uint64_t v = 0;
     for (std::size_t k = 0; k < size; ++k) {
@@ -148,7 +178,31 @@ class VtuParser {
   std::string path_;
   bool big_endian_;
   std::size_t header_size_;
+  std::string_view appended_;
 };
+
+/// Splits a .vtu file into its XML (closed after the cut) and the raw bytes
+/// of <AppendedData encoding="raw">, which are not XML text.
+struct SplitVtu {
+  std::string xml;
+  std::string_view appended;
+};
+
+SplitVtu split_appended(const std::string& path, const std::string& text) {
+  const std::size_t tag = text.find("<AppendedData");
+  if (tag == std::string::npos) return {text, {}};
+  const std::size_t tag_end = text.find('>', tag);
+  if (tag_end == std::string::npos) parse_error(path, "<AppendedData> is not closed");
+  const std::string attributes = text.substr(tag, tag_end - tag);
+  if (attributes.find("encoding=\"raw\"") == std::string::npos) {
+    not_supported(path, "appended data that is not raw (" + attributes.substr(0, 60) + ">)");
+  }
+  const std::size_t underscore = text.find('_', tag_end);
+  if (underscore == std::string::npos) parse_error(path, "<AppendedData> without its '_' marker");
+  // The closing tags after the data are not needed: the XML ends here.
+  return {text.substr(0, tag) + "</VTKFile>\n",
+          std::string_view(text).substr(underscore + 1)};
+}
 
 const tinyxml2::XMLElement* array_named(const tinyxml2::XMLElement* parent, const char* name) {
   if (!parent) return nullptr;
@@ -273,9 +327,10 @@ void read_piece(const std::string& path, const VtuParser& parser,
 }  // namespace
 
 MeshFile read_vtu(const std::string& path) {
-  require_file(path);
+  const std::string text = read_text(path);
+  const SplitVtu split = split_appended(path, text);
   tinyxml2::XMLDocument doc;
-  if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
+  if (doc.Parse(split.xml.data(), split.xml.size()) != tinyxml2::XML_SUCCESS) {
     parse_error(path, std::string("XML error: ") + (doc.ErrorStr() ? doc.ErrorStr() : "unknown") +
                           " (line " + std::to_string(doc.ErrorLineNum()) + ")");
   }
@@ -289,7 +344,6 @@ MeshFile read_vtu(const std::string& path) {
   if (root->Attribute("compressor")) {
     not_supported(path, std::string("compressed data (compressor=\"") + root->Attribute("compressor") + "\")");
   }
-  if (root->FirstChildElement("AppendedData")) not_supported(path, "appended data (AppendedData)");
   const char* order = root->Attribute("byte_order");
   const bool big = order && std::strcmp(order, "BigEndian") == 0;
   const char* header = root->Attribute("header_type");
@@ -297,7 +351,7 @@ MeshFile read_vtu(const std::string& path) {
   if (header_type != "UInt32" && header_type != "UInt64") {
     parse_error(path, "header_type \"" + header_type + "\" is not UInt32 or UInt64");
   }
-  const VtuParser parser(path, big, type_size(header_type));
+  const VtuParser parser(path, big, type_size(header_type), split.appended);
   const auto* grid = root->FirstChildElement("UnstructuredGrid");
   if (!grid) parse_error(path, "no UnstructuredGrid element");
   MeshFile out;

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include <fstream>
 
 namespace cooperage::test {
@@ -27,7 +29,9 @@ void expect_error(const std::string& path, ErrorCode code, const std::string& te
   }
 }
 
-void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 TEST(ReadErrors, MissingFile) {
   const std::string dir = scratch_dir();
@@ -68,10 +72,22 @@ TEST(ReadErrors, MshBadNumberNamesTheLine) {
   expect_error(path, ErrorCode::ParseError, "line 8");
 }
 
-TEST(ReadErrors, BinaryMsh) {
+TEST(ReadErrors, BinaryMshOfTheOtherByteOrder) {
   const std::string path = scratch_dir() + "/bin.msh";
-  write_file(path, "$MeshFormat\n4.1 1 8\n\x01\x00\x00\x00\n$EndMeshFormat\n");
-  expect_error(path, ErrorCode::NotSupported, "binary .msh is not supported; save as ASCII");
+  static const char kText[] = "$MeshFormat\n4.1 1 8\n\x00\x00\x00\x01\n$EndMeshFormat\n";
+  write_file(path, std::string(kText, sizeof kText - 1));
+  expect_error(path, ErrorCode::NotSupported, "other byte order");
+}
+
+TEST(ReadErrors, BinaryMshCountBeyondTheFile) {
+  const std::string path = scratch_dir() + "/count.msh";
+  static const char kHead[] = "$MeshFormat\n4.1 1 8\n\x01\x00\x00\x00\n$EndMeshFormat\n$Nodes\n";
+  std::string text(kHead, sizeof kHead - 1);
+  const uint64_t huge = uint64_t{1} << 40;
+  text.append(reinterpret_cast<const char*>(&huge), 8);
+  text += std::string(24, '\0');
+  write_file(path, text);
+  expect_error(path, ErrorCode::ParseError, "more than the file holds");
 }
 
 TEST(ReadErrors, NotAnExodusFile) {
@@ -92,7 +108,7 @@ TEST(ReadErrors, CompressedVtu) {
   expect_error(path, ErrorCode::NotSupported, "not supported");
 }
 
-TEST(ReadErrors, AppendedVtu) {
+TEST(ReadErrors, AppendedVtuOffsetPastTheData) {
   const std::string path = scratch_dir() + "/a.vtu";
   write_file(path, std::string(kVtuHead) +
                        ">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n"
@@ -100,7 +116,15 @@ TEST(ReadErrors, AppendedVtu) {
                        "format=\"appended\" offset=\"0\"/></Points>\n</Piece>\n"
                        "</UnstructuredGrid>\n<AppendedData encoding=\"raw\">_xxxx</AppendedData>\n"
                        "</VTKFile>\n");
-  expect_error(path, ErrorCode::NotSupported, "appended");
+  expect_error(path, ErrorCode::ParseError, "does not fit");
+}
+
+TEST(ReadErrors, Base64AppendedVtu) {
+  const std::string path = scratch_dir() + "/b.vtu";
+  write_file(path, std::string(kVtuHead) +
+                       ">\n<UnstructuredGrid>\n</UnstructuredGrid>\n"
+                       "<AppendedData encoding=\"base64\">_AAAA</AppendedData>\n</VTKFile>\n");
+  expect_error(path, ErrorCode::NotSupported, "not raw");
 }
 
 TEST(ReadErrors, MalformedVtuXml) {

@@ -122,6 +122,9 @@ gmsh.model.setPhysicalName(3, p, "the box")
 gmsh.model.mesh.generate(3)
 gmsh.option.setNumber("Mesh.MshFileVersion", 4.1)
 gmsh.write(d + "/box41.msh")
+gmsh.option.setNumber("Mesh.Binary", 1)
+gmsh.write(d + "/box41b.msh")
+gmsh.option.setNumber("Mesh.Binary", 0)
 gmsh.option.setNumber("Mesh.MshFileVersion", 2.2)
 gmsh.write(d + "/box22.msh")
 types, tags, nodes = gmsh.model.mesh.getElements(3)
@@ -137,7 +140,7 @@ TEST(ReadForeign, GmshTransfiniteBox) {
   std::map<std::string, size_t> counts;
   ASSERT_TRUE(run_python(dir, kGmshScript, counts));
   ASSERT_EQ(counts["hex"], 8u);
-  for (const char* name : {"box41.msh", "box22.msh"}) {
+  for (const char* name : {"box41.msh", "box41b.msh", "box22.msh"}) {
     SCOPED_TRACE(name);
     const io::MeshFile f = io::read_mesh_file(dir + "/" + name);
     EXPECT_EQ(count_of(f, ElementType::Hex), counts["hex"]);

@@ -16,8 +16,10 @@ using quality::ElementType;
 
 class RoundTrip : public ::testing::TestWithParam<std::string> {};
 
-void check_round_trip(const TestMesh& t, const std::string& path) {
-  io::write_mesh(path, t.db, t.model);
+void check_round_trip(const TestMesh& t, const std::string& path, bool binary = false) {
+  io::ExportOptions options;
+  options.binary = binary;
+  io::write_mesh(path, t.db, t.model, options);
   const io::MeshFile f = io::read_mesh_file(path);
   ASSERT_EQ(f.coords.size(), t.db.node_count());
   std::set<std::vector<long long>> want, got;
@@ -72,6 +74,40 @@ TEST_P(RoundTrip, SurfaceOnlyMeshGivesQuads) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip, ::testing::Values("exo", "msh", "vtu"));
+
+// Binary .msh (4.1, raw little-endian bodies) and .vtu (raw appended data)
+// read back as the same mesh as the ASCII files.
+class BinaryRoundTrip : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BinaryRoundTrip, EveryTestMesh) {
+  const std::string dir = scratch_dir();
+  check_round_trip(one_block(), dir + "/one." + GetParam(), true);
+  check_round_trip(two_blocks(), dir + "/two." + GetParam(), true);
+  check_round_trip(two_wedges(), dir + "/wedges." + GetParam(), true);
+  check_round_trip(mixed(), dir + "/mixed." + GetParam(), true);
+}
+
+TEST_P(BinaryRoundTrip, BlocksAndSurfacesAsInAscii) {
+  const std::string dir = scratch_dir();
+  for (const TestMesh& t : {two_blocks(), surface_only()}) {
+    io::ExportOptions binary;
+    binary.binary = true;
+    io::write_mesh(dir + "/ascii." + GetParam(), t.db, t.model);
+    io::write_mesh(dir + "/binary." + GetParam(), t.db, t.model, binary);
+    const io::MeshFile a = io::read_mesh_file(dir + "/ascii." + GetParam());
+    const io::MeshFile b = io::read_mesh_file(dir + "/binary." + GetParam());
+    ASSERT_EQ(a.coords.size(), b.coords.size());
+    for (size_t i = 0; i < a.coords.size(); ++i) EXPECT_EQ(a.coords[i], b.coords[i]) << i;
+    ASSERT_EQ(a.blocks.size(), b.blocks.size());
+    for (size_t k = 0; k < a.blocks.size(); ++k) {
+      EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
+      EXPECT_EQ(a.blocks[k].type, b.blocks[k].type);
+      EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, BinaryRoundTrip, ::testing::Values("msh", "vtu"));
 
 TEST(ReadMeshFile, ExodusBlockNamesAreTheVolumeNames) {
   const TestMesh t = two_blocks();
