@@ -189,29 +189,6 @@ void imprint_barrels(SweepState& s) {
       const BarrelEnds ends = ends_of(s, b);
       const ImprintResult r = imprint_subcaps(ends, options);
       if (!r.ok) {
-        for (int e = 0; e < 2; ++e) {
-          for (const Subcap& c : e == 0 ? ends.upper : ends.lower) {
-            std::fprintf(stderr, "IMPRINT end %d subcap %d\n", e, c.id);
-            for (const auto& l : c.loops) {
-              std::fprintf(stderr, "  loop:");
-              for (int n : l) std::fprintf(stderr, " %d(%.3f,%.3f)", n, ends.xy.at(n).x(), ends.xy.at(n).y());
-              std::fprintf(stderr, "\n");
-            }
-          }
-        }
-        for (int e = 0; e < 2; ++e) {
-          for (const Subcap& c : e == 0 ? r.ends.upper : r.ends.lower) {
-            std::fprintf(stderr, "RESULT end %d subcap %d\n", e, c.id);
-            for (const auto& l : c.loops) {
-              std::fprintf(stderr, "  loop:");
-              for (int n : l) std::fprintf(stderr, " %d(%.3f,%.3f)", n, r.ends.xy.at(n).x(), r.ends.xy.at(n).y());
-              std::fprintf(stderr, "\n");
-            }
-          }
-        }
-        std::fprintf(stderr, "RIBS:");
-        for (const auto& [a, z] : r.ends.ribs) std::fprintf(stderr, " %d-%d", a, z);
-        std::fprintf(stderr, "\n");
         fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed (" + r.why + ")");
       }
       changed = apply(s, b, ends, r) || changed;
