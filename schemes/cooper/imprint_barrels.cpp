@@ -9,7 +9,6 @@
 #include "schemes/cooper/sweep_state.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 
 namespace cooperage::cooper::detail {
