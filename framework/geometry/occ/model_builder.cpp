@@ -39,10 +39,7 @@
 namespace cooperage::occ {
 namespace {
 
-struct Piece {
-  TopoDS_Shape shape;  ///< a solid, or a free face
-  int owner = 0;       ///< index into the named shapes
-};
+using detail::Piece;
 
 geom::BoundingBox box_of(const TopoDS_Shape& s) {
   Bnd_Box b;
@@ -56,7 +53,10 @@ geom::BoundingBox box_of(const TopoDS_Shape& s) {
   return out;
 }
 
-/// Solids and free faces of the named shapes, in creation order.
+}  // namespace
+
+namespace detail {
+
 void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,
              std::vector<Piece>& faces) {
   for (size_t i = 0; i < shapes.size(); ++i) {
@@ -67,8 +67,6 @@ void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,
   }
 }
 
-/// Imprint + merge: one general fuse of every piece; each piece is replaced by
-/// its images (a solid partly overlapping another splits into several).
 void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces) {
   if (solids.size() + faces.size() < 2) return;
   BRepAlgoAPI_BuilderAlgo algo;
@@ -101,10 +99,14 @@ void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces) {
   images(faces, TopAbs_FACE);
 }
 
+}  // namespace detail
+
+namespace {
+
 class Numbering {
  public:
   geom::Model build(const std::vector<Piece>& solids, const std::vector<Piece>& free_faces,
-                    const std::vector<NamedShape>& shapes) {
+                    const std::vector<std::string>& names) {
     for (size_t v = 0; v < solids.size(); ++v) walk_solid(TopoDS::Solid(solids[v].shape), static_cast<int>(v) + 1);
     for (const auto& f : free_faces) face_index(TopoDS::Face(f.shape));
 
@@ -152,7 +154,7 @@ class Numbering {
       vol.volume = std::abs(props.Mass());
       vol.box = box_of(solids[v].shape);
       const int owner = solids[v].owner;
-      vol.name = shapes[static_cast<size_t>(owner)].name;
+      vol.name = names[static_cast<size_t>(owner)];
       if (pieces_per_owner[owner] > 1) vol.name += "." + std::to_string(++seen_per_owner[owner]);
       model.add_volume(vol);
     }
@@ -247,18 +249,25 @@ class Numbering {
 
 }  // namespace
 
+geom::Model detail::number_model(const std::vector<Piece>& solids, const std::vector<Piece>& faces,
+                                 const std::vector<std::string>& names, double unit_in_metres) {
+  geom::Model model = Numbering().build(solids, faces, names);
+  if (unit_in_metres > 0.0) model.set_unit_in_metres(unit_in_metres);
+  model.validate();
+  return model;
+}
+
 geom::Model Workbench::build_model(const BuildOptions& options) const {
   silence_kernel_output();
   return detail::guarded(ErrorCode::GeometryError, "building the model", [&] {
     std::vector<Piece> solids, faces;
-    collect(impl_->shapes, solids, faces);
+    detail::collect(impl_->shapes, solids, faces);
     if (solids.empty() && faces.empty())
       throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
-    if (options.imprint_merge) imprint_merge(solids, faces);
-    geom::Model model = Numbering().build(solids, faces, impl_->shapes);
-    if (impl_->unit_in_metres > 0.0) model.set_unit_in_metres(impl_->unit_in_metres);
-    model.validate();
-    return model;
+    if (options.imprint_merge) detail::imprint_merge(solids, faces);
+    std::vector<std::string> names;
+    for (const NamedShape& s : impl_->shapes) names.push_back(s.name);
+    return detail::number_model(solids, faces, names, impl_->unit_in_metres);
   });
 }
 
