@@ -67,9 +67,10 @@ int run_journal(const std::string& file, const std::string& report, int threads,
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
              const std::string& report, bool binary, bool no_imprint, io::ElementKind elements, int threads,
-             bool quiet) {
+             bool quiet, io::Decompose decompose) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   pipeline::ModelJobOptions options;
+  options.decompose = decompose;
   options.size = size;
   options.imprint_merge = !no_imprint;
   options.elements = elements;
@@ -129,6 +130,11 @@ int main(int argc, char** argv) {
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
                    "caps swept into hexes and wedges")
       ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
+  std::string mesh_decompose = "auto";
+  mesh->add_option("--decompose", mesh_decompose,
+                   "auto (default): cut volumes no scheme applies to into sweepable pieces; "
+                   "off: refuse them")
+      ->check(CLI::IsMember({"auto", "off"}));
   mesh->add_option("--threads", threads, "Worker threads (0: all cores)")
       ->check(CLI::NonNegativeNumber);
   mesh->add_flag("-q,--quiet", quiet, "No progress output");
@@ -179,7 +185,8 @@ int main(int argc, char** argv) {
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary, mesh_no_imprint,
-                      elements, threads, quiet);
+                      elements, threads, quiet,
+                      mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

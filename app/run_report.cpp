@@ -1,5 +1,7 @@
 #include "run_report.h"
 
+#include "framework/decompose/report_text.h"
+
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -22,6 +24,7 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     seconds[{t.dim, t.id}] = t.seconds;
     schemes[{t.dim, t.id}] = t.scheme;
   }
+  for (const auto& l : decompose::report_lines(result.decomposition)) out << "decomposed " << l << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %8s %8s %9s\n", "entity", "scheme",
                 "type", "elements", "min SJ", "mean SJ", "max SJ", "inverted", "time [s]");
@@ -60,6 +63,13 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     if (c.check.max) out << " <= " << fmt("%g", *c.check.max);
     out << ": " << c.violations << " elements outside"
         << (c.failed ? " -- FAILED" : (c.violations ? " (warning)" : ", ok")) << "\n";
+  }
+  if (!result.stages.empty()) {
+    out << "time [s]:";
+    for (const auto& st : result.stages) out << " " << st.stage << " " << fmt("%.3f", st.seconds) << ",";
+    double total = 0;
+    for (const auto& st : result.stages) total += st.seconds;
+    out << " total " << fmt("%.3f", total) << "\n";
   }
   for (const auto& w : result.mesh.warnings) out << "warning: " << w.text() << "\n";
   for (const auto& f : result.written) out << "wrote " << f << "\n";

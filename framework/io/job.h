@@ -121,9 +121,14 @@ struct VertexTypeSetting {
   SourceLocation where;
 };
 
+/// <mesh decompose="auto|off">: cut volumes no volume scheme applies to
+/// into pieces one does (framework/decompose/decompose.h).
+enum class Decompose { Auto, Off };
+
 struct MeshSettings {
   std::optional<double> size;      ///< global element size
   int threads = 0;                 ///< 0: all cores
+  Decompose decompose = Decompose::Auto;
   std::vector<CurveSetting> curves;
   std::vector<SurfaceSetting> surfaces;
   std::vector<VolumeSetting> volumes;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "framework/geometry/model.h"
+#include "framework/geometry/occ/workbench.h"
 #include "framework/io/job.h"
 
 #include <string>
@@ -14,6 +15,10 @@ namespace cooperage::pipeline {
 /// against job.base_dir. Throws MeshingError naming the journal line of the
 /// failing operation.
 geom::Model build_geometry(const io::Job& job);
+
+/// Runs job.geometry in order on `bench` (build_geometry() without the
+/// model), for callers that go on working on the shapes (decomposition).
+void run_geometry(const io::Job& job, occ::Workbench& bench);
 
 /// Reads a model from a CAD file (.step/.stp/.iges/.igs/.brep) or a journal
 /// (.xml, geometry only).
