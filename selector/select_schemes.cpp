@@ -97,7 +97,8 @@ class Selector {
                             const scheme::SurfaceRoles& roles) const {
     for (const auto& [surface, role] : roles) {
       auto it = roles_.find(surface);
-      if (it != roles_.end() && it->second.scheme != role) {
+      if (it != roles_.end() && it->second.scheme != role &&
+          !map_equals_submap(surface, it->second.scheme, role)) {
         return "surface " + std::to_string(surface) + " needs " + role + " for volume " +
                std::to_string(volume) + " (" + scheme_name + ") but " + it->second.scheme +
                " for volume " + std::to_string(it->second.volume) + " (" +
@@ -110,6 +111,17 @@ class Selector {
       }
     }
     return {};
+  }
+
+  // Map and submap mesh a rectangle alike (the surface schemes agree on a
+  // shared rectangle), so two volumes asking one each of a surface that map
+  // applies to agree; it is meshed by map. This is what lets the pieces of
+  // an automatic decomposition (issue 17) share their cut faces.
+  bool map_equals_submap(int surface, const std::string& a, const std::string& b) const {
+    const bool pair = (a == "map" && b == "submap") || (a == "submap" && b == "map");
+    if (!pair) return false;
+    const scheme::SurfaceScheme* map = registry_.surface_scheme("map");
+    return map && map->applicable(scheme::SurfaceView{model_, surface, nullptr}).ok;
   }
 
   void choose_volume(int id) {
@@ -160,7 +172,14 @@ class Selector {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
         continue;
       }
-      for (const auto& [surface, role] : roles) roles_[surface] = {role, id, c->scheme};
+      for (const auto& [surface, role] : roles) {
+        auto it = roles_.find(surface);
+        if (it != roles_.end() && map_equals_submap(surface, it->second.scheme, role)) {
+          it->second.scheme = "map";
+          continue;
+        }
+        roles_[surface] = {role, id, c->scheme};
+      }
       choice.scheme = c->scheme;
       choice.reason = choice.pinned ? "pinned at " + place(pin->where)
                                     : "best applicable, score " + score_text(c->applicability.score);
