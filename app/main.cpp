@@ -61,12 +61,23 @@ struct RunLimits {
 void print_error(const MeshingError& e) {
   std::string first = e.what();
   std::string details;
-  const std::size_t open = first.find(" (");
-  // Long details (a list of every scheme's reason) go to a line of their own;
-  // a short parenthesis stays, however long the file name before it.
-  if (open != std::string::npos && first.size() - open > 60 && first.back() == ')') {
-    details = first.substr(open + 2, first.size() - open - 3);
-    first.resize(open);
+  // The parenthesis that closes the message, matched backwards, holds its
+  // details; they go to a line of their own when long (a list of every
+  // scheme's reason), and stay when short, however long the file name.
+  if (!first.empty() && first.back() == ')') {
+    int depth = 0;
+    std::size_t open = std::string::npos;
+    for (std::size_t i = first.size(); i-- > 0;) {
+      if (first[i] == ')') ++depth;
+      if (first[i] == '(' && --depth == 0) {
+        open = i;
+        break;
+      }
+    }
+    if (open != std::string::npos && open > 0 && first[open - 1] == ' ' && first.size() - open > 60) {
+      details = first.substr(open + 1, first.size() - open - 2);
+      first.resize(open - 1);
+    }
   }
   std::cerr << "cooperage: error: " << clip(first, kMaxErrorLine) << '\n';
   if (!details.empty()) std::cerr << "  " << clip(details, kMaxErrorLine) << '\n';
@@ -109,10 +120,11 @@ int run_journal(const std::string& file, const std::string& report, const RunLim
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
              const std::string& report, bool binary, bool no_imprint, io::ElementKind elements,
-             const RunLimits& limits) {
+             const RunLimits& limits, io::Decompose decompose) {
   if (!(size > 0) || !std::isfinite(size))
     throw MeshingError(ErrorCode::InvalidInput, "--size must be a positive number");
   pipeline::ModelJobOptions options;
+  options.decompose = decompose;
   options.size = size;
   options.imprint_merge = !no_imprint;
   options.elements = elements;
@@ -185,6 +197,11 @@ int main(int argc, char** argv) {
                    "caps swept into hexes and wedges")
       ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
   add_limits(mesh);
+  std::string mesh_decompose = "auto";
+  mesh->add_option("--decompose", mesh_decompose,
+                   "auto (default): cut volumes no scheme applies to into sweepable pieces; "
+                   "off: refuse them")
+      ->check(CLI::IsMember({"auto", "off"}));
 
   std::string plan_file;
   double plan_size = 0;
@@ -230,7 +247,8 @@ int main(int argc, char** argv) {
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
-                      mesh_no_imprint, elements, limits);
+                      mesh_no_imprint, elements, limits,
+                      mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto);
     }
   } catch (const MeshingError& e) {
     print_error(e);

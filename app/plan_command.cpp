@@ -2,6 +2,7 @@
 
 #include "json_writer.h"
 
+#include "framework/decompose/report_text.h"
 #include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "schemes/cooper/cooper_scheme.h"
@@ -21,7 +22,8 @@ std::shared_ptr<const cooper::VolumePlan> cooper_plan(const selector::Choice& c,
   return s ? s->plan(scheme::VolumeView{model, c.id, nullptr}) : nullptr;
 }
 
-void write_text(const selector::Selection& sel, bool intervals_checked, const geom::Model& model,
+void write_text(const selector::Selection& sel, const decompose::Report& cuts,
+                bool intervals_checked, const geom::Model& model,
                 const scheme::Registry& registry, std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
@@ -33,6 +35,11 @@ void write_text(const selector::Selection& sel, bool intervals_checked, const ge
       for (std::string line; std::getline(lines, line);) out << "    " << line << "\n";
     }
   };
+  const std::vector<std::string> cut_lines = decompose::report_lines(cuts);
+  if (!cut_lines.empty()) {
+    out << "decomposition (" << cuts.tried << " cuts tried)\n";
+    for (const auto& line : cut_lines) out << "  " << line << "\n";
+  }
   if (!sel.volumes.empty()) out << "volumes\n";
   for (const auto& c : sel.volumes) entity(c);
   out << "surfaces\n";
@@ -88,7 +95,66 @@ void write_barrel_tree(JsonWriter& j, const cooper::VolumePlan& p) {
   j.end_object();
 }
 
-void write_json(const selector::Selection& sel, bool intervals_checked, const geom::Model& model,
+void write_decomposition(const decompose::Report& cuts, JsonWriter& j) {
+  const auto vec = [&](const geom::Vec3& v) {
+    j.begin_array();
+    for (int k = 0; k < 3; ++k) j.value(v[k]);
+    j.end_array();
+  };
+  j.begin_object();
+  j.key("tried");
+  j.value(cuts.tried);
+  j.key("volumes");
+  j.begin_array();
+  for (const auto& v : cuts.volumes) {
+    j.begin_object();
+    j.key("volume");
+    j.value(v.volume);
+    j.key("name");
+    j.value(v.name);
+    j.key("why");
+    j.value(v.why);
+    j.key("tried");
+    j.value(v.tried);
+    j.key("pieces");
+    j.begin_array();
+    for (int p : v.pieces) j.value(p);
+    j.end_array();
+    j.key("cuts");
+    j.begin_array();
+    for (const auto& c : v.cuts) {
+      j.begin_object();
+      j.key("kind");
+      j.value(c.surface.kind == occ::CutSurface::Kind::Plane ? "plane" : "cylinder");
+      j.key("origin");
+      vec(c.surface.origin);
+      j.key("direction");
+      vec(c.surface.direction);
+      if (c.surface.kind == occ::CutSurface::Kind::Cylinder) {
+        j.key("radius");
+        j.value(c.surface.radius);
+      }
+      j.key("description");
+      j.value(decompose::describe(c.surface));
+      j.key("through");
+      j.value(c.through);
+      j.key("depth");
+      j.value(c.depth);
+      j.key("pieces");
+      j.value(c.pieces);
+      j.key("thinnest");
+      j.value(c.thinnest);
+      j.end_object();
+    }
+    j.end_array();
+    j.end_object();
+  }
+  j.end_array();
+  j.end_object();
+}
+
+void write_json(const selector::Selection& sel, const decompose::Report& cuts,
+                bool intervals_checked, const geom::Model& model,
                 const scheme::Registry& registry, std::ostream& out) {
   JsonWriter j(out);
   auto entities = [&](const std::vector<selector::Choice>& list) {
@@ -127,6 +193,8 @@ void write_json(const selector::Selection& sel, bool intervals_checked, const ge
     j.end_array();
   };
   j.begin_object();
+  j.key("decomposition");
+  write_decomposition(cuts, j);
   j.key("volumes");
   entities(sel.volumes);
   j.key("surfaces");
@@ -144,7 +212,12 @@ void write_json(const selector::Selection& sel, bool intervals_checked, const ge
 }  // namespace
 
 int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out) {
-  const pipeline::PlanInput input = pipeline::plan_input(file, size);
+  // Decomposition only happens for jobs without per-entity settings, for
+  // which the default scheme options are the job's own.
+  scheme::Registry defaults;
+  register_builtin_schemes(defaults);
+  const pipeline::PlanInput input =
+      pipeline::plan_input(file, size, &defaults, selector::planner());
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
@@ -153,9 +226,9 @@ int run_plan(const std::string& file, std::optional<double> size, bool json, std
   options.check_intervals = settings.size.has_value();
   const selector::Selection sel = selector::select_schemes(model, registry, settings, options);
   if (json) {
-    write_json(sel, options.check_intervals, model, registry, out);
+    write_json(sel, input.decomposition, options.check_intervals, model, registry, out);
   } else {
-    write_text(sel, options.check_intervals, model, registry, out);
+    write_text(sel, input.decomposition, options.check_intervals, model, registry, out);
   }
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "run_report.h"
 
 #include "framework/core/text.h"
+#include "framework/decompose/report_text.h"
 
 #include <cstdio>
 #include <map>
@@ -37,6 +38,7 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     seconds[{t.dim, t.id}] = t.seconds;
     schemes[{t.dim, t.id}] = t.scheme;
   }
+  for (const auto& l : decompose::report_lines(result.decomposition)) out << "decomposed " << l << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %8s %8s %9s\n", "entity", "scheme",
                 "type", "elements", "min SJ", "mean SJ", "max SJ", "inverted", "time [s]");
@@ -75,6 +77,13 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     if (c.check.max) out << " <= " << fmt("%g", *c.check.max);
     out << ": " << c.violations << " elements outside"
         << (c.failed ? " -- FAILED" : (c.violations ? " (warning)" : ", ok")) << "\n";
+  }
+  if (!result.stages.empty()) {
+    out << "time [s]:";
+    for (const auto& st : result.stages) out << " " << st.stage << " " << fmt("%.3f", st.seconds) << ",";
+    double total = 0;
+    for (const auto& st : result.stages) total += st.seconds;
+    out << " total " << fmt("%.3f", total) << "\n";
   }
   if (result.mesh.verdicts.size() > 1 || result.mesh.incomplete())
     write_verdicts(result.mesh.verdicts, out);

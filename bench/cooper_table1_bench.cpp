@@ -23,7 +23,9 @@ namespace {
 using namespace cooperage;
 
 const char* const kModels[] = {"cylinder_boss", "block_two_bosses_hole", "block_appendages",
-                               "stepped_block", "plate_three_holes"};
+                               "stepped_block", "plate_three_holes",
+                               // cooper III (issue 15): barrels ended by rib propagation
+                               "blind_hole", "flanged_hub"};
 
 void BM_CooperTable1(benchmark::State& state) {
   const std::string name = kModels[state.range(0)];
@@ -46,7 +48,7 @@ void BM_CooperTable1(benchmark::State& state) {
   state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
 }
 BENCHMARK(BM_CooperTable1)
-    ->ArgsProduct({{0, 1, 2, 3, 4}, {1, 2, 4}})
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {1, 2, 4}})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

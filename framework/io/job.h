@@ -121,6 +121,10 @@ struct VertexTypeSetting {
   SourceLocation where;
 };
 
+/// <mesh decompose="auto|off">: cut volumes no volume scheme applies to
+/// into pieces one does (framework/decompose/decompose.h).
+enum class Decompose { Auto, Off };
+
 struct MeshSettings {
   std::optional<double> size;      ///< global element size
   int threads = 0;                 ///< 0: all cores (capped at the hardware's)
@@ -129,6 +133,7 @@ struct MeshSettings {
   /// Largest deviation of a meshed volume (area) from the CAD's, as a
   /// fraction (the journal gives percent); default 0.01.
   std::optional<double> volume_tolerance;
+  Decompose decompose = Decompose::Auto;
   std::vector<CurveSetting> curves;
   std::vector<SurfaceSetting> surfaces;
   std::vector<VolumeSetting> volumes;

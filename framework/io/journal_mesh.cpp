@@ -130,7 +130,8 @@ VertexTypeSetting read_vertex_type(const Element& e) {
 }  // namespace
 
 MeshSettings read_mesh(const Element& mesh) {
-  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance"});
+  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance",
+                         "decompose"});
   MeshSettings m;
   m.size = mesh.number("size", NumberKind::Positive);
   m.threads = mesh.integer("threads", 0).value_or(0);
@@ -142,6 +143,7 @@ MeshSettings read_mesh(const Element& mesh) {
                        *mesh.text("volume_tolerance") + "\"");
     m.volume_tolerance = *t / 100.0;
   }
+  m.decompose = static_cast<Decompose>(mesh.choice("decompose", {"auto", "off"}).value_or(0));
   m.where = mesh.where();
   FirstLine<int> curves, surfaces, volumes;
   FirstLine<std::pair<int, int>> vertices;

@@ -71,13 +71,20 @@ std::string resolve_path(const std::string& base_dir, const std::string& path) {
 }
 
 geom::Model build_geometry(const io::Job& job) {
+  occ::Workbench bench;
+  bench.set_imprint_merge(job.imprint_merge);
+  run_geometry(job, bench);
+  occ::BuildOptions options;
+  options.imprint_merge = job.imprint_merge;
+  return bench.build_model(options);
+}
+
+void run_geometry(const io::Job& job, occ::Workbench& bench) {
   if (job.geometry.empty()) {
     throw MeshingError(ErrorCode::InvalidInput,
                        (job.file.empty() ? std::string("job") : clip_path(job.file)) +
                            ": the journal defines no geometry");
   }
-  occ::Workbench bench;
-  bench.set_imprint_merge(job.imprint_merge);
   for (const io::GeometryStep& step : job.geometry) {
     try {
       apply(bench, step.op, job.base_dir);
@@ -85,9 +92,6 @@ geom::Model build_geometry(const io::Job& job) {
       throw MeshingError(e.code(), e.entity(), where_prefix(step.where) + e.message(), e.hint());
     }
   }
-  occ::BuildOptions options;
-  options.imprint_merge = job.imprint_merge;
-  return bench.build_model(options);
 }
 
 geom::Model load_any(const std::string& path, bool imprint_merge) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "framework/geometry/model.h"
+#include "framework/geometry/occ/workbench.h"
 #include "framework/io/job.h"
 
 #include <string>
@@ -19,6 +20,9 @@ geom::Model build_geometry(const io::Job& job);
 /// the command line (line 0): `cooperage mesh part.step` errors name the
 /// file, not a journal that does not exist.
 std::string where_prefix(const io::SourceLocation& where);
+/// Runs job.geometry in order on `bench` (build_geometry() without the
+/// model), for callers that go on working on the shapes (decomposition).
+void run_geometry(const io::Job& job, occ::Workbench& bench);
 
 /// Reads a model from a CAD file (.step/.stp/.iges/.igs/.brep) or a journal
 /// (.xml, geometry only).

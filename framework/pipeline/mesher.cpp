@@ -375,8 +375,15 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
                              std::to_string(it->second->where.line));
   }
   auto stage_start = Clock::now();
-  RunResult result{build_geometry(job), {}, {}, {}, false, {}};
-  result.stages.push_back({"geometry", seconds_since(stage_start)});
+  RunResult result;
+  {
+    DecomposedGeometry g = build_decomposed_geometry(job, registry, options.planner, options.dim);
+    result.model = std::move(g.model);
+    result.decomposition = std::move(g.decomposition);
+    result.stages.push_back({"geometry", g.geometry_seconds});
+    if (!result.decomposition.volumes.empty())
+      result.stages.push_back({"decompose", seconds_since(stage_start) - g.geometry_seconds});
+  }
   MeshOptions opts = options;
   if (opts.threads == 0) opts.threads = job.mesh->threads;
   result.mesh = mesh_model(result.model, *job.mesh, registry, opts);

@@ -9,6 +9,8 @@
 #include "framework/io/job.h"
 #include "framework/mesh/mesh_db.h"
 #include "framework/pipeline/measure_check.h"
+#include "framework/pipeline/decomposed_geometry.h"
+#include "framework/pipeline/planner.h"
 #include "framework/pipeline/quality_report.h"
 #include "framework/pipeline/scheme_plan.h"
 #include "framework/scheme/registry.h"
@@ -20,11 +22,10 @@
 
 namespace cooperage::pipeline {
 
-/// The planning stage: a scheme for every volume (dim 3) and surface. The
-/// selector provides it (selector::planner(), selector/select_schemes.h);
-/// the pipeline does not depend on the selector, so it is passed in.
-using Planner = std::function<SchemePlan(const geom::Model&, const scheme::Registry&,
-                                         const io::MeshSettings&, int dim)>;
+// The planning stage (Planner, planner.h): a scheme for every volume (dim 3)
+// and surface. The selector provides it (selector::planner(),
+// selector/select_schemes.h); the pipeline does not depend on the selector,
+// so it is passed in.
 
 struct MeshOptions {
   Planner planner;  ///< required: selector::planner()
@@ -120,7 +121,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
                       const scheme::Registry& registry, const MeshOptions& options = {});
 
 struct RunResult {
-  geom::Model model;
+  geom::Model model;               ///< after the automatic decomposition, if any
+  decompose::Report decomposition; ///< the cuts made (empty when none were needed)
   MeshResult mesh;
   QualityReport quality;
   std::vector<std::string> written;  ///< export files written

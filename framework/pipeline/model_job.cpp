@@ -8,6 +8,7 @@
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/check_settings.h"
+#include "framework/pipeline/decomposed_geometry.h"
 
 namespace cooperage::pipeline {
 
@@ -29,6 +30,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   job.imprint_merge = options.imprint_merge;
   job.mesh = io::MeshSettings{};
   job.mesh->size = options.size;
+  job.mesh->decompose = options.decompose;
   if (options.elements != io::ElementKind::Hex) {
     const geom::Model m = load_any(model, options.imprint_merge);
     for (const geom::Volume& v : m.volumes()) {
@@ -55,14 +57,31 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   return job;
 }
 
-PlanInput plan_input(const std::string& file, std::optional<double> size) {
+PlanInput plan_input(const std::string& file, std::optional<double> size,
+                     const scheme::Registry* registry, const Planner& planner) {
   std::string ext = std::filesystem::path(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   PlanInput in;
   if (ext == ".xml") {
-    const io::Job job = io::read_journal(file);
+    io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;
-    in.model = build_geometry(job);
+    if (registry) {
+      if (size) in.settings.size = size;
+      job.mesh = in.settings;
+      DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
+      in.model = std::move(g.model);
+      in.decomposition = std::move(g.decomposition);
+    } else {
+      in.model = build_geometry(job);
+    }
+  } else if (registry) {
+    ModelJobOptions options;
+    options.size = size.value_or(1.0);
+    io::Job job = model_job(file, options);
+    if (!size) job.mesh->size.reset();
+    DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
+    in.model = std::move(g.model);
+    in.decomposition = std::move(g.decomposition);
   } else {
     in.model = load_any(file);
   }

@@ -7,8 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "framework/decompose/decompose.h"
 #include "framework/geometry/model.h"
 #include "framework/io/job.h"
+#include "framework/pipeline/planner.h"
+#include "framework/scheme/registry.h"
 
 namespace cooperage::pipeline {
 
@@ -26,6 +29,8 @@ struct ModelJobOptions {
   std::string export_option = "-o";
   std::string report_option = "--report";
   std::string binary_option = "--binary";
+  /// Cut volumes no volume scheme applies to (framework/decompose/).
+  io::Decompose decompose = io::Decompose::Auto;
 };
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at
@@ -43,12 +48,17 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options);
 struct PlanInput {
   geom::Model model;
   io::MeshSettings settings;
+  decompose::Report decomposition;  ///< the cuts made (none without a registry)
 };
 
 /// Reads `file`, builds its model, applies `size` (overriding the
 /// journal's) and checks the settings against the model (check_settings).
-/// @throws MeshingError as read_journal(), build_geometry(), load_any() and
-///         check_settings() do.
-PlanInput plan_input(const std::string& file, std::optional<double> size);
+/// With a registry and a planner, volumes no volume scheme applies to are
+/// decomposed as `cooperage mesh` and `run` do (build_decomposed_geometry);
+/// a CAD file is planned with decompose="auto".
+/// @throws MeshingError as read_journal(), build_geometry(), load_any(),
+///         build_decomposed_geometry() and check_settings() do.
+PlanInput plan_input(const std::string& file, std::optional<double> size,
+                     const scheme::Registry* registry = nullptr, const Planner& planner = {});
 
 }  // namespace cooperage::pipeline

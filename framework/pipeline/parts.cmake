@@ -1,5 +1,6 @@
 cooperage_framework_part(pipeline SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/build_geometry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/decomposed_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/check_settings.cpp
   ${CMAKE_CURRENT_LIST_DIR}/interval_setup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_curves.cpp

@@ -124,6 +124,24 @@ TopoDS_Shape merge_alone(const TopoDS_Shape& shape);
 /// True when the shape holds at least one sub-shape of the given type.
 bool contains_solid(const TopoDS_Shape& shape);
 
+/// A solid or free face of the named shapes, with the index of its shape.
+struct Piece {
+  TopoDS_Shape shape;  ///< a solid, or a free face
+  int owner = 0;       ///< index into the named shapes
+};
+
+/// Solids and free faces of the named shapes, in creation order
+/// (model_builder.cpp).
+void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,
+             std::vector<Piece>& faces);
+/// Imprint + merge: one general fuse of every piece; each piece is replaced by
+/// its images (a solid partly overlapping another splits into several).
+void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces);
+/// The model of the pieces: volumes in solid order, names from
+/// names[owner] (".k" appended when an owner has several solids); validated.
+geom::Model number_model(const std::vector<Piece>& solids, const std::vector<Piece>& faces,
+                         const std::vector<std::string>& names, double unit_in_metres);
+
 /// Evaluator factories (curve_geometry.cpp, surface_geometry.cpp).
 std::shared_ptr<const geom::CurveGeometry> make_curve_geometry(const TopoDS_Edge& edge);
 /// `face` oriented as in the surface's first volume: its topological normal

@@ -15,7 +15,10 @@
 #include "framework/geometry/occ/detail.h"
 #include "framework/geometry/validate.h"
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BinTools.hxx>
@@ -26,15 +29,18 @@
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
+#include <ShapeFix_Solid.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -136,10 +142,8 @@ TopoDS_Shape read_brep(const std::string& path) {
   return shape;
 }
 
-/// Closed shells that are not inside solids become solids (IGES and some
-/// STEP files carry shells only); the rest is kept as is.
-TopoDS_Shape solidify(const TopoDS_Shape& shape) {
-  if (detail::contains_solid(shape)) return shape;
+/// The closed shells of `shape` as solids (oriented outward), or null.
+TopoDS_Shape closed_shells_as_solids(const TopoDS_Shape& shape) {
   TopoDS_Compound out;
   BRep_Builder b;
   b.MakeCompound(out);
@@ -147,12 +151,34 @@ TopoDS_Shape solidify(const TopoDS_Shape& shape) {
   for (TopExp_Explorer ex(shape, TopAbs_SHELL); ex.More(); ex.Next()) {
     const TopoDS_Shell& shell = TopoDS::Shell(ex.Current());
     if (!BRep_Tool::IsClosed(shell)) continue;
-    BRepBuilderAPI_MakeSolid ms(shell);
-    if (!ms.IsDone()) continue;
-    b.Add(out, ms.Solid());
+    ShapeFix_Solid fix;
+    const TopoDS_Solid solid = fix.SolidFromShell(shell);
+    if (solid.IsNull()) continue;
+    b.Add(out, solid);
     any = true;
   }
-  return any ? TopoDS_Shape(out) : shape;
+  return any ? TopoDS_Shape(out) : TopoDS_Shape();
+}
+
+/// Closed shells that are not inside solids become solids (IGES and some
+/// STEP files carry shells only). Faces that close a volume only once their
+/// shared edges are sewn (a surface model written as an "open shell", e.g.
+/// Gmsh's cube_filet.stp) are sewn first; the rest is kept as is.
+TopoDS_Shape solidify(const TopoDS_Shape& shape) {
+  if (detail::contains_solid(shape)) return shape;
+  if (TopoDS_Shape solids = closed_shells_as_solids(shape); !solids.IsNull()) return solids;
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  if (box.IsVoid()) return shape;
+  // Gaps up to 1e-5 of the model's size are seams the writer left open.
+  const double tolerance = std::max(1e-7, 1e-5 * std::sqrt(box.SquareExtent()));
+  BRepBuilderAPI_Sewing sewing(tolerance);
+  sewing.Add(shape);
+  sewing.Perform();
+  const TopoDS_Shape sewn = sewing.SewedShape();
+  if (sewn.IsNull()) return shape;
+  if (TopoDS_Shape solids = closed_shells_as_solids(sewn); !solids.IsNull()) return solids;
+  return shape;
 }
 
 /// Which reader a file needs, from its extension.

@@ -42,10 +42,7 @@
 namespace cooperage::occ {
 namespace {
 
-struct Piece {
-  TopoDS_Shape shape;  ///< a solid, or a free face
-  int owner = 0;       ///< index into the named shapes
-};
+using detail::Piece;
 
 geom::BoundingBox box_of(const TopoDS_Shape& s) {
   Bnd_Box b;
@@ -58,6 +55,10 @@ geom::BoundingBox box_of(const TopoDS_Shape& s) {
   out.add(Vec3(x1, y1, z1));
   return out;
 }
+
+}  // namespace
+
+namespace detail {
 
 /// Solids and free faces of the named shapes, in creation order.
 void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,
@@ -104,10 +105,16 @@ void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces) {
   images(faces, TopAbs_FACE);
 }
 
+}  // namespace detail
+
+namespace {
+
+using detail::Piece;
+
 class Numbering {
  public:
   geom::Model build(const std::vector<Piece>& solids, const std::vector<Piece>& free_faces,
-                    const std::vector<NamedShape>& shapes) {
+                    const std::vector<std::string>& names) {
     for (size_t v = 0; v < solids.size(); ++v) walk_solid(TopoDS::Solid(solids[v].shape), static_cast<int>(v) + 1);
     for (const auto& f : free_faces) face_index(TopoDS::Face(f.shape));
 
@@ -155,7 +162,7 @@ class Numbering {
       vol.volume = std::abs(props.Mass());
       vol.box = box_of(solids[v].shape);
       const int owner = solids[v].owner;
-      vol.name = shapes[static_cast<size_t>(owner)].name;
+      vol.name = names[static_cast<size_t>(owner)];
       if (pieces_per_owner[owner] > 1) vol.name += "." + std::to_string(++seen_per_owner[owner]);
       model.add_volume(vol);
     }
@@ -252,6 +259,14 @@ class Numbering {
 
 namespace detail {
 
+geom::Model number_model(const std::vector<Piece>& solids, const std::vector<Piece>& faces,
+                         const std::vector<std::string>& names, double unit_in_metres) {
+  geom::Model model = Numbering().build(solids, faces, names);
+  if (unit_in_metres > 0.0) model.set_unit_in_metres(unit_in_metres);
+  geom::validate(model);
+  return model;
+}
+
 TopoDS_Shape merge_alone(const TopoDS_Shape& shape) {
   std::vector<Piece> solids, faces;
   collect({NamedShape{"", shape, {}}}, solids, faces);
@@ -279,10 +294,9 @@ geom::Model build_model_of(const std::vector<NamedShape>& shapes, const BuildOpt
     if (solids.empty() && faces.empty())
       throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
     if (options.imprint_merge && !premerged) imprint_merge(solids, faces);
-    geom::Model model = Numbering().build(solids, faces, shapes);
-    if (unit_in_metres > 0.0) model.set_unit_in_metres(unit_in_metres);
-    geom::validate(model);
-    return model;
+    std::vector<std::string> names;
+    for (const NamedShape& s : shapes) names.push_back(s.name);
+    return number_model(solids, faces, names, unit_in_metres);
   });
 }
 

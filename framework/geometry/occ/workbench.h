@@ -15,6 +15,8 @@ namespace cooperage::occ {
 
 using geom::Vec3;
 
+class SolidPieces;
+
 struct BuildOptions {
   /// Fragment all solids so that touching volumes share one Surface and
   /// every shared curve exists once (the conformal-assembly step).
@@ -115,6 +117,7 @@ class Workbench {
   struct Impl;
 
  private:
+  friend class SolidPieces;  // solid_pieces.h reads the shapes
   std::unique_ptr<Impl> impl_;
 };
 

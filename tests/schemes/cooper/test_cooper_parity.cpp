@@ -10,6 +10,7 @@
 #include "framework/core/error.h"
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/decomposed_geometry.h"
 #include "framework/pipeline/mesher.h"
 #include "must_mesh_parts.h"
 #include "schemes/builtin_schemes.h"
@@ -100,7 +101,11 @@ void check_journal(const fs::path& path) {
   try {
     job = io::read_journal(path.string());
     if (!job.mesh) return;
-    model = pipeline::build_geometry(job);
+    // The model `cooperage run` meshes: after the automatic decomposition
+    // (issue 17) when the journal asks for it.
+    scheme::Registry registry;
+    register_builtin_schemes(registry, builtin_options(*job.mesh));
+    model = pipeline::build_decomposed_geometry(job, registry, selector::planner()).model;
   } catch (const MeshingError&) {
     return;  // a journal about errors (a missing import, a bad value): no model
   }

@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -130,7 +131,14 @@ TEST(OccImportDamaged, EveryRealCadFileLoadsAndValidates) {
       const Model m = load_model(entry.path().string());
       EXPECT_GT(m.volumes().size() + m.surfaces().size(), 0u) << entry.path();
     } catch (const MeshingError& e) {
-      ADD_FAILURE() << entry.path() << ": " << e.what();
+      // A surface model whose faces do not close a volume even sewn is
+      // refused, saying so; the file itself must say it has no solid.
+      std::ifstream in(entry.path());
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const bool surface_model = text.find("SHELL_BASED_SURFACE_MODEL") != std::string::npos &&
+                                 text.find("MANIFOLD_SOLID_BREP") == std::string::npos;
+      if (!surface_model || std::string(e.what()).find("holds no solids") == std::string::npos)
+        ADD_FAILURE() << entry.path() << ": " << e.what();
     }
   }
   EXPECT_GE(files, 29);

@@ -1,0 +1,48 @@
+// Candidate cuts of a volume (issue 17): the planes of its own planar faces
+// (extended), the cylinders of its cylindrical faces, and planes through its
+// straight feature edges along the candidate sweep axes (the normals of its
+// planar faces and the axes of its cylinders). Blacker 1996, sec. 3: the
+// user's hand decomposition of Fig. 3a is such a cut, through the plane of a
+// boss's side face, so that each piece projects along one axis.
+#pragma once
+
+#include "framework/decompose/cut_surface.h"
+#include "framework/geometry/model.h"
+
+#include <string>
+#include <vector>
+
+namespace cooperage::decompose {
+
+struct CutCandidate {
+  CutSurface surface;
+  /// Where it comes from, for a person: "plane of surface 12",
+  /// "cylinder of surface 9", "plane through curve 7 along z".
+  std::string through;
+};
+
+struct CandidateOptions {
+  /// Sweep axes tried for planes through edges, the most face area first.
+  int max_axes = 6;
+  /// A straight edge is a feature edge when the outward normals of its two
+  /// faces differ by more than this (degrees).
+  double feature_angle_deg = 20.0;
+  /// Two candidates closer than this (model units) are one.
+  double tolerance = 1e-6;
+};
+
+/// Candidates in a deterministic order that depends only on the topology
+/// (ids), not on the placement of the part: face planes (surface order),
+/// then cylinders, then planes through edges (axis order, curve order).
+/// Duplicates (the same surface from several faces or edges) appear once,
+/// under their first source.
+std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
+                                         const CandidateOptions& options = {});
+
+/// The candidate sweep axes of a volume: unit normals of its planar faces
+/// and axes of its cylindrical faces, parallel ones merged (the sign of the
+/// first kept), ordered by the area of the faces behind them (largest
+/// first; ties by first appearance).
+std::vector<geom::Vec3> sweep_axes(const geom::Model& model, int volume);
+
+}  // namespace cooperage::decompose

@@ -1,0 +1,86 @@
+#include "framework/decompose/decompose.h"
+
+#include "framework/core/error.h"
+#include "framework/decompose/piece_verdict.h"
+#include "framework/decompose/search_cuts.h"
+
+#include <chrono>
+
+namespace cooperage::decompose {
+
+std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry) {
+  std::vector<int> out;
+  for (const geom::Volume& v : model.volumes()) {
+    if (!best_scheme(model, v.id, registry).ok) out.push_back(v.id);
+  }
+  return out;
+}
+
+Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
+                     const scheme::Registry& registry, const ModelCheck& check,
+                     const DecomposeOptions& options) {
+  if (!(options.size > 0)) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "automatic decomposition needs a positive element size");
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  Decomposed out;
+  const int n = static_cast<int>(model.volumes().size());
+  if (solids.size() != n) {
+    throw MeshingError(ErrorCode::Internal, "decomposition: " + std::to_string(solids.size()) +
+                                                " solids for " + std::to_string(n) + " volumes");
+  }
+  std::vector<int> origin;  // per solid of `result`: the input volume id
+  for (int v = 1; v <= n; ++v) origin.push_back(v);
+  occ::SolidPieces result = solids;
+  // Volumes in descending id order so that replacing one solid by its pieces
+  // keeps the indices of the ones still to do.
+  const std::vector<int> todo = unmeshable_volumes(model, registry);
+  for (auto it = todo.rbegin(); it != todo.rend(); ++it) {
+    const int v = *it;
+    VolumeDecomposition d;
+    d.volume = v;
+    d.name = model.volume(v).name;
+    d.why = best_scheme(model, v, registry).why;
+    CutSearch search(registry, check, options);
+    auto plan = search.solve(solids.only(v - 1));
+    d.tried = search.tried();
+    out.report.tried += d.tried;
+    if (!plan) {
+      // The details last, in parentheses: the command line puts them on a
+      // line of their own.
+      throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
+                         "no hex scheme applies; automatic decomposition " + search.failure() +
+                             " (" + d.why + ")",
+                         "`cooperage plan` gives every scheme's reason; cut the volume with "
+                         "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
+    }
+    d.cuts = plan->cuts;
+    result = result.replace(v - 1, plan->pieces);
+    origin.erase(origin.begin() + (v - 1));
+    origin.insert(origin.begin() + (v - 1), static_cast<size_t>(plan->pieces.size()), v);
+    out.report.volumes.insert(out.report.volumes.begin(), std::move(d));
+  }
+  if (todo.empty()) {
+    out.model = model;
+  } else {
+    out.model = result.build_model(true);
+    if (static_cast<int>(out.model.volumes().size()) != result.size()) {
+      throw MeshingError(ErrorCode::GeometryError,
+                         "decomposition: imprinting the pieces changed their number (" +
+                             std::to_string(result.size()) + " pieces, " +
+                             std::to_string(out.model.volumes().size()) + " volumes)");
+    }
+  }
+  out.report.origin = origin;
+  for (VolumeDecomposition& d : out.report.volumes) {
+    for (size_t k = 0; k < origin.size(); ++k) {
+      if (origin[k] == d.volume) d.pieces.push_back(static_cast<int>(k) + 1);
+    }
+  }
+  out.report.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace cooperage::decompose

@@ -1,0 +1,25 @@
+#include "framework/decompose/piece_verdict.h"
+
+namespace cooperage::decompose {
+
+PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry) {
+  PieceVerdict out;
+  const scheme::VolumeView view{model, volume, nullptr};
+  for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
+    const scheme::Applicability a = s->applicable(view);
+    if (a.ok) {
+      if (!out.ok || a.score > out.score) {
+        out.ok = true;
+        out.scheme = std::string(s->name());
+        out.score = a.score;
+      }
+    } else {
+      out.why += (out.why.empty() ? "" : "; ") + std::string(s->name()) + ": " + a.why;
+    }
+  }
+  if (out.ok) out.why.clear();
+  if (!out.ok && out.why.empty()) out.why = "no volume scheme registered";
+  return out;
+}
+
+}  // namespace cooperage::decompose

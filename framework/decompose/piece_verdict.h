@@ -1,0 +1,24 @@
+// What the volume schemes say of one volume a priori (applicable() through
+// the registry, never a scheme's internals), reduced to the best choice: the
+// decomposition's test of whether a piece needs no further cut.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/scheme/registry.h"
+
+#include <string>
+
+namespace cooperage::decompose {
+
+struct PieceVerdict {
+  bool ok = false;
+  std::string scheme;  ///< best applicable scheme (ok only)
+  double score = 0.0;  ///< its a-priori score (ok only)
+  /// Every scheme's refusal when none applies ("map: ...; cooper: ...").
+  std::string why;
+};
+
+/// The applicable volume scheme with the best score (ties: registry order).
+PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry);
+
+}  // namespace cooperage::decompose

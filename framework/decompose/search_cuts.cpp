@@ -1,0 +1,198 @@
+#include "framework/decompose/search_cuts.h"
+
+#include "framework/core/error.h"
+#include "framework/core/log.h"
+#include "framework/decompose/cut_candidates.h"
+#include "framework/decompose/cut_score.h"
+#include "framework/decompose/piece_verdict.h"
+#include "framework/decompose/volume_samples.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace cooperage::decompose {
+namespace {
+
+// One candidate cut, evaluated.
+struct Evaluated {
+  const CutCandidate* candidate = nullptr;
+  occ::SolidPieces pieces;
+  std::vector<PieceVerdict> verdicts;
+  CutOutcome outcome;
+  double score = 0.0;
+  geom::Model model;
+};
+
+// Thinnest piece across the cut (model units): each piece lies on one side;
+// its thickness is the largest distance of its points from the cut.
+double thinnest_piece(const geom::Model& pieces, const CutSurface& cut) {
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (const geom::Volume& v : pieces.volumes()) {
+    const Span s = span(cut, volume_samples(pieces, v.id));
+    thinnest = std::min(thinnest, std::max(-s.below, s.above));
+  }
+  return thinnest;
+}
+
+CutOutcome summarise(const geom::Model& pieces, const std::vector<PieceVerdict>& verdicts,
+                     double thinnest, double size) {
+  CutOutcome o;
+  o.pieces = static_cast<int>(verdicts.size());
+  o.thinnest = thinnest / size;
+  double total = 0.0, meshable = 0.0, sum = 0.0;
+  int ok = 0;
+  o.min_score = 1.0;
+  for (size_t k = 0; k < verdicts.size(); ++k) {
+    const double vol = pieces.volumes()[k].volume;
+    total += vol;
+    if (!verdicts[k].ok) {
+      ++o.failing;
+      continue;
+    }
+    ++ok;
+    meshable += vol;
+    sum += verdicts[k].score;
+    o.min_score = std::min(o.min_score, verdicts[k].score);
+  }
+  if (ok == 0) o.min_score = 0.0;
+  o.mean_score = ok ? sum / ok : 0.0;
+  o.meshable_fraction = total > 0 ? meshable / total : 0.0;
+  return o;
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
+  return {e.candidate->surface, e.candidate->through, depth, e.outcome.pieces, thinnest};
+}
+
+}  // namespace
+
+std::string CutSearch::failure() const {
+  std::string out = "tried " + std::to_string(tried_) + " cut" + (tried_ == 1 ? "" : "s");
+  if (crossing_ == 0) {
+    return out + "; no cut through its faces or edges leaves pieces at least one element "
+                 "layer (" + number(options_.size) + ") thick";
+  }
+  if (!conflict_.empty()) out += "; " + conflict_;
+  if (!best_partial_.empty()) out += "; " + best_partial_;
+  if (conflict_.empty() && best_partial_.empty()) out += "; no cut leaves sweepable pieces";
+  return out;
+}
+
+std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int depth,
+                                          const std::vector<CutCandidate>& inherited) {
+  const geom::Model model = solid.build_model(false);
+  if (model.volumes().size() != 1) return std::nullopt;
+  if (best_scheme(model, 1, registry_).ok) return SolidPlan{solid, {}};
+  if (depth >= options_.max_depth) return std::nullopt;
+
+  const double size = options_.size;
+  const std::vector<geom::Vec3> samples = volume_samples(model, 1);
+  // The piece's own candidates, then those of the solids it was cut from.
+  std::vector<CutCandidate> candidates = cut_candidates(model, 1);
+  for (const CutCandidate& c : inherited) {
+    bool known = false;
+    for (const CutCandidate& k : candidates) known = known || same_surface(k.surface, c.surface, 1e-6);
+    if (!known) candidates.push_back(c);
+  }
+  std::vector<Evaluated> evaluated;
+  for (const CutCandidate& c : candidates) {
+    if (tried_ >= options_.max_cuts) break;
+    // A cut must leave at least one element layer on each side.
+    const Span s = span(c.surface, samples);
+    if (s.below > -size || s.above < size) continue;
+    if (depth == 0) ++crossing_;
+    ++tried_;
+    Evaluated e;
+    e.candidate = &c;
+    try {
+      e.pieces = solid.split(0, c.surface);
+      if (e.pieces.size() < 2) continue;
+      e.model = e.pieces.build_model(false);
+    } catch (const MeshingError&) {
+      continue;  // the kernel could not make this cut: try the next
+    }
+    const double thinnest = thinnest_piece(e.model, c.surface);
+    if (thinnest < size) continue;  // a sliver thinner than one element layer
+    for (const geom::Volume& v : e.model.volumes())
+      e.verdicts.push_back(best_scheme(e.model, v.id, registry_));
+    e.outcome = summarise(e.model, e.verdicts, thinnest, size);
+    if (log::threshold() <= log::Level::Info) {
+      std::string schemes;
+      for (const auto& v : e.verdicts) schemes += " " + (v.ok ? v.scheme : std::string("-"));
+      log::info("decompose: depth " + std::to_string(depth) + ", " + c.through + " (" +
+                describe(c.surface) + "): " + std::to_string(e.outcome.pieces) +
+                " pieces," + schemes + ", thinnest " + std::to_string(thinnest));
+    }
+    evaluated.push_back(std::move(e));
+  }
+
+  // Cuts whose pieces all have a scheme, best first; the first that plans
+  // as a whole (shared faces agree, intervals feasible) wins.
+  std::vector<Evaluated*> complete, partial;
+  for (Evaluated& e : evaluated) {
+    if (e.outcome.failing == 0) {
+      e.score = complete_score(e.outcome);
+      complete.push_back(&e);
+    } else {
+      e.score = partial_score(e.outcome);
+      partial.push_back(&e);
+    }
+  }
+  const auto by_score = [](const Evaluated* a, const Evaluated* b) { return better(a->score, b->score); };
+  std::stable_sort(complete.begin(), complete.end(), by_score);
+  std::stable_sort(partial.begin(), partial.end(), by_score);
+  for (Evaluated* e : complete) {
+    const std::string reason = check_(e->model);
+    if (reason.empty()) {
+      return SolidPlan{e->pieces, {applied(*e, depth, e->outcome.thinnest * size)}};
+    }
+    log::info("decompose: " + e->candidate->through + " does not plan: " + reason);
+    if (conflict_.empty()) {
+      conflict_ = "the best cut with sweepable pieces, " + e->candidate->through + " (" +
+                  describe(e->candidate->surface) + "), does not plan: " + reason;
+    }
+  }
+  if (depth == 0 && !partial.empty() && best_partial_.empty()) {
+    const Evaluated& e = *partial.front();
+    for (size_t k = 0; k < e.verdicts.size(); ++k) {
+      if (e.verdicts[k].ok) continue;
+      best_partial_ = "the best, " + e.candidate->through + " (" + describe(e.candidate->surface) +
+                      "), leaves a piece of volume " + number(e.model.volumes()[k].volume) +
+                      " not sweepable because " + e.verdicts[k].why;
+      break;
+    }
+  }
+  if (depth + 1 >= options_.max_depth) return std::nullopt;
+  // Cut again the pieces the best partial cuts leave.
+  const int branches = std::min(static_cast<int>(partial.size()), options_.branches);
+  for (int b = 0; b < branches; ++b) {
+    const Evaluated& e = *partial[static_cast<size_t>(b)];
+    SolidPlan plan{e.pieces, {applied(e, depth, e.outcome.thinnest * size)}};
+    bool ok = true;
+    for (int k = e.pieces.size() - 1; k >= 0 && ok; --k) {
+      if (e.verdicts[static_cast<size_t>(k)].ok) continue;
+      auto sub = solve(e.pieces.only(k), depth + 1, candidates);
+      if (!sub) {
+        ok = false;
+        break;
+      }
+      plan.pieces = plan.pieces.replace(k, sub->pieces);
+      plan.cuts.insert(plan.cuts.end(), sub->cuts.begin(), sub->cuts.end());
+    }
+    if (!ok) continue;
+    const std::string reason = check_(plan.pieces.build_model(true));
+    if (reason.empty()) return plan;
+    if (conflict_.empty()) conflict_ = "the cuts found do not plan together: " + reason;
+  }
+  return std::nullopt;
+}
+
+}  // namespace cooperage::decompose

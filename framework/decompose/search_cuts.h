@@ -1,0 +1,48 @@
+// The bounded search for the cuts of one solid: evaluate every candidate cut
+// (kernel split, pieces' a-priori verdicts, thickness), take the best cut
+// whose pieces all plan together, else recurse on the best partial cuts.
+#pragma once
+
+#include "framework/decompose/cut_candidates.h"
+#include "framework/decompose/decompose.h"
+
+#include <optional>
+
+namespace cooperage::decompose {
+
+/// The cuts found for one solid and the solids they give.
+struct SolidPlan {
+  occ::SolidPieces pieces;
+  std::vector<AppliedCut> cuts;
+};
+
+/// Searches the cuts of one solid (a SolidPieces of size 1).
+class CutSearch {
+ public:
+  CutSearch(const scheme::Registry& registry, const ModelCheck& check,
+            const DecomposeOptions& options)
+      : registry_(registry), check_(check), options_(options) {}
+
+  /// The decomposition of `solid`, or nullopt (then failure() says why).
+  std::optional<SolidPlan> solve(const occ::SolidPieces& solid) { return solve(solid, 0, {}); }
+
+  int tried() const { return tried_; }
+  /// Why the search failed, for a person.
+  std::string failure() const;
+
+ private:
+  /// `inherited`: the candidates of the solids this one was cut from (the
+  /// part's own faces extended, which a piece no longer has as faces).
+  std::optional<SolidPlan> solve(const occ::SolidPieces& solid, int depth,
+                                 const std::vector<CutCandidate>& inherited);
+
+  const scheme::Registry& registry_;
+  const ModelCheck& check_;
+  DecomposeOptions options_;
+  int tried_ = 0;
+  int crossing_ = 0;     ///< candidates crossing the volume by a layer on each side
+  std::string best_partial_;   ///< what the best cut at depth 0 left unmeshable
+  std::string conflict_;       ///< why the first complete cut did not plan
+};
+
+}  // namespace cooperage::decompose

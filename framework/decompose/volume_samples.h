@@ -1,0 +1,19 @@
+// Points on the boundary of a volume (its vertices and points along its
+// curves), the cheap stand-in for its shape when the decomposition asks on
+// which side of a cutting surface a volume lies and how thick a piece is.
+#pragma once
+
+#include "framework/geometry/model.h"
+
+#include <vector>
+
+namespace cooperage::decompose {
+
+/// The curves bounding a volume (every loop of every surface), ascending.
+std::vector<int> curves_of(const geom::Model& model, int volume);
+
+/// The vertices of the volume, then `per_curve` points inside each of its
+/// curves (evenly in parameter), in curve id order.
+std::vector<geom::Vec3> volume_samples(const geom::Model& model, int volume, int per_curve = 7);
+
+}  // namespace cooperage::decompose

@@ -1,0 +1,145 @@
+// SolidPieces: the solids of a workbench, cut one at a time by planes or
+// cylinders (BRepAlgoAPI_Splitter, as the journal's webcut) and numbered into
+// a model by the same steps as Workbench::build_model.
+#include "framework/geometry/occ/solid_pieces.h"
+
+#include "framework/geometry/occ/detail.h"
+
+#include <BRepAlgoAPI_Splitter.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Cylinder.hxx>
+#include <gp_Pln.hxx>
+
+#include <cmath>
+
+namespace cooperage::occ {
+
+struct SolidPieces::Impl {
+  std::vector<detail::Piece> solids;
+  std::vector<detail::Piece> faces;
+  std::vector<std::string> names;  ///< by owner
+  double unit_in_metres = 0.0;
+};
+
+SolidPieces::SolidPieces() : impl_(std::make_unique<Impl>()) {}
+SolidPieces::~SolidPieces() = default;
+SolidPieces::SolidPieces(const SolidPieces& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
+SolidPieces& SolidPieces::operator=(const SolidPieces& o) {
+  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  return *this;
+}
+SolidPieces::SolidPieces(SolidPieces&&) noexcept = default;
+SolidPieces& SolidPieces::operator=(SolidPieces&&) noexcept = default;
+
+SolidPieces SolidPieces::of(const Workbench& bench, const BuildOptions& options) {
+  silence_kernel_output();
+  SolidPieces out;
+  detail::guarded(ErrorCode::GeometryError, "collecting the solids", [&] {
+    detail::collect(bench.impl_->shapes, out.impl_->solids, out.impl_->faces);
+    if (options.imprint_merge) detail::imprint_merge(out.impl_->solids, out.impl_->faces);
+  });
+  for (const NamedShape& s : bench.impl_->shapes) out.impl_->names.push_back(s.name);
+  out.impl_->unit_in_metres = bench.impl_->unit_in_metres;
+  return out;
+}
+
+int SolidPieces::size() const { return static_cast<int>(impl_->solids.size()); }
+
+namespace {
+
+void check_index(const SolidPieces& p, int index) {
+  if (index < 0 || index >= p.size())
+    throw MeshingError(ErrorCode::Internal, "solid index " + std::to_string(index) + " out of range");
+}
+
+// A face of the cutting surface that covers the whole box of `shape`.
+TopoDS_Face tool_face(const TopoDS_Shape& shape, const CutSurface& cut) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  const Vec3 lo(x0, y0, z0), hi(x1, y1, z1);
+  const Vec3 centre = 0.5 * (lo + hi);
+  const Vec3 dir = cut.direction.normalized();
+  // Centre the tool on the point of the surface's axis/plane nearest the box.
+  const Vec3 foot = cut.kind == CutSurface::Kind::Plane
+                        ? Vec3(centre - dir * dir.dot(centre - cut.origin))
+                        : Vec3(cut.origin + dir * dir.dot(centre - cut.origin));
+  const double half = 2.0 * ((hi - lo).norm() + (centre - foot).norm()) + 1.0;
+  const gp_Ax3 frame(detail::to_pnt(foot), detail::checked_dir("cut", dir, "cut direction"));
+  if (cut.kind == CutSurface::Kind::Plane) {
+    return BRepBuilderAPI_MakeFace(gp_Pln(frame), -half, half, -half, half).Face();
+  }
+  if (!(cut.radius > 0.0) || !std::isfinite(cut.radius))
+    throw MeshingError(ErrorCode::InvalidInput, "a cylindrical cut needs a positive radius");
+  return BRepBuilderAPI_MakeFace(gp_Cylinder(frame, cut.radius), 0.0, 2.0 * M_PI, -half, half)
+      .Face();
+}
+
+}  // namespace
+
+SolidPieces SolidPieces::only(int index) const {
+  check_index(*this, index);
+  SolidPieces out;
+  detail::Piece p = impl_->solids[static_cast<size_t>(index)];
+  out.impl_->names = {impl_->names[static_cast<size_t>(p.owner)]};
+  p.owner = 0;
+  out.impl_->solids.push_back(p);
+  out.impl_->unit_in_metres = impl_->unit_in_metres;
+  return out;
+}
+
+SolidPieces SolidPieces::split(int index, const CutSurface& cut) const {
+  check_index(*this, index);
+  silence_kernel_output();
+  const detail::Piece& target = impl_->solids[static_cast<size_t>(index)];
+  SolidPieces out;
+  out.impl_->names = {impl_->names[static_cast<size_t>(target.owner)]};
+  out.impl_->unit_in_metres = impl_->unit_in_metres;
+  detail::guarded(ErrorCode::GeometryError, "cutting solid " + std::to_string(index + 1), [&] {
+    BRepAlgoAPI_Splitter splitter;
+    TopTools_ListOfShape args, tools;
+    args.Append(target.shape);
+    tools.Append(tool_face(target.shape, cut));
+    splitter.SetArguments(args);
+    splitter.SetTools(tools);
+    splitter.SetRunParallel(Standard_False);
+    splitter.Build();
+    if (!splitter.IsDone() || splitter.HasErrors())
+      throw MeshingError(ErrorCode::GeometryError,
+                         "cutting solid " + std::to_string(index + 1) + " failed in the kernel");
+    for (TopExp_Explorer ex(splitter.Shape(), TopAbs_SOLID); ex.More(); ex.Next())
+      out.impl_->solids.push_back({ex.Current(), 0});
+  });
+  return out;
+}
+
+SolidPieces SolidPieces::replace(int index, const SolidPieces& pieces) const {
+  check_index(*this, index);
+  SolidPieces out(*this);
+  auto& solids = out.impl_->solids;
+  const int owner = solids[static_cast<size_t>(index)].owner;
+  solids.erase(solids.begin() + index);
+  std::vector<detail::Piece> added;
+  for (const detail::Piece& p : pieces.impl_->solids) added.push_back({p.shape, owner});
+  solids.insert(solids.begin() + index, added.begin(), added.end());
+  return out;
+}
+
+geom::Model SolidPieces::build_model(bool imprint_merge) const {
+  silence_kernel_output();
+  return detail::guarded(ErrorCode::GeometryError, "building the model of the pieces", [&] {
+    std::vector<detail::Piece> solids = impl_->solids, faces = impl_->faces;
+    if (solids.empty() && faces.empty())
+      throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
+    if (imprint_merge) detail::imprint_merge(solids, faces);
+    return detail::number_model(solids, faces, impl_->names, impl_->unit_in_metres);
+  });
+}
+
+}  // namespace cooperage::occ

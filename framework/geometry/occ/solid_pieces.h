@@ -1,0 +1,68 @@
+// The solids of a workbench as separate pieces that can be cut by a plane or
+// a cylinder and turned back into a model: what the automatic decomposition
+// (framework/decompose/) works on. No OCCT type appears here.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/geometry/occ/workbench.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cooperage::occ {
+
+/// An unbounded cutting surface. Plane: through `origin` with unit normal
+/// `direction`. Cylinder: axis through `origin` along unit `direction`,
+/// radius `radius` (> 0).
+struct CutSurface {
+  enum class Kind { Plane, Cylinder };
+  Kind kind = Kind::Plane;
+  Vec3 origin = Vec3::Zero();
+  Vec3 direction = Vec3::UnitZ();
+  double radius = 0.0;
+};
+
+/// Solids (and free faces) in model volume order: piece i is volume i + 1 of
+/// build_model(). Copies are cheap (the kernel shapes are shared handles).
+class SolidPieces {
+ public:
+  SolidPieces();
+  ~SolidPieces();
+  SolidPieces(const SolidPieces&);
+  SolidPieces& operator=(const SolidPieces&);
+  SolidPieces(SolidPieces&&) noexcept;
+  SolidPieces& operator=(SolidPieces&&) noexcept;
+
+  /// The solids Workbench::build_model(options) numbers as volumes 1..n,
+  /// imprinted and merged as it does.
+  static SolidPieces of(const Workbench& bench, const BuildOptions& options = {});
+
+  /// Number of solids.
+  int size() const;
+
+  /// Solid `index` (0-based) alone, with its name.
+  SolidPieces only(int index) const;
+
+  /// The solids of cutting solid `index` by `cut`, in the kernel's
+  /// (deterministic) order; fewer than 2 when the cut misses the solid's
+  /// interior. Throws MeshingError(GeometryError) when the kernel fails.
+  SolidPieces split(int index, const CutSurface& cut) const;
+
+  /// These solids with solid `index` replaced by all solids of `pieces`
+  /// (which keep the name of the replaced one).
+  SolidPieces replace(int index, const SolidPieces& pieces) const;
+
+  /// The model of the solids and free faces. imprint_merge: fragment them
+  /// again so touching solids share faces (needed after cuts that cross a
+  /// neighbour's face; the pieces of one split share their cut faces
+  /// already). Volumes keep the solid order. Throws MeshingError.
+  geom::Model build_model(bool imprint_merge) const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cooperage::occ

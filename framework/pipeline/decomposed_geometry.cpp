@@ -1,0 +1,98 @@
+#include "framework/pipeline/decomposed_geometry.h"
+
+#include "framework/core/error.h"
+#include "framework/geometry/occ/solid_pieces.h"
+#include "framework/geometry/occ/workbench.h"
+#include "framework/pipeline/build_geometry.h"
+
+#include <chrono>
+
+namespace cooperage::pipeline {
+namespace {
+
+std::string place(const io::SourceLocation& where) {
+  if (where.file.empty()) return "the job";
+  return where.line > 0 ? where.file + ":" + std::to_string(where.line) : where.file;
+}
+
+// The first per-entity setting of the job, as "<surface> at job.xml:12", or "".
+std::string entity_setting(const io::MeshSettings& s) {
+  const auto at = [](const char* tag, const io::SourceLocation& where) {
+    return std::string("<") + (where.element.empty() ? tag : where.element.c_str()) + "> at " +
+           place(where);
+  };
+  if (!s.curves.empty()) return at("curve", s.curves.front().where);
+  if (!s.surfaces.empty()) return at("surface", s.surfaces.front().where);
+  if (!s.volumes.empty()) return at("volume", s.volumes.front().where);
+  if (!s.vertex_types.empty()) return at("vertex_type", s.vertex_types.front().where);
+  return {};
+}
+
+bool scheme_pinned(const io::MeshSettings& s, int volume) {
+  for (const auto& v : s.volumes) {
+    if (v.id == volume && v.scheme != "auto") return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+double decomposition_size(const io::MeshSettings& settings, const geom::Model& model) {
+  if (settings.size) return *settings.size;
+  const double d = model.box().diagonal();
+  return d > 0 ? d / 40.0 : 1.0;
+}
+
+DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::Registry& registry,
+                                             const Planner& planner, int dim) {
+  const auto t0 = std::chrono::steady_clock::now();
+  occ::Workbench bench;
+  bench.set_imprint_merge(job.imprint_merge);
+  run_geometry(job, bench);
+  occ::BuildOptions build;
+  build.imprint_merge = job.imprint_merge;
+  DecomposedGeometry out;
+  out.model = bench.build_model(build);
+  out.geometry_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.decomposition.origin.clear();
+  for (const geom::Volume& v : out.model.volumes()) out.decomposition.origin.push_back(v.id);
+  if (dim != 3 || !job.mesh || job.mesh->decompose == io::Decompose::Off) return out;
+  const io::MeshSettings& settings = *job.mesh;
+
+  const std::vector<int> todo = decompose::unmeshable_volumes(out.model, registry);
+  if (todo.empty()) return out;
+  for (int v : todo) {
+    if (scheme_pinned(settings, v)) return out;  // the planner refuses the pin, naming it
+  }
+  if (const std::string setting = entity_setting(settings); !setting.empty()) {
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(todo.front()),
+                       "no hex scheme applies, and automatic decomposition would renumber the "
+                       "entities that " + setting + " refers to by id; cut the volume with "
+                       "<webcut> in the journal, or remove the per-entity settings");
+  }
+  if (!planner) throw MeshingError(ErrorCode::Internal, "decomposition needs a planner");
+  io::MeshSettings piece_settings = settings;
+  const decompose::ModelCheck check = [&](const geom::Model& pieces) -> std::string {
+    try {
+      // The planner refuses volumes one by one in an assembly (per-volume
+      // verdicts): a cut is good only when no piece is refused.
+      const SchemePlan plan = planner(pieces, registry, piece_settings, 3);
+      if (!plan.refused_volumes.empty()) {
+        const auto& [volume, refusal] = *plan.refused_volumes.begin();
+        return "volume " + std::to_string(volume) + ": " + refusal.message;
+      }
+      return {};
+    } catch (const MeshingError& e) {
+      return e.what();
+    }
+  };
+  decompose::DecomposeOptions options;
+  options.size = decomposition_size(settings, out.model);
+  decompose::Decomposed d = decompose::decompose(occ::SolidPieces::of(bench, build), out.model,
+                                                 registry, check, options);
+  out.model = std::move(d.model);
+  out.decomposition = std::move(d.report);
+  return out;
+}
+
+}  // namespace cooperage::pipeline

@@ -1,0 +1,74 @@
+// `cooperage mesh --decompose auto|off` and the decomposition in
+// `cooperage plan --json`: the real binary on the paper's Fig. 3a solid,
+// which no volume scheme takes whole.
+#include "run_command.h"
+#include "temp_dir.h"
+
+#include "framework/geometry/occ/workbench.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace cooperage {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_command;
+
+const std::string kCli = COOPERAGE_CLI;
+
+class DecomposeOption : public testing::TempDirTest {
+ protected:
+  // Blacker 1996, Fig. 3a, as a STEP file.
+  std::string fig3a_step() const {
+    occ::Workbench bench;
+    bench.brick("block", {0, 0, 0}, {4, 4, 2});
+    bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
+    bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
+    bench.fuse("part", {"block", "up", "out"});
+    const std::string file = path("fig3a.step");
+    bench.write(file);
+    return file;
+  }
+};
+
+TEST_F(DecomposeOption, OffRefusesTheVolumeWithExitTwoAndNoFile) {
+  const std::string step = fig3a_step();
+  const auto r = run_command(kCli + " mesh -q " + step + " --size 0.25 --decompose off -o " +
+                             path("out.vtu"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("volume 1: no hex scheme applies"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("automatic decomposition"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.vtu")));
+}
+
+TEST_F(DecomposeOption, AutoIsTheDefaultAndSearchesCuts) {
+  const std::string step = fig3a_step();
+  // A size coarser than the bosses: every cut would leave a piece thinner
+  // than one element, and the refusal says so.
+  const auto r = run_command(kCli + " mesh -q " + step + " --size 2.5 -o " + path("out.vtu"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("automatic decomposition tried 0 cuts"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.vtu")));
+}
+
+TEST_F(DecomposeOption, AnUnknownValueIsABadArgument) {
+  const auto r = run_command(kCli + " mesh x.step --size 1 --decompose yes -o " + path("o.vtu"));
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+TEST_F(DecomposeOption, PlanJsonCarriesTheDecomposition) {
+  const std::string journal = path("brick.xml");
+  std::ofstream(journal) << "<cooperage version=\"1\"><geometry>"
+                            "<brick name=\"b\" origin=\"0 0 0\" size=\"2 1 1\"/></geometry>"
+                            "<mesh size=\"0.5\"/></cooperage>\n";
+  const auto r = run_command(kCli + " plan --json " + journal);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"decomposition\":{\"tried\":0,\"volumes\":[]}"), std::string::npos)
+      << r.out;
+}
+
+}  // namespace
+}  // namespace cooperage

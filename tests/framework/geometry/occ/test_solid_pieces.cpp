@@ -1,0 +1,97 @@
+// SolidPieces (solid_pieces.h): cuts by planes and cylinders, checked by
+// volumes (the pieces add up to the solid), shared cut faces and counts.
+#include "framework/geometry/occ/solid_pieces.h"
+
+#include "framework/core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cooperage::occ {
+namespace {
+
+double total_volume(const geom::Model& m) {
+  double v = 0;
+  for (const auto& vol : m.volumes()) v += vol.volume;
+  return v;
+}
+
+TEST(SolidPieces, ThePiecesOfAWorkbenchAreItsVolumesInOrder) {
+  Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 1, 1});
+  bench.brick("b", {1, 0, 0}, {2, 1, 1});
+  const SolidPieces pieces = SolidPieces::of(bench);
+  ASSERT_EQ(pieces.size(), 2);
+  const geom::Model direct = bench.build_model();
+  const geom::Model again = pieces.build_model(false);
+  ASSERT_EQ(again.volumes().size(), 2u);
+  EXPECT_EQ(again.surfaces().size(), direct.surfaces().size());
+  EXPECT_NEAR(again.volume(2).volume, 2.0, 1e-9);
+  EXPECT_EQ(again.volume(1).name, "a");
+}
+
+TEST(SolidPieces, APlaneSplitsABrickIntoTwoPiecesSharingTheCutFace) {
+  Workbench bench;
+  bench.brick("b", {0, 0, 0}, {4, 2, 1});
+  const SolidPieces one = SolidPieces::of(bench);
+  const SolidPieces cut = one.split(0, {CutSurface::Kind::Plane, {1, 0, 0}, {1, 0, 0}, 0});
+  ASSERT_EQ(cut.size(), 2);
+  const geom::Model m = cut.build_model(false);
+  ASSERT_EQ(m.volumes().size(), 2u);
+  EXPECT_NEAR(total_volume(m), 8.0, 1e-9);
+  EXPECT_NEAR(std::min(m.volume(1).volume, m.volume(2).volume), 2.0, 1e-9);
+  int shared = 0;
+  for (const auto& s : m.surfaces()) shared += s.volumes.size() == 2 ? 1 : 0;
+  EXPECT_EQ(shared, 1);
+  EXPECT_EQ(m.volume(1).name, "b.1");
+}
+
+TEST(SolidPieces, APlaneMissingTheSolidGivesOnePiece) {
+  Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  const SolidPieces cut =
+      SolidPieces::of(bench).split(0, {CutSurface::Kind::Plane, {0, 0, 5}, {0, 0, 1}, 0});
+  EXPECT_LT(cut.size(), 2);
+}
+
+TEST(SolidPieces, ACylinderCutsACoreOutOfABrick) {
+  Workbench bench;
+  bench.brick("b", {-2, -2, 0}, {4, 4, 1});
+  const SolidPieces cut =
+      SolidPieces::of(bench).split(0, {CutSurface::Kind::Cylinder, {0, 0, 0}, {0, 0, 1}, 1.0});
+  ASSERT_EQ(cut.size(), 2);
+  const geom::Model m = cut.build_model(false);
+  const double core = std::min(m.volume(1).volume, m.volume(2).volume);
+  EXPECT_NEAR(core, M_PI, 1e-6);
+  EXPECT_NEAR(total_volume(m), 16.0, 1e-6);
+}
+
+TEST(SolidPieces, ReplacingASolidByItsPiecesKeepsTheOthersAndImprints) {
+  Workbench bench;
+  bench.brick("a", {0, 0, 0}, {2, 2, 1});
+  bench.brick("b", {0, 0, 1}, {2, 2, 1});  // on top of a, sharing z = 1
+  const SolidPieces all = SolidPieces::of(bench);
+  const SolidPieces cut = all.split(0, {CutSurface::Kind::Plane, {1, 0, 0}, {1, 0, 0}, 0});
+  const SolidPieces replaced = all.replace(0, cut);
+  ASSERT_EQ(replaced.size(), 3);
+  const geom::Model m = replaced.build_model(true);
+  ASSERT_EQ(m.volumes().size(), 3u);
+  EXPECT_EQ(m.volume(3).name, "b");
+  // b's bottom face is imprinted by the cut: two faces, each shared.
+  int shared = 0;
+  for (const auto& s : m.surfaces()) shared += s.volumes.size() == 2 ? 1 : 0;
+  EXPECT_EQ(shared, 3);  // the cut face and the two halves of z = 1
+  EXPECT_NEAR(total_volume(m), 8.0, 1e-9);
+}
+
+TEST(SolidPieces, AnIndexOutOfRangeIsAnError) {
+  Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 1, 1});
+  const SolidPieces all = SolidPieces::of(bench);
+  EXPECT_THROW(all.only(1), MeshingError);
+  EXPECT_THROW(all.split(-1, {}), MeshingError);
+}
+
+}  // namespace
+}  // namespace cooperage::occ
