@@ -4,9 +4,18 @@
 #include "framework/decompose/piece_verdict.h"
 #include "framework/decompose/search_cuts.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace cooperage::decompose {
+namespace {
+
+/// Volumes with more faces are not searched (see decompose()).
+constexpr int kMaxSearchFaces = 80;
+/// Candidate cuts x faces per volume: 80 cuts up to 25 faces, fewer above.
+constexpr int kSearchFaceCuts = 2000;
+
+}  // namespace
 
 std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry) {
   std::vector<int> out;
@@ -42,7 +51,23 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     d.volume = v;
     d.name = model.volume(v).name;
     d.why = best_scheme(model, v, registry).why;
-    CutSearch search(registry, check, options);
+    // Each candidate cut costs a boolean and a plan of the pieces, both
+    // growing with the faces: the number of cuts tried shrinks with them, and
+    // a volume too intricate for cuts through its own faces to help is left
+    // to the user (an impeller took minutes and found nothing).
+    int faces = 0;
+    for (const auto& shell : model.volume(v).shells) faces += static_cast<int>(shell.size());
+    if (faces > kMaxSearchFaces) {
+      throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
+                         "no hex scheme applies; automatic decomposition is not tried on a volume of "
+                         "more than " + std::to_string(kMaxSearchFaces) + " faces (it has " +
+                             std::to_string(faces) + ") (" + d.why + ")",
+                         "cut the volume with <webcut> in a journal (`cooperage plan` gives every "
+                         "scheme's reason)");
+    }
+    DecomposeOptions budget = options;
+    budget.max_cuts = std::max(8, std::min(options.max_cuts, kSearchFaceCuts / std::max(faces, 1)));
+    CutSearch search(registry, check, budget);
     auto plan = search.solve(solids.only(v - 1));
     d.tried = search.tried();
     out.report.tried += d.tried;
