@@ -6,6 +6,7 @@
 #include "progress.h"
 #include "quality_command.h"
 #include "run_report.h"
+#include "schemes_command.h"
 
 #include "framework/core/error.h"
 #include "framework/core/log.h"
@@ -21,6 +22,7 @@
 
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -40,9 +42,12 @@ int run_info(const std::string& file, bool json, bool no_imprint) {
   return 0;
 }
 
-int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
+// `plugins` (--plugin) load after COOPERAGE_PLUGIN_PATH's and before the journal's.
+int finish_run(const io::Job& job, const std::vector<std::string>& plugins, int dim, int threads,
+               bool quiet) {
   scheme::Registry registry;
-  register_builtin_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{});
+  register_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{},
+                   run_plugins(plugins, job.plugins));
   app::Progress progress(!quiet);
   pipeline::MeshOptions options;
   options.planner = selector::planner();
@@ -57,17 +62,18 @@ int finish_run(const io::Job& job, int dim, int threads, bool quiet) {
   return result.quality.failed() ? kExitQualityFailed : 0;
 }
 
-int run_journal(const std::string& file, const std::string& report, int threads, bool quiet) {
+int run_journal(const std::string& file, const std::vector<std::string>& plugins,
+                const std::string& report, int threads, bool quiet) {
   io::Job job = io::read_journal(file);
   if (!report.empty()) job.reports.push_back({report, {"command line", 0, "--report"}});
-  return finish_run(job, 3, threads, quiet);
+  return finish_run(job, plugins, 3, threads, quiet);
 }
 
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
-int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             const std::string& report, bool no_imprint, io::ElementKind elements, int threads,
-             bool quiet) {
+int run_mesh(const std::string& model, const std::vector<std::string>& plugins, double size,
+             int dim, const std::string& output, const std::string& report, bool no_imprint,
+             io::ElementKind elements, int threads, bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   pipeline::ModelJobOptions options;
   options.size = size;
@@ -75,7 +81,27 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   options.elements = elements;
   options.exports = {output};
   if (!report.empty()) options.reports = {report};
-  return finish_run(pipeline::model_job(model, options), dim, threads, quiet);
+  return finish_run(pipeline::model_job(model, options), plugins, dim, threads, quiet);
+}
+
+// `cooperage schemes`: the registry of a run without a journal.
+int run_schemes(const std::vector<std::string>& plugins, bool json) {
+  scheme::Registry registry;
+  register_schemes(registry, {}, run_plugins(plugins, {}));
+  if (json) {
+    app::write_schemes_json(registry, std::cout);
+  } else {
+    app::write_schemes_text(registry, std::cout);
+  }
+  return 0;
+}
+
+// info and quality use no scheme; a --plugin given to them is still loaded,
+// so a broken one is reported the same way everywhere.
+void check_plugins(const std::vector<std::string>& plugins) {
+  if (plugins.empty()) return;
+  scheme::Registry registry;
+  register_schemes(registry, {}, run_plugins(plugins, {}), false);
 }
 
 }  // namespace
@@ -87,6 +113,13 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "cooperage 0.1.0");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "Print diagnostics on stderr");
+  std::vector<std::string> plugins;
+  app.add_option("--plugin", plugins,
+                 "Load a plug-in library of schemes (repeatable; before or after the "
+                 "subcommand; COOPERAGE_PLUGIN_PATH lists more)")
+      ->allow_extra_args(false);
+  // --plugin and -v may follow the subcommand too.
+  app.fallthrough();
 
   std::string info_file;
   bool info_json = false;
@@ -142,6 +175,12 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
 
+  bool schemes_json = false;
+  CLI::App* schemes = app.add_subcommand(
+      "schemes", "List every registered scheme: name, dimension, origin (built in or which "
+                 "plug-in library), the roles it serves");
+  schemes->add_flag("--json", schemes_json, "Print one JSON array instead of text");
+
   std::string quality_file;
   bool quality_json = false;
   CLI::App* quality = app.add_subcommand(
@@ -164,19 +203,26 @@ int main(int argc, char** argv) {
   });
 
   try {
-    if (*info) return run_info(info_file, info_json, info_no_imprint);
-    if (*run) return run_journal(run_file, report_file, threads, quiet);
-    if (*quality) return app::run_quality(quality_file, quality_json, std::cout, report_file);
+    if (*schemes) return run_schemes(plugins, schemes_json);
+    if (*info) {
+      check_plugins(plugins);
+      return run_info(info_file, info_json, info_no_imprint);
+    }
+    if (*run) return run_journal(run_file, plugins, report_file, threads, quiet);
+    if (*quality) {
+      check_plugins(plugins);
+      return app::run_quality(quality_file, quality_json, std::cout, report_file);
+    }
     if (*plan) {
       return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
-                           plan_json, std::cout);
+                           plan_json, plugins, std::cout);
     }
     if (*mesh) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_no_imprint,
-                      elements, threads, quiet);
+      return run_mesh(mesh_file, plugins, mesh_size, mesh_dim, mesh_output, report_file,
+                      mesh_no_imprint, elements, threads, quiet);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

@@ -74,12 +74,13 @@ void write_json(const selector::Selection& sel, bool intervals_checked, std::ost
 
 }  // namespace
 
-int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out) {
+int run_plan(const std::string& file, std::optional<double> size, bool json,
+             const std::vector<std::string>& plugins, std::ostream& out) {
   const pipeline::PlanInput input = pipeline::plan_input(file, size);
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_schemes(registry, builtin_options(settings), run_plugins(plugins, input.plugins));
   selector::SelectOptions options;
   options.check_intervals = settings.size.has_value();
   const selector::Selection sel = selector::select_schemes(model, registry, settings, options);

@@ -34,6 +34,9 @@ struct Options {
   /// Mesh files to write (.exo .msh .vtu .inp), each atomically; none are
   /// written when meshing fails. run_journal() adds them to the journal's.
   std::vector<std::string> exports;
+  /// Plug-in libraries of schemes to load (framework/scheme/plugin.h), after
+  /// those of COOPERAGE_PLUGIN_PATH and before a journal's <plugin>s.
+  std::vector<std::string> plugins;
 };
 
 /// A meshed model and its quality report.

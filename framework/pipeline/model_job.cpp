@@ -51,6 +51,7 @@ PlanInput plan_input(const std::string& file, std::optional<double> size) {
   if (ext == ".xml") {
     const io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;
+    in.plugins = job.plugins;
     in.model = build_geometry(job);
   } else {
     in.model = load_any(file);

@@ -40,6 +40,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options);
 struct PlanInput {
   geom::Model model;
   io::MeshSettings settings;
+  std::vector<io::PluginSetting> plugins;  ///< a journal's <plugin> elements
 };
 
 /// Reads `file`, builds its model, applies `size` (overriding the

@@ -486,9 +486,9 @@ ManyToOne classify_barrels(const geom::Model& model, int volume_id,
     out.why = vname + ": a many-to-one sweep needs one shell and at least 4 surfaces";
     return out;
   }
-  const scheme::SurfaceScheme* submap = registry.surface_scheme("submap");
-  if (!submap) {
-    out.why = vname + ": the submap scheme is not registered; cooper needs it for the sides";
+  if (registry.surface_schemes(scheme::Role::SweepSide).empty()) {
+    out.why = vname + ": no registered surface scheme serves sweep sides (submap does); cooper "
+                      "needs one for the sides";
     return out;
   }
   std::vector<Face> faces;
@@ -506,11 +506,12 @@ ManyToOne classify_barrels(const geom::Model& model, int volume_id,
     if (f.loops != 1) {
       f.side_why = "it has " + std::to_string(f.loops) + " loops";
     } else {
-      const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr});
-      f.side_ok = a.ok;
-      f.side_score = a.score;
-      f.side_why = a.why;
-      if (a.ok) f.corners = scheme::loop_corners(model, id, 0);
+      const scheme::RoleChoice side = scheme::best_surface_scheme(
+          registry, scheme::Role::SweepSide, scheme::SurfaceView{model, id, nullptr});
+      f.side_ok = side.scheme != nullptr;
+      f.side_score = side.applicability.score;
+      f.side_why = f.side_ok ? side.applicability.why : side.reasons;
+      if (f.side_ok) f.corners = scheme::loop_corners(model, id, 0);
     }
     faces.push_back(std::move(f));
   }

@@ -165,77 +165,65 @@ std::string check_pair(const geom::Model& model, int volume_id, const std::vecto
   return {};
 }
 
-// Wedge and mixed mode: `name` ("tri", "quad_dominant") when it meshes
-// the cap, or why not.
-std::string named_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
-                             int surface, const char* name, const char* purpose,
-                             std::string& why) {
-  const scheme::SurfaceScheme* s = registry.surface_scheme(name);
-  if (!s) {
-    why = "source cap surface " + std::to_string(surface) + " needs the " + name +
-          " scheme for " + purpose + ", which is not available";
-    return {};
-  }
-  const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
-  if (a.ok) return name;
-  why = std::string(name) + " does not mesh source cap surface " + std::to_string(surface) +
-        " (" + a.why + ")";
+// The cap schemes are asked of the registry by role (scheme::Role), never
+// by name, so a plug-in scheme serving the role competes on its score.
+
+// Wedge mode: the best tri-cap scheme ("tri"), or why none applies.
+std::string tri_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
+                           int surface, std::string& why) {
+  const scheme::RoleChoice c = scheme::best_surface_scheme(
+      registry, scheme::Role::TriCap, scheme::SurfaceView{model, surface, nullptr});
+  if (c.scheme) return std::string(c.scheme->name());
+  why = "no triangle scheme meshes source cap surface " + std::to_string(surface) +
+        " for wedges (" + c.reasons + ")";
   return {};
 }
 
-// Mixed mode: map or submap where they reach the mixed quad quality (their
-// score is the scaled Jacobian they reach), else quad_dominant (pave with
-// its quads below that quality split into triangles). Plain pave is left
-// out: it keeps a poor quad where mixed mode wants two triangles.
+// Mixed mode: the best-scoring scheme serving mixed caps, where an all-quad
+// one (map, submap: it also serves quad caps; its score is the scaled
+// Jacobian it reaches) counts only at kMixedMinQuadQuality or more, so a
+// face where it would squash a corner goes to quad_dominant (pave with its
+// quads below that quality split into triangles). Plain pave does not serve
+// mixed caps: it keeps a poor quad where mixed mode wants two triangles.
 std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
                              int surface, std::string& why) {
-  std::string best;
+  const scheme::SurfaceView view{model, surface, nullptr};
+  const scheme::SurfaceScheme* best = nullptr;
   double best_score = -1.0;
-  for (const char* name : {"map", "submap"}) {
-    const scheme::SurfaceScheme* s = registry.surface_scheme(name);
-    if (!s) continue;
-    const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
-    if (a.ok && a.score >= kMixedMinQuadQuality && a.score > best_score) {
-      best = name;
+  std::string reasons;
+  for (const scheme::SurfaceScheme* s : registry.surface_schemes(scheme::Role::MixedCap)) {
+    const scheme::Applicability a = s->applicable(view);
+    const bool quads_only = scheme::serves(s->serves(), scheme::Role::QuadCap);
+    if (a.ok && quads_only && a.score < kMixedMinQuadQuality) continue;
+    if (!a.ok) reasons += (reasons.empty() ? "" : "; ") + std::string(s->name()) + ": " + a.why;
+    if (a.ok && a.score > best_score) {
+      best = s;
       best_score = a.score;
     }
   }
-  if (!best.empty()) return best;
-  return named_cap_scheme(model, registry, surface, "quad_dominant", "a wedge/hex mix", why);
+  if (best) return std::string(best->name());
+  why = "no mixed-cap scheme meshes source cap surface " + std::to_string(surface) +
+        " for a wedge/hex mix (" +
+        (reasons.empty() ? std::string("no registered surface scheme serves mixed caps")
+                         : reasons) +
+        ")";
+  return {};
 }
 
-// The cap scheme of an element kind: hex mode the best of map, submap,
-// pave; wedge mode "tri"; mixed mode see mixed_cap_scheme.
+// The cap scheme of an element kind: hex mode the best-scoring quad-cap
+// scheme (scores are the scaled Jacobian each can reach, so a corner
+// map/submap would squash goes to pave; ties keep the registration order
+// map, submap, pave, then plug-ins); wedge mode tri_cap_scheme; mixed mode
+// mixed_cap_scheme.
 std::string cap_scheme_impl(const geom::Model& model, const scheme::Registry& registry, int surface,
                             std::string& why, Elements elements = Elements::Hex) {
-  if (elements == Elements::Wedge) {
-    return named_cap_scheme(model, registry, surface, "tri", "wedges", why);
-  }
+  if (elements == Elements::Wedge) return tri_cap_scheme(model, registry, surface, why);
   if (elements == Elements::Mixed) return mixed_cap_scheme(model, registry, surface, why);
-  // The best-scoring quad scheme (scores are the scaled Jacobian each can
-  // reach, so a corner map/submap would squash goes to pave); ties keep the
-  // order map, submap, pave.
-  std::string reasons;
-  std::string best;
-  double best_score = -1.0;
-  for (const char* name : {"map", "submap", "pave"}) {
-    const scheme::SurfaceScheme* s = registry.surface_scheme(name);
-    if (!s) continue;
-    const scheme::Applicability a = s->applicable(scheme::SurfaceView{model, surface, nullptr});
-    if (a.ok && a.score > best_score) {
-      best = name;
-      best_score = a.score;
-    }
-    if (!a.ok) reasons += std::string(reasons.empty() ? "" : "; ") + name + ": " + a.why;
-  }
-  if (!best.empty()) return best;
-  if (!registry.surface_scheme("pave")) {
-    why = "source cap surface " + std::to_string(surface) +
-          " needs pave, which is not available (" + reasons + ")";
-  } else {
-    why = "no surface scheme meshes source cap surface " + std::to_string(surface) + " (" +
-          reasons + ")";
-  }
+  const scheme::RoleChoice c = scheme::best_surface_scheme(
+      registry, scheme::Role::QuadCap, scheme::SurfaceView{model, surface, nullptr});
+  if (c.scheme) return std::string(c.scheme->name());
+  why = "no surface scheme meshes source cap surface " + std::to_string(surface) + " (" +
+        c.reasons + ")";
   return {};
 }
 
@@ -299,9 +287,9 @@ Classification classify_faces(const geom::Model& model, int volume_id,
               " shells; a sweep needs one (no internal voids)";
     return out;
   }
-  const scheme::SurfaceScheme* submap = registry.surface_scheme("submap");
-  if (!submap) {
-    out.why = vname + ": the submap scheme is not registered; cooper needs it for the sides";
+  if (registry.surface_schemes(scheme::Role::SweepSide).empty()) {
+    out.why = vname + ": no registered surface scheme serves sweep sides (submap does); cooper "
+                      "needs one for the sides";
     return out;
   }
   std::vector<FaceInfo> faces;
@@ -318,11 +306,12 @@ Classification classify_faces(const geom::Model& model, int volume_id,
     if (f.loops != 1) {
       f.side_why = "it has " + std::to_string(f.loops) + " loops; a side face needs one";
     } else {
-      const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr});
-      f.side_ok = a.ok;
-      f.side_score = a.score;
-      f.side_why = a.why;
-      if (a.ok) f.corners = scheme::loop_corners(model, id, 0);
+      const scheme::RoleChoice side = scheme::best_surface_scheme(
+          registry, scheme::Role::SweepSide, scheme::SurfaceView{model, id, nullptr});
+      f.side_ok = side.scheme != nullptr;
+      f.side_score = side.applicability.score;
+      f.side_why = f.side_ok ? side.applicability.why : side.reasons;
+      if (f.side_ok) f.corners = scheme::loop_corners(model, id, 0);
     }
     faces.push_back(std::move(f));
   }
@@ -579,6 +568,13 @@ std::string check_side(const geom::Model& model, int side,
                        const std::set<int>& upper_curves, int lower,
                        const std::set<int>& lower_curves, SideFace& out) {
   return check_side_impl(model, side, corners, upper, upper_curves, lower, lower_curves, out);
+}
+
+std::string side_scheme(const geom::Model& model, const scheme::Registry& registry,
+                        int surface) {
+  const scheme::RoleChoice c = scheme::best_surface_scheme(
+      registry, scheme::Role::SweepSide, scheme::SurfaceView{model, surface, nullptr});
+  return c.scheme ? std::string(c.scheme->name()) : std::string();
 }
 
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,

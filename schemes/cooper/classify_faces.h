@@ -46,8 +46,9 @@ struct Classification {
   double score = 0.0;        ///< in [0, 1]
   int source = 0;            ///< source cap surface
   int target = 0;            ///< target cap surface
-  /// "map", "submap" or "pave"; wedge mode "tri"; mixed mode "map",
-  /// "submap" or "quad_dominant" (see Elements::Mixed)
+  /// The best quad-cap scheme (map, submap, pave or a plug-in's); wedge
+  /// mode the best tri-cap scheme ("tri"); mixed mode "map", "submap" or
+  /// "quad_dominant" (see Elements::Mixed)
   std::string source_scheme;
   /// Composite source cap (Blacker 1996, sec. 4-5: a cap made of subcaps):
   /// faces of the volume, coplanar with `source`, each filling one hole
@@ -72,14 +73,14 @@ inline constexpr double kReentrantMin = 185.0;
 /// Classifies the faces of a volume for a one-barrel sweep.
 /// \param[in] model      the model
 /// \param[in] volume_id  the volume
-/// \param[in] registry   supplies "submap" (sides) and "map"/"submap"/"pave" (source cap)
+/// \param[in] registry   supplies the schemes serving sweep sides (submap) and caps
 /// \param[in] hints      optional source/target/direction; obeyed or rejected with a reason
 /// The choice is deterministic and independent of the order of the faces:
 /// candidate cap pairs are ranked by (direction hint,) loops, curves, area,
 /// ids; the source is the cap with more loops, then curves, then area, then
 /// the lower id, unless only the other one has a surface scheme.
-/// \param[in] elements   the cap schemes: hex mode map/submap/pave; wedge mode
-///                       the registry's "tri" (triangles, swept into wedges);
+/// \param[in] elements   the cap schemes: hex mode the quad-cap schemes; wedge
+///                       mode the tri-cap ones ("tri", swept into wedges);
 ///                       mixed mode map/submap or "quad_dominant" (Elements::Mixed)
 Classification classify_faces(const geom::Model& model, int volume_id,
                               const scheme::Registry& registry, const SweepHints& hints = {},
@@ -97,12 +98,17 @@ std::string check_side(const geom::Model& model, int side,
                        const std::set<int>& upper_curves, int lower,
                        const std::set<int>& lower_curves, SideFace& out);
 
-/// The first of the registry's "map", "submap", "pave" that applies to the
-/// cap surface, or "" with `why` set.
+/// The best-scoring applicable scheme serving sweep sides (submap), or "".
+std::string side_scheme(const geom::Model& model, const scheme::Registry& registry, int surface);
+
+/// The best-scoring applicable scheme serving quad caps (map, submap, pave,
+/// plug-ins; ties: registration order), or "" with `why` set.
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why);
-/// The cap scheme of an element kind: hex mode as above, wedge mode "tri",
-/// mixed mode map/submap reaching kMixedMinQuadQuality, else "quad_dominant".
+/// The cap scheme of an element kind: hex mode as above, wedge mode the best
+/// tri-cap scheme ("tri"), mixed mode the best mixed-cap scheme, an all-quad
+/// one (map, submap) only where it reaches kMixedMinQuadQuality, else
+/// "quad_dominant".
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why, Elements elements);
 

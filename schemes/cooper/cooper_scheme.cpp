@@ -179,12 +179,16 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   if (!c.ok) {
     const ManyToOne m = classify_many(view);
     if (!m.ok) return roles;
-    for (const SideFace& side : m.sides) roles[side.surface] = "submap";
+    for (const SideFace& side : m.sides) {
+      roles[side.surface] = detail::side_scheme(view.model, *registry_, side.surface);
+    }
     for (const auto& [cap, scheme] : m.cap_schemes) roles[cap] = scheme;
     for (int cap : m.volume_caps) roles[cap] = scheme::kMeshedByVolume;
     return roles;
   }
-  for (const SideFace& side : c.sides) roles[side.surface] = "submap";
+  for (const SideFace& side : c.sides) {
+    roles[side.surface] = detail::side_scheme(view.model, *registry_, side.surface);
+  }
   roles[c.source] = c.source_scheme;
   for (size_t k = 0; k < c.source_subcaps.size(); ++k) {
     roles[c.source_subcaps[k]] = c.source_subcap_schemes[k];

@@ -44,8 +44,8 @@ struct CooperOptions {
 
 class CooperScheme final : public scheme::VolumeScheme {
  public:
-  /// Keeps `registry` (it must outlive the scheme) to ask "submap", "map"
-  /// and "pave" for their applicable() on sides and caps.
+  /// Keeps `registry` (it must outlive the scheme) to ask the schemes that
+  /// serve sweep sides and caps (scheme::Role) for their applicable().
   explicit CooperScheme(const scheme::Registry& registry, CooperOptions options = {})
       : registry_(&registry), options_(std::move(options)) {}
 
@@ -59,7 +59,7 @@ class CooperScheme final : public scheme::VolumeScheme {
   /// chain of the volume the same count (Blacker 1996, sec. 3-4).
   void constrain(const scheme::VolumeView& view,
                  intervals::IntervalProblem& problem) const override;
-  /// Sides -> "submap" (always, one code path), source caps -> their scheme
+  /// Sides -> the sweep-side scheme (submap), source caps -> their scheme
   /// ("tri" in wedge mode, map/submap/"quad_dominant" in mixed mode), target
   /// -> scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
