@@ -72,14 +72,15 @@ int run_journal(const std::string& file, const std::vector<std::string>& plugins
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, const std::vector<std::string>& plugins, double size,
-             int dim, const std::string& output, const std::string& report, bool no_imprint,
-             io::ElementKind elements, int threads, bool quiet) {
+             int dim, const std::string& output, const std::string& report, bool binary,
+             bool no_imprint, io::ElementKind elements, int threads, bool quiet) {
   if (!(size > 0)) throw MeshingError(ErrorCode::InvalidInput, "--size must be positive");
   pipeline::ModelJobOptions options;
   options.size = size;
   options.imprint_merge = !no_imprint;
   options.elements = elements;
   options.exports = {output};
+  options.binary = binary;
   if (!report.empty()) options.reports = {report};
   return finish_run(pipeline::model_job(model, options), plugins, dim, threads, quiet);
 }
@@ -147,6 +148,7 @@ int main(int argc, char** argv) {
   double mesh_size = 0;
   int mesh_dim = 3;
   bool mesh_no_imprint = false;
+  bool mesh_binary = false;
   std::string mesh_elements = "hex";
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
   mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
@@ -154,6 +156,7 @@ int main(int argc, char** argv) {
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
   mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
+  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended) or .msh (Gmsh 4.1 binary)");
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
   mesh->add_option("--elements", mesh_elements,
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
@@ -222,7 +225,7 @@ int main(int argc, char** argv) {
                                        : mesh_elements == "mixed" ? io::ElementKind::Mixed
                                                                   : io::ElementKind::Hex;
       return run_mesh(mesh_file, plugins, mesh_size, mesh_dim, mesh_output, report_file,
-                      mesh_no_imprint, elements, threads, quiet);
+                      mesh_binary, mesh_no_imprint, elements, threads, quiet);
     }
   } catch (const MeshingError& e) {
     std::cerr << "cooperage: error: " << e.what() << '\n';

@@ -4,17 +4,34 @@
 
 #include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
+#include "schemes/cooper/cooper_scheme.h"
 #include "selector/select_schemes.h"
+
+#include <sstream>
 
 namespace cooperage::app {
 namespace {
 
-void write_text(const selector::Selection& sel, bool intervals_checked, std::ostream& out) {
+// The cooper plan of a volume the selection gave to cooper (Blacker 1996,
+// sec. 4: its barrel tree), or null.
+std::shared_ptr<const cooper::VolumePlan> cooper_plan(const selector::Choice& c, const geom::Model& model,
+                                                      const scheme::Registry& registry) {
+  if (c.dim != 3 || c.scheme != "cooper") return nullptr;
+  const auto* s = dynamic_cast<const cooper::CooperScheme*>(registry.volume_scheme("cooper"));
+  return s ? s->plan(scheme::VolumeView{model, c.id, nullptr}) : nullptr;
+}
+
+void write_text(const selector::Selection& sel, bool intervals_checked, const geom::Model& model,
+                const scheme::Registry& registry, std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
         << "  -- " << c.reason << "\n";
     for (const auto& k : c.candidates) out << "    " << selector::describe(k) << "\n";
+    if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
+      std::istringstream lines(cooper::describe_plan(*p));
+      for (std::string line; std::getline(lines, line);) out << "    " << line << "\n";
+    }
   };
   if (!sel.volumes.empty()) out << "volumes\n";
   for (const auto& c : sel.volumes) entity(c);
@@ -24,7 +41,55 @@ void write_text(const selector::Selection& sel, bool intervals_checked, std::ost
   if (!intervals_checked) out << "interval feasibility not checked: no element size given\n";
 }
 
-void write_json(const selector::Selection& sel, bool intervals_checked, std::ostream& out) {
+// The barrel tree as JSON: direction, barrels (1-based), their sides, the
+// imprint operation and both ends (real caps with who meshes them, virtual
+// caps with the barrel on their other side).
+void write_barrel_tree(JsonWriter& j, const cooper::VolumePlan& p) {
+  j.begin_object();
+  j.key("candidate");
+  j.value(p.candidate);
+  j.key("direction");
+  if (p.down) {
+    j.value(std::vector<double>{p.down->x(), p.down->y(), p.down->z()});
+  } else {
+    j.value(std::vector<double>{});
+  }
+  j.key("barrels");
+  j.begin_array();
+  for (const cooper::BarrelNode& b : p.tree.barrels) {
+    j.begin_object();
+    j.key("sides");
+    j.value(b.sides);
+    j.key("operation");
+    j.value(cooper::imprint_operation(b));
+    for (int end = 0; end < 2; ++end) {
+      j.key(end == 0 ? "upper" : "lower");
+      j.begin_array();
+      for (const cooper::EndPiece& e : end == 0 ? b.upper : b.lower) {
+        j.begin_object();
+        if (e.cap) {
+          j.key("surface");
+          j.value(e.cap);
+          const auto it = p.roles.scheme.find(e.cap);
+          j.key("meshed_by");
+          j.value(it != p.roles.scheme.end() ? it->second : std::string("cooper"));
+        } else {
+          const cooper::BarrelInterface& v = p.tree.interfaces[static_cast<size_t>(e.interface)];
+          j.key(end == 0 ? "virtual_from_barrel" : "virtual_into_barrel");
+          j.value((end == 0 ? v.above : v.below) + 1);
+        }
+        j.end_object();
+      }
+      j.end_array();
+    }
+    j.end_object();
+  }
+  j.end_array();
+  j.end_object();
+}
+
+void write_json(const selector::Selection& sel, bool intervals_checked, const geom::Model& model,
+                const scheme::Registry& registry, std::ostream& out) {
   JsonWriter j(out);
   auto entities = [&](const std::vector<selector::Choice>& list) {
     j.begin_array();
@@ -38,6 +103,10 @@ void write_json(const selector::Selection& sel, bool intervals_checked, std::ost
       j.value(c.reason);
       j.key("pinned");
       j.value(c.pinned);
+      if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
+        j.key("barrel_tree");
+        write_barrel_tree(j, *p);
+      }
       j.key("candidates");
       j.begin_array();
       for (const auto& k : c.candidates) {
@@ -85,9 +154,9 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   options.check_intervals = settings.size.has_value();
   const selector::Selection sel = selector::select_schemes(model, registry, settings, options);
   if (json) {
-    write_json(sel, options.check_intervals, out);
+    write_json(sel, options.check_intervals, model, registry, out);
   } else {
-    write_text(sel, options.check_intervals, out);
+    write_text(sel, options.check_intervals, model, registry, out);
   }
   return 0;
 }

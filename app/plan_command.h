@@ -1,5 +1,8 @@
 // `cooperage plan`: the selector's choice for every volume and surface, with
-// every scheme's verdict and the reason, without meshing.
+// every scheme's verdict and the reason, without meshing; for a volume swept
+// by cooper, its barrel tree (barrels, their sides, upper and lower caps --
+// real caps and who meshes them, virtual caps and the barrel on their other
+// side -- and the imprint operation each barrel needs).
 #pragma once
 
 #include <optional>

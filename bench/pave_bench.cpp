@@ -152,11 +152,12 @@ void BM_PaveFace(benchmark::State& state) {
     benchmark::DoNotOptimize(m.coords.data());
   }
   mesh::MeshDB committed = db;
+  const size_t quads = m.quads.size();
   pipeline::commit_surface(m, face.surface, committed);
   const QuadStats s = quad_stats(face.model, face.surface, committed);
   state.SetLabel(face.name);
-  state.counters["quads"] = static_cast<double>(m.quads.size());
-  state.counters["quads_per_s"] = benchmark::Counter(static_cast<double>(m.quads.size()),
+  state.counters["quads"] = static_cast<double>(quads);
+  state.counters["quads_per_s"] = benchmark::Counter(static_cast<double>(quads),
                                                      benchmark::Counter::kIsIterationInvariantRate);
   state.counters["min_SJ"] = s.min_sj;
   state.counters["median_SJ"] = s.median_sj;

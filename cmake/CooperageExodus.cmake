@@ -13,3 +13,13 @@ add_library(cooperage_exodus INTERFACE IMPORTED)
 set_target_properties(cooperage_exodus PROPERTIES
   INTERFACE_INCLUDE_DIRECTORIES "${EXODUS_INCLUDE_DIR}"
   INTERFACE_LINK_LIBRARIES "${EXODUS_LIBRARY};${_exodus_netcdf}")
+# The library itself is loaded at run time on first use
+# (framework/io/exodus_lazy.h): Debian's build drags in an MPI stack, which
+# cost every process ~50 ms of start-up. The framework gets the headers and
+# the file to fall back on when the loader's search path misses it.
+get_filename_component(EXODUS_LIBRARY_FILE "${EXODUS_LIBRARY}" REALPATH)
+add_library(cooperage_exodus_lazy INTERFACE IMPORTED)
+set_target_properties(cooperage_exodus_lazy PROPERTIES
+  INTERFACE_INCLUDE_DIRECTORIES "${EXODUS_INCLUDE_DIR}"
+  INTERFACE_COMPILE_DEFINITIONS "COOPERAGE_EXODUS_LIBRARY_FILE=\"${EXODUS_LIBRARY_FILE}\""
+  INTERFACE_LINK_LIBRARIES "${CMAKE_DL_LIBS}")

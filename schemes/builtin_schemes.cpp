@@ -80,7 +80,8 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
   cooper_options.quad_dominant_mesher = std::make_shared<QuadDominant2D>();
   for (const io::VolumeSetting& v : options.volumes) {
     if (!v.sources.empty() || !v.targets.empty() || v.direction) {
-      cooper_options.hints[v.id] = {v.sources, v.targets, v.direction};
+      const std::string where = v.where.file.empty() ? std::string() : v.where.file + ":" + std::to_string(v.where.line);
+      cooper_options.hints[v.id] = {v.sources, v.targets, v.direction, where};
     }
     if (v.elements == io::ElementKind::Wedge) cooper_options.elements[v.id] = cooper::Elements::Wedge;
     if (v.elements == io::ElementKind::Mixed) cooper_options.elements[v.id] = cooper::Elements::Mixed;

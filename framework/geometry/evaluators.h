@@ -50,6 +50,16 @@ class SurfaceGeometry {
   virtual SurfaceType type() const = 0;
   /// Closest point of the surface to p (within the face's parameter box).
   virtual SurfaceProjection project(const Vec3& p) const = 0;
+  /// Closest point near a known position: `uv_hint` are the parameters of a
+  /// point close to the answer (the node's previous position, a neighbour's
+  /// parameters). Backends may run a local Newton step from it and fall back
+  /// to the global search of project() when that step fails; the result is
+  /// then the local minimum of the distance nearest the hint. The default is
+  /// project(p), so implementations without a local solver stay correct.
+  virtual SurfaceProjection project_near(const Vec3& p, const Vec2& uv_hint) const {
+    (void)uv_hint;
+    return project(p);
+  }
   /// Point at parameters uv.
   virtual Vec3 point(const Vec2& uv) const = 0;
   /// Unit natural normal at parameters uv.

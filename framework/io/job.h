@@ -149,6 +149,7 @@ struct QualityCheck {
 struct ExportSetting {
   std::string file;  ///< the extension decides the format: .exo .msh .vtu .inp
   SourceLocation where;
+  bool binary = false;  ///< encoding="binary" (.vtu and .msh only)
 };
 
 /// An HTML report of the run (framework/report/html_report.h).

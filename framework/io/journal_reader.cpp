@@ -53,7 +53,7 @@ QualityCheck read_quality(const Element& e) {
 }
 
 ExportSetting read_export(const Element& e) {
-  e.allow_attributes({"file"});
+  e.allow_attributes({"file", "encoding"});
   e.expect_empty();
   ExportSetting x{e.required("file"), e.where()};
   if (std::none_of(kExportExtensions.begin(), kExportExtensions.end(),
@@ -61,6 +61,10 @@ ExportSetting read_export(const Element& e) {
     e.fail_at("file", "attribute \"file\" must end in one of " +
                           detail::list(kExportExtensions) + " (the extension picks the format), got \"" +
                           x.file + "\"");
+  x.binary = e.choice("encoding", {"ascii", "binary"}).value_or(0) == 1;
+  if (x.binary && !ends_with(x.file, ".vtu") && !ends_with(x.file, ".msh"))
+    e.fail_at("encoding", "encoding=\"binary\" is for .vtu and .msh files (Exodus is always "
+                          "binary, Abaqus .inp always text), got \"" + x.file + "\"");
   return x;
 }
 

@@ -2,67 +2,109 @@
 
 #include "framework/core/error.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace cooperage::pipeline {
 namespace {
 
-// Global index of every local node, adding the new ones to db.
-std::vector<int> globalise(const scheme::EntityMesh& local, mesh::NodeOwner owner,
-                           mesh::MeshDB& db) {
+// Global index of every local node, replacing local.global (so no second
+// index array), the new nodes moved into db in local order: local.coords is
+// compacted in place and handed to MeshDB::append_nodes, which keeps its
+// storage when it can (the node array is then never held twice).
+const std::vector<int>& globalise(scheme::EntityMesh& local, mesh::NodeOwner owner,
+                                  mesh::MeshDB& db) {
   if (local.global.size() != local.coords.size()) {
     throw MeshingError(ErrorCode::Internal, EntityRef{owner.dim, owner.id},
                        "scheme returned mismatched node arrays");
   }
-  std::vector<int> map(local.global.size());
-  for (size_t k = 0; k < local.global.size(); ++k) {
-    const int g = local.global[k];
-    if (g >= static_cast<int>(db.node_count())) {
+  const int known = static_cast<int>(db.node_count());
+  for (const int g : local.global) {
+    if (g >= known) {
       throw MeshingError(ErrorCode::Internal, EntityRef{owner.dim, owner.id},
                          "scheme referenced an unknown node");
     }
+  }
+  std::vector<mesh::NodeOwner> owners;
+  owners.reserve(static_cast<size_t>(
+      std::count_if(local.global.begin(), local.global.end(), [](int g) { return g < 0; })));
+  size_t fresh = 0;
+  for (size_t k = 0; k < local.global.size(); ++k) {
+    if (local.global[k] >= 0) continue;
     const mesh::NodeOwner own =
         k < local.owners.size() && local.owners[k].dim >= 0 ? local.owners[k] : owner;
-    map[k] = g >= 0 ? g : db.add_node(local.coords[k], own);
+    owners.push_back(own);
+    local.coords[fresh] = local.coords[k];  // fresh <= k: compaction in place
+    local.global[k] = known + static_cast<int>(fresh);
+    ++fresh;
   }
-  return map;
+  local.coords.resize(fresh);
+  local.owners = {};
+  db.append_nodes(std::move(local.coords), std::move(owners));
+  return local.global;
 }
 
+// Renumbers elements in place from local to global indices.
 template <size_t N>
-std::vector<std::array<int, N>> remap(const std::vector<std::array<int, N>>& elements,
-                                      const std::vector<int>& map, EntityRef entity) {
-  std::vector<std::array<int, N>> out;
-  out.reserve(elements.size());
-  for (const auto& e : elements) {
-    std::array<int, N> g{};
-    for (size_t i = 0; i < N; ++i) {
-      if (e[i] < 0 || e[i] >= static_cast<int>(map.size())) {
+void remap(std::vector<std::array<int, N>>& elements, const std::vector<int>& map,
+           EntityRef entity) {
+  const int n = static_cast<int>(map.size());
+  for (auto& e : elements) {
+    for (int& v : e) {
+      if (v < 0 || v >= n) {
         throw MeshingError(ErrorCode::Internal, entity, "element with a bad local node index");
       }
-      g[i] = map[static_cast<size_t>(e[i])];
+      v = map[static_cast<size_t>(v)];
     }
-    out.push_back(g);
   }
-  return out;
+}
+
+// Checks every local index before anything is handed over, so a bad mesh
+// leaves db's element arrays untouched.
+template <size_t N>
+void check(const std::vector<std::array<int, N>>& elements, size_t nodes, EntityRef entity) {
+  for (const auto& e : elements) {
+    for (int v : e) {
+      if (v < 0 || static_cast<size_t>(v) >= nodes) {
+        throw MeshingError(ErrorCode::Internal, entity, "element with a bad local node index");
+      }
+    }
+  }
 }
 
 }  // namespace
 
-void commit_surface(const scheme::EntityMesh& local, int surface_id, mesh::MeshDB& db) {
-  const auto map = globalise(local, {2, surface_id}, db);
+void commit_surface(scheme::EntityMesh& local, int surface_id, mesh::MeshDB& db) {
+  const EntityRef entity = EntityRef::surface(surface_id);
+  check(local.quads, local.coords.size(), entity);
+  check(local.tris, local.coords.size(), entity);
+  const auto& map = globalise(local, {2, surface_id}, db);
+  remap(local.quads, map, entity);
+  remap(local.tris, map, entity);
   mesh::SurfaceMeshData& s = db.mutable_surface(surface_id);
-  s.quads = remap(local.quads, map, EntityRef::surface(surface_id));
-  s.tris = remap(local.tris, map, EntityRef::surface(surface_id));
+  s.quads = std::move(local.quads);
+  s.tris = std::move(local.tris);
 }
 
-void commit_volume(const scheme::EntityMesh& local, int volume_id, mesh::MeshDB& db) {
-  const auto map = globalise(local, {3, volume_id}, db);
+void commit_volume(scheme::EntityMesh& local, int volume_id, mesh::MeshDB& db) {
+  const size_t nodes = local.coords.size();
+  check(local.hexes, nodes, EntityRef::volume(volume_id));
+  check(local.wedges, nodes, EntityRef::volume(volume_id));
+  for (const auto& [sid, quads] : local.surface_quads) check(quads, nodes, EntityRef::surface(sid));
+  for (const auto& [sid, tris] : local.surface_tris) check(tris, nodes, EntityRef::surface(sid));
+  const auto& map = globalise(local, {3, volume_id}, db);
+  remap(local.hexes, map, EntityRef::volume(volume_id));
+  remap(local.wedges, map, EntityRef::volume(volume_id));
   mesh::VolumeMeshData& v = db.mutable_volume(volume_id);
-  v.hexes = remap(local.hexes, map, EntityRef::volume(volume_id));
-  v.wedges = remap(local.wedges, map, EntityRef::volume(volume_id));
-  for (const auto& [sid, quads] : local.surface_quads) {
-    db.mutable_surface(sid).quads = remap(quads, map, EntityRef::surface(sid));
+  v.hexes = std::move(local.hexes);
+  v.wedges = std::move(local.wedges);
+  for (auto& [sid, quads] : local.surface_quads) {
+    remap(quads, map, EntityRef::surface(sid));
+    db.mutable_surface(sid).quads = std::move(quads);
   }
-  for (const auto& [sid, tris] : local.surface_tris) {
-    db.mutable_surface(sid).tris = remap(tris, map, EntityRef::surface(sid));
+  for (auto& [sid, tris] : local.surface_tris) {
+    remap(tris, map, EntityRef::surface(sid));
+    db.mutable_surface(sid).tris = std::move(tris);
   }
 }
 

@@ -196,7 +196,9 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     for (const io::ExportSetting& e : job.exports) {
       const std::string path = resolve_path(job.base_dir, e.file);
       report(options, "export " + e.file, 0, 1);
-      io::write_mesh(path, result.mesh.mesh, result.model);
+      io::ExportOptions export_options;
+      export_options.binary = e.binary;
+      io::write_mesh(path, result.mesh.mesh, result.model, export_options);
       result.written.push_back(path);
     }
     if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});

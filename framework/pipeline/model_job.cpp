@@ -36,7 +36,14 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
     }
   }
   for (const std::string& e : options.exports) {
-    job.exports.push_back({e, {options.origin, 0, options.export_option}});
+    const std::string ext = std::filesystem::path(e).extension().string();
+    if (options.binary && ext != ".vtu" && ext != ".msh") {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         options.origin + ": " + options.binary_option +
+                             " is for .vtu and .msh outputs (Exodus is always binary), not '" + e +
+                             "'");
+    }
+    job.exports.push_back({e, {options.origin, 0, options.export_option}, options.binary});
   }
   for (const std::string& r : options.reports) {
     job.reports.push_back({r, {options.origin, 0, options.report_option}});

@@ -17,6 +17,7 @@ struct ModelJobOptions {
   bool imprint_merge = true;                        ///< fragment touching solids
   io::ElementKind elements = io::ElementKind::Hex;  ///< for every volume
   std::vector<std::string> exports;                 ///< mesh files to write
+  bool binary = false;                              ///< binary .vtu/.msh exports
   std::vector<std::string> reports;                 ///< HTML reports to write
   /// Where the settings came from, for error messages: "command line",
   /// "cooperage.mesh()"; each setting's element names its option.
@@ -24,13 +25,15 @@ struct ModelJobOptions {
   std::string elements_option = "--elements";
   std::string export_option = "-o";
   std::string report_option = "--report";
+  std::string binary_option = "--binary";
 };
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at
 /// options.size with automatic schemes and writes the exports and reports.
 /// Wedge and mixed elements need the volume ids, so the model is read once
 /// here for them.
-/// @throws MeshingError(InvalidInput) for a size that is not positive; the
+/// @throws MeshingError(InvalidInput) for a size that is not positive, or
+///         binary asked of an export that is not .vtu or .msh; the
 ///         errors of pipeline::load_any() for wedge/mixed.
 io::Job model_job(const std::string& model, const ModelJobOptions& options);
 

@@ -23,10 +23,11 @@ enum class Role : unsigned {
   /// score reaches cooper's kMixedMinQuadQuality.
   MixedCap = 1u << 2,
   /// A structured mesh whose interval constraints are submap's per-direction
-  /// sums, so that its rows run along the sweep: cooper's side faces.
+  /// sums, so that its rows run along the sweep. Declared by submap; cooper's
+  /// side lattice still asks for submap by name (its rows are submap's).
   SweepSide = 1u << 3,
-  /// One logically rectangular grid, opposite sides equal: the six faces of
-  /// the volume map.
+  /// One logically rectangular grid, opposite sides equal. Declared by map;
+  /// the volume map still gives its six faces "map" by name.
   MappedFace = 1u << 4,
 };
 constexpr Role operator|(Role a, Role b) {

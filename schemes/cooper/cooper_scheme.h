@@ -1,37 +1,39 @@
-// The volume scheme "cooper" (Blacker 1996). Part I: every single-barrel
-// volume (the one-to-one sweep, any number of holes) meshes automatically
-// from an element size. Part II: many-to-one volumes (several source caps,
-// bosses, shoulders and through holes along one axis; classify_barrels.h,
-// sweep_many_to_one.h). Sides are submapped, the source caps are meshed by
-// map / submap / pave, the target cap is meshed here (kMeshedByVolume).
+// The volume scheme "cooper" (Blacker 1996): one code path for one barrel
+// (the one-to-one sweep, any number of holes) and many (bosses, blind
+// holes, pockets, bores through shoulders, appendages on both ends, sides
+// stacked along the sweep, a curved axis). plan_volume() classifies the
+// volume once -- the plan is cached and carried from applicable() to
+// constrain(), roles() and mesh() -- and sweep_volume() meshes it.
 // Wedge and mixed mode (Blacker 1996, abstract: "a wedge/hexahedral element
 // mix ... by simply allowing triangle and/or mixed triangle/quadrilateral
-// cap meshes"): every cap stack is meshed by "tri" (wedge) or map / submap /
-// "quad_dominant" (mixed), imprinted pieces of caps by the triangle or
+// cap meshes"): caps are meshed by "tri" (wedge) or map / submap /
+// "quad_dominant" (mixed), imprinted pieces by the triangle or
 // quad-dominant polygon mesher; the sweep makes wedges from triangles and
-// hexes from quads, one-to-one and many-to-one (elements.h).
+// hexes from quads (elements.h).
 #pragma once
 
 #include "framework/scheme/polygon_mesher.h"
 #include "framework/scheme/registry.h"
 #include "framework/scheme/scheme.h"
-#include "schemes/cooper/classify_barrels.h"
-#include "schemes/cooper/classify_faces.h"
 #include "schemes/cooper/elements.h"
+#include "schemes/cooper/plan_volume.h"
 
+#include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace cooperage::cooper {
 
 struct CooperOptions {
-  /// Journal hints per volume id (sources, targets, direction).
+  /// Journal hints per volume id (sources, targets, direction; binding).
   std::map<int, SweepHints> hints;
-  /// Meshes imprinted subcaps that are no model surface (Blacker 1996,
-  /// sec. 6.1); null: barrels with subcaps on both ends are not applicable.
-  /// The registration code wraps pave's 2D core (pave::pave_2d) here.
+  /// Meshes cap stacks that have no cap meshed by a surface scheme (Blacker
+  /// 1996, sec. 6.1); null: volumes that need it are not applicable. The
+  /// registration code wraps pave's 2D core (pave::pave_2d) here.
   std::shared_ptr<const scheme::PolygonMesher> polygon_mesher;
   /// The same for wedge mode (triangles; the registration code wraps
   /// framework/mesh2d) and mixed mode (quad-dominant; pave's 2D core with
@@ -51,48 +53,46 @@ class CooperScheme final : public scheme::VolumeScheme {
 
   std::string_view name() const override { return "cooper"; }
   bool makes_wedges() const override { return true; }
-  /// classify_faces(): a one-barrel volume (two caps, submappable sides,
-  /// convex end caps, a source cap scheme of the element kind), else
-  /// classify_barrels() with the caps' schemes of the element kind. Never meshes.
+  /// The plan's verdict: one barrel scores 0.5-0.9, several 0.3-0.45 (the
+  /// selector ranks volume map, one barrel, then many). Never meshes.
   scheme::Applicability applicable(const scheme::VolumeView& view) const override;
-  /// Per side: source-boundary sum == target-boundary sum; every linking
-  /// chain of the volume the same count (Blacker 1996, sec. 3-4).
-  void constrain(const scheme::VolumeView& view,
-                 intervals::IntervalProblem& problem) const override;
-  /// Sides -> the sweep-side scheme (submap), source caps -> their scheme
-  /// ("tri" in wedge mode, map/submap/"quad_dominant" in mixed mode), target
-  /// -> scheme::kMeshedByVolume. Empty when not applicable.
+  /// The plan's rows: every linking chain of a level the same count, at
+  /// least one layer per barrel, even cap loops where pieces are paved.
+  void constrain(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const override;
+  /// Sides -> "submap"; caps meshed beforehand -> their scheme; the rest ->
+  /// scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
-  /// Barrel formation, projection, elements. Throws MeshingError
-  /// (MeshingFailed) naming the volume: ribs that do not end on the target
-  /// boundary (many-to-one, part II), or elements that stay inverted.
-  scheme::EntityMesh mesh(const scheme::VolumeView& view,
-                          const scheme::MeshParams& params) const override;
+  /// sweep_volume() on the plan. Throws MeshingError naming the volume.
+  scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::MeshParams& params) const override;
+
+  /// The plan of a volume (computed on first use, then cached per model,
+  /// volume and options).
+  std::shared_ptr<const VolumePlan> plan(const scheme::VolumeView& view) const;
 
   /// Sets (or, with all lists empty and no direction, clears) the hints of a volume.
   void set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
-                 std::optional<geom::Vec3> direction = std::nullopt);
+                 std::optional<geom::Vec3> direction = std::nullopt, std::string where = {});
   const CooperOptions& options() const { return options_; }
   /// The element kind of a volume (Hex unless set in the options).
   Elements elements(int volume_id) const;
   /// Sets the 2D mesher of imprinted subcaps in hex mode (see CooperOptions).
-  void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher) {
-    options_.polygon_mesher = std::move(mesher);
-  }
+  void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher);
 
  private:
-  Classification classify(const scheme::VolumeView& view) const;
-  ManyToOne classify_many(const scheme::VolumeView& view) const;
   /// The polygon mesher of the volume's element kind (null: none given).
   const scheme::PolygonMesher* polygon_mesher(int volume_id) const;
-  void constrain_many(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const;
 
   const scheme::Registry* registry_;
   CooperOptions options_;
+  /// Plans by (model, volume, fingerprint of its faces, options version).
+  using Key = std::tuple<const geom::Model*, int, std::uint64_t, int>;
+  mutable std::mutex mutex_;
+  mutable std::map<Key, std::shared_ptr<const VolumePlan>> plans_;
+  mutable std::vector<Key> order_;  ///< insertion order, for eviction
+  int version_ = 0;
 };
 
 /// The scheme; register it after the volume map.
-std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry,
-                                                  CooperOptions options = {});
+std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry, CooperOptions options = {});
 
 }  // namespace cooperage::cooper

@@ -75,7 +75,7 @@ Barrel form_barrels(const BarrelInput& input) {
   for (size_t r = 0; r < front.size(); ++r) barrel.ribs[r].push_back(front[r]);
 
   std::vector<int> advanced(front.size());
-  const int max_layers = n;
+  const int max_layers = input.layers > 0 ? input.layers : n;
   for (int layer = 1; layer <= max_layers; ++layer) {
     // A complete layer at a time: every front node is already in a rib, so
     // the only unused neighbour of a rib end is the next node down its side.
@@ -110,6 +110,19 @@ Barrel form_barrels(const BarrelInput& input) {
       any_stop = any_stop || stop[static_cast<size_t>(w)];
     }
     front.swap(advanced);
+    if (input.layers > 0) {
+      if (layer < input.layers && any_stop) {
+        barrel.why = "a rib reaches another cap after " + std::to_string(layer) + " of " +
+                     std::to_string(input.layers) + " layers";
+        return barrel;
+      }
+      if (layer < input.layers) continue;
+      barrel.layers = layer;
+      barrel.all_ribs_on_stop_nodes = std::all_of(
+          front.begin(), front.end(), [&](int w) { return stop[static_cast<size_t>(w)] != 0; });
+      barrel.ok = true;
+      return barrel;
+    }
     if (any_stop) {
       // Rib formation ceases as soon as any rib reaches another cap.
       barrel.layers = layer;

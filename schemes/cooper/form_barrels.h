@@ -23,6 +23,10 @@ struct BarrelInput {
   /// Side nodes already in the ribs of a barrel above (a side face spanning
   /// several barrels, sec. 4 Fig. 8): never taken by a rib.
   std::vector<int> blocked_nodes;
+  /// 0: stop at the first layer where a rib reaches a stop node. Else the
+  /// layer count known from the plan: advance exactly that many layers and
+  /// fail when a rib reaches a stop node earlier.
+  int layers = 0;
 };
 
 struct Barrel {

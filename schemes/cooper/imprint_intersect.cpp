@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
+#include <functional>
 #include <limits>
 
 namespace cooperage::cooper::detail {
@@ -27,15 +29,27 @@ bool Imprinter::crosses_opposing(int e, const Loop& la) {
 }
 
 // A free loop crossing opposing boundaries (overlapping subcaps without
-// ribs, sec. 5.3): each crossing is combined onto the closest pair of an
-// unribbed node of a and an unribbed, non-exterior opposing node (sec. 5.4),
-// giving a's loop ribs; the gaps between them are then subtracted.
+// ribs, sec. 5.3): each crossing is combined onto an unribbed node of a and
+// an unribbed, non-exterior opposing node next to it (sec. 5.4), giving a's
+// loop ribs; the gaps between them are then subtracted. Even parity (sec.
+// 5.3: "this intersection node must meet the even parity constraint"): of
+// the two nodes of a crossed segment, the one that leaves an even number of
+// edges since the previous crossing along the loop -- every arc between two
+// links even on both loops, so every piece they bound is even (each loop is
+// even to begin with).
 bool Imprinter::free_crossing(int e, const Subcap& a) {
   const Loop& la = a.loops.front();
   const size_t na = la.size();
-  std::set<int> used;
-  std::vector<Vec2> done;
-  int links = 0;
+  struct Crossing {
+    size_t ia;     // segment la[ia] - la[ia + 1]
+    double ta;
+    Loop lb;       // the opposing loop
+    size_t kb;     // segment lb[kb] - lb[kb + 1]
+    double tb;
+    Vec2 x;
+    int va = -1, vb = -1;
+  };
+  std::vector<Crossing> found;
   for (size_t i = 0; i < na; ++i) {
     const Vec2& p0 = xy().at(la[i]);
     const Vec2& p1 = xy().at(la[(i + 1) % na]);
@@ -50,33 +64,117 @@ bool Imprinter::free_crossing(int e, const Subcap& a) {
           if (!t) continue;
           const Vec2 X = p0 + *t * (p1 - p0);
           bool seen = false;
-          for (const Vec2& d : done) seen = seen || (d - X).norm() < 0.5 * h;
+          for (const Crossing& c : found) seen = seen || (c.x - X).norm() < 0.5 * h;
           if (seen) continue;
-          done.push_back(X);
-          int best_a = -1, best_b = -1;
-          double best = std::numeric_limits<double>::infinity();
-          for (int va : {la[i], la[(i + 1) % na]}) {
-            if (partner(e, va) || used.count(va)) continue;
-            for (int vb : {lb[k], lb[(k + 1) % lb.size()]}) {
-              if (partner(1 - e, vb) || exterior_.count(vb) || used.count(vb)) continue;
-              const double dist = (xy().at(va) - xy().at(vb)).norm();
-              if (dist < best) {
-                best = dist;
-                best_a = va;
-                best_b = vb;
-              }
-            }
-          }
-          if (best_a < 0) continue;
-          used.insert(best_a);
-          used.insert(best_b);
-          link(e, best_a, best_b);
-          r_.seams.push_back({best_a, best_b});
-          r_.steps.push_back(ImprintStep::Seam);
-          ++links;
+          const auto tb = segment_hit(q0, q1, p0, p1);
+          found.push_back({i, *t, lb, k, tb ? *tb : 0.0, X});
         }
       }
     }
+  }
+  if (found.empty()) return false;
+  auto edges = [](const Loop& l, int from, int to) {
+    const long n = static_cast<long>(l.size());
+    return ((index_in(l, to) - index_in(l, from)) % n + n) % n;
+  };
+  // The nodes of a chain of crossed segments along loop `l` (candidates per
+  // crossing, in loop order) when the first takes candidate `first`, every
+  // later one the candidate leaving an even arc behind it (or, when that one
+  // is not free, the other); -1 where none is free.
+  auto chain = [&](const Loop& l, const std::vector<std::array<int, 2>>& cands, int first,
+                   const std::function<bool(int)>& free) {
+    std::vector<int> out(cands.size(), -1);
+    int prev = -1;
+    for (size_t j = 0; j < cands.size(); ++j) {
+      std::array<int, 2> order = cands[j];
+      if (j == 0) {
+        if (first == 1) std::swap(order[0], order[1]);
+      } else if (prev >= 0 && options_.even_parity && edges(l, prev, order[0]) % 2 != 0) {
+        std::swap(order[0], order[1]);
+      }
+      for (int v : order) {
+        if (out[j] < 0 && free(v)) out[j] = v;
+      }
+      if (out[j] >= 0) prev = out[j];
+    }
+    return out;
+  };
+  // a's side: two parity-consistent choices.
+  std::vector<std::array<int, 2>> ca;
+  for (const Crossing& c : found) ca.push_back({la[c.ia], la[(c.ia + 1) % na]});
+  const auto free_a = [&](int v) { return !partner(e, v).has_value(); };
+  const std::vector<int> a_choice[2] = {chain(la, ca, 0, free_a), chain(la, ca, 1, free_a)};
+  // Each opposing loop: its crossings in its own order, two choices each.
+  std::map<std::set<int>, std::vector<size_t>> by_loop;
+  for (size_t j = 0; j < found.size(); ++j) by_loop[std::set<int>(found[j].lb.begin(), found[j].lb.end())].push_back(j);
+  const auto free_b = [&](int v) { return !partner(1 - e, v).has_value() && !exterior_.count(v); };
+  std::vector<std::vector<size_t>> loop_members;
+  std::vector<std::array<std::vector<int>, 2>> b_choice;
+  for (auto& [key, list] : by_loop) {
+    std::sort(list.begin(), list.end(), [&](size_t x, size_t y) {
+      return found[x].kb != found[y].kb ? found[x].kb < found[y].kb : found[x].tb < found[y].tb;
+    });
+    const Loop& lb = found[list.front()].lb;
+    std::vector<std::array<int, 2>> cb;
+    for (size_t j : list) cb.push_back({lb[found[j].kb], lb[(found[j].kb + 1) % lb.size()]});
+    loop_members.push_back(list);
+    b_choice.push_back({chain(lb, cb, 0, free_b), chain(lb, cb, 1, free_b)});
+  }
+  // Two crossings on one opposing loop (a round boss over a square foot):
+  // the lens and the pieces beside it are even exactly when the arcs
+  // between the two links, one on each loop, sum to an even count; any of
+  // the 16 choices with that, the shortest links. More crossings: every
+  // arc even on both loops (the two chains per loop above).
+  if (found.size() == 2 && loop_members.size() == 1) {
+    const Loop& lb = found.front().lb;
+    double best = std::numeric_limits<double>::infinity();
+    for (int m = 0; m < 16; ++m) {
+      const int a0 = ca[0][m & 1], a1 = ca[1][(m >> 1) & 1];
+      const int b0 = lb[(found[0].kb + ((m >> 2) & 1)) % lb.size()];
+      const int b1 = lb[(found[1].kb + ((m >> 3) & 1)) % lb.size()];
+      if (a0 == a1 || b0 == b1 || !free_a(a0) || !free_a(a1) || !free_b(b0) || !free_b(b1)) continue;
+      if (options_.even_parity && (edges(la, a0, a1) + edges(lb, b0, b1)) % 2 != 0) continue;
+      const double cost = (xy().at(a0) - xy().at(b0)).norm() + (xy().at(a1) - xy().at(b1)).norm();
+      if (!(cost < best)) continue;
+      best = cost;
+      found[0].va = a0;
+      found[0].vb = b0;
+      found[1].va = a1;
+      found[1].vb = b1;
+    }
+    loop_members.clear();  // chosen
+  }
+  // The cheapest combination: the links as short as possible.
+  const size_t combos = loop_members.empty() ? 0 : size_t{2} << loop_members.size();
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (size_t m = 0; m < combos; ++m) {
+    std::vector<int> va = a_choice[m & 1], vb(found.size(), -1);
+    for (size_t l = 0; l < loop_members.size(); ++l) {
+      const auto& pick = b_choice[l][(m >> (l + 1)) & 1];
+      for (size_t k = 0; k < loop_members[l].size(); ++k) vb[loop_members[l][k]] = pick[k];
+    }
+    std::set<int> used;
+    double cost = 0;
+    bool ok = true;
+    for (size_t j = 0; j < found.size(); ++j) {
+      if (va[j] < 0 || vb[j] < 0) continue;
+      ok = ok && used.insert(va[j]).second && used.insert(vb[j]).second;
+      cost += (xy().at(va[j]) - xy().at(vb[j])).norm();
+    }
+    if (!ok || !(cost < best_cost)) continue;
+    best_cost = cost;
+    for (size_t j = 0; j < found.size(); ++j) {
+      found[j].va = va[j];
+      found[j].vb = vb[j];
+    }
+  }
+  int links = 0;
+  for (const Crossing& c : found) {
+    if (c.va < 0 || c.vb < 0) continue;
+    link(e, c.va, c.vb);
+    r_.seams.push_back({c.va, c.vb});
+    r_.steps.push_back(ImprintStep::Seam);
+    ++links;
   }
   if (links > 0) r_.steps.push_back(ImprintStep::Intersect);
   return links > 0;
@@ -110,7 +208,7 @@ bool Imprinter::split_hole(int e, size_t bi, int x, const Loop& path, int y) {
     if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
     if (signed_area(hole, xy()) > 0) std::reverse(hole.begin(), hole.end());
     t.loops[h] = hole;
-    new_cap(e, {piece});
+    new_cap(e, {piece}, t.id);
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }
@@ -185,7 +283,10 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
       if (g < 0 || g >= static_cast<long>(gap.size())) continue;
       cands.push_back({g, pj, (xy().at(gap[static_cast<size_t>(g)]) - xy().at(p)).norm()});
     }
-    cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
+    // A node inserted on an edge of a model curve would break its mesh.
+    const int e0 = qi == 0 ? r0 : gap[qi - 1];
+    const int e1 = qi < gap.size() ? gap[qi] : r1;
+    if (!(r_.ends.fixed.count(e0) && r_.ends.fixed.count(e1))) cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
   }
   std::stable_sort(cands.begin(), cands.end(), [](const Cand& u, const Cand& v) { return u.d < v.d; });
   for (const Cand& cand : cands) {

@@ -180,10 +180,14 @@ int Imprinter::project(int e, int v, const Loop& around) {
   return w;
 }
 
-int Imprinter::new_cap(int e, std::vector<Loop> loops) {
+int Imprinter::new_cap(int e, std::vector<Loop> loops, int parent) {
   ++version_;
   Subcap s;
   s.id = next_cap_++;
+  if (parent >= 0) {
+    const auto root = r_.origin.find(parent);
+    r_.origin[s.id] = root == r_.origin.end() ? parent : root->second;
+  }
   s.loops = std::move(loops);
   caps(e).push_back(s);
   return s.id;
@@ -219,7 +223,7 @@ std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& p
       }
     }
   }
-  for (auto& l : loops) ids.push_back(new_cap(e, l));
+  for (auto& l : loops) ids.push_back(new_cap(e, l, old.id));
   for (const Loop& o : overlaps) subtract_overlap(e, Loop(o.rbegin(), o.rend()));
   return ids;
 }
@@ -245,6 +249,7 @@ void Imprinter::apply_combined(int e, const std::vector<std::pair<int, int>>& co
 // sec. 5.5: an overlap (a loop traversed clockwise after a subtraction)
 // lies inside other subcaps; it is subtracted from each and becomes a subcap.
 void Imprinter::subtract_overlap(int e, const Loop& piece) {
+  int parent = -1;
   Vec2 c = Vec2::Zero();
   for (int v : piece) c += xy().at(v);
   c /= static_cast<double>(piece.size());
@@ -252,6 +257,7 @@ void Imprinter::subtract_overlap(int e, const Loop& piece) {
   for (size_t i = 0; i < list.size(); ++i) {
     Subcap& t = list[i];
     if (!point_in_subcap(c, t, xy())) continue;
+    if (parent < 0) parent = t.id;
     const Loop& outer = t.loops.front();
     // The piece's chain off t's outer loop cuts t.
     const size_t n = piece.size();
@@ -279,7 +285,7 @@ void Imprinter::subtract_overlap(int e, const Loop& piece) {
       match_of_.erase(t.id);
     }
   }
-  new_cap(e, {piece});
+  new_cap(e, {piece}, parent);
 }
 
 // A gap of loop l of subcap s (end e): consecutive ribbed nodes r0 -> r1
@@ -328,6 +334,27 @@ bool Imprinter::opposing_edge(int e, int x, int y) {
   return false;
 }
 
+// sec. 5.2: `loop` (counter-clockwise, new nodes strictly inside subcap bi
+// of end o) cuts it in two: bi keeps the outside with `loop` as a new hole,
+// the new subcap is the inside with the holes of bi that lie in it (a bore
+// inside a shoulder's imprinted footprint stays a hole of the footprint).
+int Imprinter::subtract_inside(int o, size_t bi, const Loop& loop) {
+  Subcap& b = caps(o)[bi];
+  const int parent = b.id;
+  std::vector<Loop> inner{loop};
+  std::vector<Loop> kept{b.loops.front()};
+  for (size_t h = 1; h < b.loops.size(); ++h) {
+    const Loop& hole = b.loops[h];
+    const bool in = std::all_of(hole.begin(), hole.end(), [&](int v) {
+      return index_in(loop, v) >= 0 || point_in_loop(xy().at(v), loop, xy());
+    });
+    (in ? inner : kept).push_back(hole);
+  }
+  kept.push_back(Loop(loop.rbegin(), loop.rend()));
+  b.loops = std::move(kept);
+  return new_cap(o, std::move(inner), parent);
+}
+
 // sec. 5.2: a subcap without any rib projects inside one opposing subcap.
 bool Imprinter::free_loop(int e, const Subcap& a) {
   const Vec2 p = xy().at(a.loops.front().front());
@@ -343,14 +370,16 @@ bool Imprinter::free_loop(int e, const Subcap& a) {
       for (int v : l) img.push_back(project(e, v, l));
       images.push_back(img);
     }
-    Subcap& b = opp[bi];
-    b.loops.push_back(Loop(images.front().rbegin(), images.front().rend()));
-    std::vector<Loop> hat_loops{images.front()};
+    const int hat = subtract_inside(1 - e, bi, images.front());
+    // a's holes without ribs: imprinted inside the hat as well (the subcaps
+    // filling them are matched to their images later).
     for (size_t h = 1; h < images.size(); ++h) {
-      hat_loops.push_back(images[h]);
-      new_cap(1 - e, {Loop(images[h].rbegin(), images[h].rend())});
+      const std::set<int> img(images[h].begin(), images[h].end());
+      const size_t hi = index_of_cap(1 - e, hat);
+      bool present = false;
+      for (const Loop& l : caps(1 - e)[hi].loops) present = present || std::set<int>(l.begin(), l.end()) == img;
+      if (!present) subtract_inside(1 - e, hi, Loop(images[h].rbegin(), images[h].rend()));
     }
-    new_cap(1 - e, hat_loops);
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }
@@ -370,8 +399,7 @@ bool Imprinter::hole_loops(int e, const Subcap& a) {
       if (matched(opp[bi].id) || !point_in_subcap(p, opp[bi], xy())) continue;
       Loop img;
       for (int v : l) img.push_back(project(e, v, l));
-      caps(1 - e)[bi].loops.push_back(img);
-      new_cap(1 - e, {Loop(img.rbegin(), img.rend())});
+      subtract_inside(1 - e, bi, Loop(img.rbegin(), img.rend()));
       r_.steps.push_back(ImprintStep::Subtract);
       return true;
     }

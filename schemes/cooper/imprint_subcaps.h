@@ -33,6 +33,7 @@
 #include "schemes/cooper/imprint_polygons.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +46,8 @@ struct BarrelEnds {
   std::vector<Subcap> upper;              ///< subcaps of the upper cap
   std::vector<Subcap> lower;              ///< subcaps of the lower cap
   std::vector<std::pair<int, int>> ribs;  ///< (upper node, lower node): the exterior ribs
+  /// Nodes of model curves: no node is inserted on an edge between two of them.
+  std::set<int> fixed;
 };
 
 struct ImprintOptions {
@@ -71,6 +74,8 @@ struct ImprintResult {
   /// was combined with is the second) -- here (source node, existing node).
   std::vector<std::pair<int, int>> seams;
   std::vector<ImprintStep> steps;  ///< in order
+  /// New subcap id -> the input subcap it was cut from.
+  std::map<int, int> origin;
 };
 
 /// Imprints and matches the subcaps of one barrel's ends (sec. 5).

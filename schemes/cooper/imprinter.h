@@ -40,7 +40,10 @@ class Imprinter {
   // Projects node v of end e onto end 1 - e (seaming onto an opposing node
   // without a rib when close, sec. 5.4); returns the opposing node.
   int project(int e, int v, const Loop& around);
-  int new_cap(int e, std::vector<Loop> loops);
+  int new_cap(int e, std::vector<Loop> loops, int parent);
+  // sec. 5.2: a closed loop strictly inside subcap bi of end o cuts it; the
+  // inside (with bi's holes in it) becomes a new subcap, whose id is returned.
+  int subtract_inside(int o, size_t bi, const Loop& loop);
 
   // Replaces subcap index `bi` of end e by outer loops `pieces`, handing
   // out its holes to the piece containing them; returns their ids. Pieces

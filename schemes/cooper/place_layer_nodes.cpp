@@ -2,11 +2,15 @@
 // sec. 6.2 the two-sided blend); ALGORITHMS.md sec. 3.
 #include "schemes/cooper/sweep_barrel.h"
 
+#include "schemes/cooper/residual_field.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <string>
 
 namespace cooperage::cooper {
@@ -23,22 +27,6 @@ double residuals(const AffineMap& map, const Vec3* from, const Vec3* layer, std:
     worst = std::max(worst, r[k].norm());
   }
   return worst;
-}
-
-// Inverse-distance (Shepard, power 3) interpolation of loop residuals at a
-// source cap node: the non-affine part of the loops' motion (a hole that does
-// not shrink with the outer loop, a local bulge) carried to the interior.
-Vec3 interpolate_residual(const Vec3& x, const std::vector<Vec3>& source, std::size_t B,
-                          const std::vector<Vec3>& r) {
-  Vec3 sum = Vec3::Zero();
-  double wsum = 0;
-  for (std::size_t k = 0; k < B; ++k) {
-    const double d2 = (x - source[k]).squaredNorm();
-    const double w = 1.0 / (d2 * std::sqrt(d2) + 1e-300);
-    sum += w * r[k];
-    wsum += w;
-  }
-  return sum / wsum;
 }
 
 // Layer-major rings (contiguous per layer for the least-squares sums).
@@ -83,6 +71,25 @@ double residual_tolerance(const std::vector<Vec3>& ring) {
   return 1e-9 * (hi - lo).norm();
 }
 
+// The residual field of the cap (built on first need, once per sweep).
+class LazyField {
+ public:
+  explicit LazyField(const SweepInput& in) : in_(in) {}
+  const ResidualField& get() const {
+    std::call_once(once_, [&] {
+      field_ = std::make_unique<ResidualField>(in_.source, static_cast<std::size_t>(in_.boundary));
+    });
+    return *field_;
+  }
+
+ private:
+  const SweepInput& in_;
+  mutable std::once_flag once_;
+  mutable std::unique_ptr<ResidualField> field_;
+};
+
+bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why, const LazyField& field);
+
 }  // namespace
 
 bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
@@ -116,6 +123,9 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   Vec3* target = &points[J * n];
   const bool correct_target = residuals(to_target, upper, lower, B, res_u) > tolerance;
   const bool fixed = in.has_fixed_target.size() == n;
+  const LazyField field(in);
+  std::vector<Vec3> r_target;
+  if (correct_target) field.get().apply(res_u, r_target);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(B, n, 1024),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -124,17 +134,22 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
                           continue;
                         }
                         Vec3 y = to_target.apply(in.source[i]);
-                        if (correct_target) {
-                          y += interpolate_residual(in.source[i], in.source, B, res_u);
-                        }
+                        if (correct_target) y += r_target[i];
                         target[i] = in.project_target ? in.project_target(y) : y;
                       }
                     });
 
-  return blend_layers(in, points, why);
+  return blend_with(in, points, why, field);
 }
 
 bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& why) {
+  const LazyField field(in);
+  return blend_with(in, points, why, field);
+}
+
+namespace {
+
+bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why, const LazyField& field) {
   const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
   const std::size_t B = static_cast<std::size_t>(in.boundary);
   const std::size_t J = static_cast<std::size_t>(in.layers);
@@ -157,19 +172,26 @@ bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& 
       failed[j] = from_upper.ok ? 2 : 1;
       return;
     }
-    const double sj = s[j];
+    std::vector<Vec3> ru, rl;  // this layer's residuals
+    const double eu = residuals(from_upper, upper, layer, B, ru);
+    const double el = residuals(from_lower, lower, layer, B, rl);
+    const bool cu = eu > tolerance;
+    const bool cl = el > tolerance;
+    // Where the rings change shape along the barrel (a countersink's cone
+    // over its bore), a layer takes after the end whose map explains its
+    // ring: weights from the residuals of the two maps instead of j / J.
+    const double sj = cu || cl ? eu / (eu + el) : s[j];
     const Eigen::Matrix3d Au = (1.0 - sj) * from_upper.A;
     const Eigen::Matrix3d Al = sj * from_lower.A;
     const Vec3 c = from_upper.to_centre - Au * from_upper.from_centre - Al * from_lower.from_centre;
     // (1 - s) [A_U (x - xu) + yc] + s [A_L (t - xl) + yc] with yc shared.
     Vec3* out = &points[j * n];
     for (std::size_t i = B; i < n; ++i) out[i] = Au * in.source[i] + Al * target[i] + c;
-    std::vector<Vec3> ru, rl;  // this layer's residuals
-    const bool cu = residuals(from_upper, upper, layer, B, ru) > tolerance;
-    const bool cl = residuals(from_lower, lower, layer, B, rl) > tolerance;
     if (cu || cl) {
       for (std::size_t k = 0; k < B; ++k) ru[k] = (1.0 - sj) * ru[k] + sj * rl[k];
-      for (std::size_t i = B; i < n; ++i) out[i] += interpolate_residual(in.source[i], in.source, B, ru);
+      std::vector<Vec3> r;
+      field.get().apply(ru, r);
+      for (std::size_t i = B; i < n; ++i) out[i] += r[i];
     }
   });
   for (std::size_t j = 1; j < J; ++j) {
@@ -180,5 +202,7 @@ bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& 
   }
   return true;
 }
+
+}  // namespace
 
 }  // namespace cooperage::cooper

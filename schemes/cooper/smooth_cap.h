@@ -35,4 +35,14 @@ bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& 
                 const mesh::Vec3& normal,
                 const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations = 8);
 
+/// Constrained ("smart") Laplacian smoothing: a movable node moves to the
+/// (projected) mean of its neighbours only when the worst corner of the
+/// faces around it does not get worse; node by node, in index order
+/// (deterministic). For meshes folded or squashed next to a moved boundary,
+/// where a plain Laplacian pulls nodes into a concave boundary. Returns
+/// whether the worst corner over the mesh improved.
+bool smart_smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
+                      const std::vector<mesh::Tri>& tris, const std::vector<char>& movable, const mesh::Vec3& normal,
+                      const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations = 40);
+
 }  // namespace cooperage::cooper

@@ -189,6 +189,33 @@ TEST_F(RunCommand, MeshCommandElementsOption) {
   EXPECT_EQ(bad.exit_code, 2);
 }
 
+TEST_F(RunCommand, MeshCommandBinaryOutputs) {
+  occ::Workbench bench;
+  bench.brick("a", {0, 0, 0}, {1, 1, 1});
+  bench.write(path("cube.step"));
+  for (const std::string ext : {".msh", ".vtu"}) {
+    const std::string ascii = path("cube_a" + ext), binary = path("cube_b" + ext);
+    ASSERT_EQ(run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q -o " + ascii)
+                  .exit_code, 0);
+    const auto r = run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q --binary -o " +
+                               binary);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(binary, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (ext == ".msh") {
+      EXPECT_EQ(text.rfind("$MeshFormat\n4.1 1 8\n", 0), 0u) << "Gmsh binary header";
+    } else {
+      EXPECT_NE(text.find("<AppendedData encoding=\"raw\">"), std::string::npos);
+    }
+    EXPECT_EQ(run_command(kCli + " quality " + ascii).exit_code, 0);
+  }
+  const auto bad = run_command(kCli + " mesh " + path("cube.step") + " --size 0.5 --binary -o " +
+                               path("cube.exo"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--binary"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(path("cube.exo")));
+}
+
 TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
   occ::Workbench bench;
   bench.brick("a", {0, 0, 0}, {1, 2, 3});

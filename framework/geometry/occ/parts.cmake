@@ -8,4 +8,6 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/write.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curve_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_geometry.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/model_builder.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/surface_projector.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/model_builder.cpp
+  PRIVATE_DEPS TBB::tbb)

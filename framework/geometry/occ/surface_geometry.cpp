@@ -1,15 +1,15 @@
 // SurfaceGeometry over an OCCT face. Holds the immutable Geom_Surface (with
-// the face location applied) and the face's parameter box; projectors are
-// created per call, so the evaluator is safe to share across threads.
+// the face location applied), the face's parameter box and its projector
+// (surface_projector.h: closed forms, a warm-started Newton step, and OCCT's
+// global projector kept per thread), so it is safe to share across threads.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/surface_projector.h"
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
-#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <GeomLProp_SLProps.hxx>
 #include <Geom_Surface.hxx>
-#include <ShapeAnalysis_Surface.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +39,7 @@ class FaceSurface final : public geom::SurfaceGeometry {
       : surface_(BRep_Tool::Surface(face)), flip_(face.Orientation() == TopAbs_REVERSED) {
     BRepTools::UVBounds(face, u0_, u1_, v0_, v1_);
     type_ = surface_type(GeomAdaptor_Surface(surface_).GetType());
+    projector_ = std::make_unique<SurfaceProjector>(surface_, u0_, u1_, v0_, v1_);
   }
 
   geom::SurfaceType type() const override { return type_; }
@@ -62,31 +63,14 @@ class FaceSurface final : public geom::SurfaceGeometry {
   std::pair<Vec2, Vec2> uv_bounds() const override { return {Vec2(u0_, u1_), Vec2(v0_, v1_)}; }
 
   geom::SurfaceProjection project(const Vec3& p) const override {
+    return at(p, projector_->closest(to_pnt(p)));
+  }
+
+  geom::SurfaceProjection project_near(const Vec3& p, const Vec2& uv_hint) const override {
     const gp_Pnt q = to_pnt(p);
-    double u = 0.5 * (u0_ + u1_), v = 0.5 * (v0_ + v1_);
-    bool found = false;
-    try {
-      GeomAPI_ProjectPointOnSurf proj(q, surface_, u0_, u1_, v0_, v1_);
-      if (proj.NbPoints() > 0) {
-        proj.LowerDistanceParameters(u, v);
-        found = true;
-      }
-    } catch (const Standard_Failure&) {
-    }
-    if (!found) {
-      ShapeAnalysis_Surface sas(surface_);
-      const gp_Pnt2d uv = sas.ValueOfUV(q, 1e-9);
-      u = uv.X();
-      v = uv.Y();
-    }
-    u = std::clamp(u, u0_, u1_);
-    v = std::clamp(v, v0_, v1_);
-    geom::SurfaceProjection out;
-    out.uv = Vec2(u, v);
-    out.point = point(out.uv);
-    out.normal = normal(out.uv);
-    out.distance = (p - out.point).norm();
-    return out;
+    if (auto uv = projector_->closed_form(q)) return at(p, *uv);
+    if (auto uv = projector_->newton(q, uv_hint)) return at(p, *uv);
+    return at(p, projector_->closest(q));
   }
 
  private:
@@ -94,6 +78,16 @@ class FaceSurface final : public geom::SurfaceGeometry {
   bool flip_ = false;
   double u0_ = 0, u1_ = 0, v0_ = 0, v1_ = 0;
   geom::SurfaceType type_ = geom::SurfaceType::Other;
+  std::unique_ptr<SurfaceProjector> projector_;
+
+  geom::SurfaceProjection at(const Vec3& p, const Vec2& uv) const {
+    geom::SurfaceProjection out;
+    out.uv = uv;
+    out.point = point(uv);
+    out.normal = normal(uv);
+    out.distance = (p - out.point).norm();
+    return out;
+  }
 };
 
 }  // namespace

@@ -13,6 +13,14 @@ struct ExportOptions {
   /// Title / heading written where the format has one (Exodus title is cut
   /// to 80 characters by the format).
   std::string title = "Cooperage mesh";
+  /// .vtu and .msh only: binary encoding (.vtu: raw little-endian arrays in
+  /// one appended block; .msh: Gmsh 4.1 binary). Both are read by ParaView,
+  /// Gmsh and meshio; ASCII (the default) is also read by `cooperage quality`.
+  bool binary = false;
+  /// Exodus only: netCDF-4 (HDF5) container instead of classic 64-bit-offset
+  /// netCDF. Classic is the default: as fast once the header has room for
+  /// every definition (bench/RESULTS.md, issue 20) and read by every tool.
+  bool exodus_netcdf4 = false;
 };
 
 }  // namespace cooperage::io

@@ -1,6 +1,7 @@
 #include "framework/io/export/inp_writer.h"
 
 #include "framework/io/export/export_common.h"
+#include "framework/io/export/stream_buffer.h"
 
 #include <map>
 #include <ostream>
@@ -9,17 +10,19 @@
 namespace cooperage::io {
 namespace {
 
+using detail::StreamBuffer;
+
 /// Writes integers 16 per line, comma separated (no leading blanks: some
 /// readers test the first character of a data line).
-void write_ids(std::ostream& out, const std::vector<int>& ids) {
+void write_ids(StreamBuffer& out, const std::vector<int>& ids) {
   for (size_t i = 0; i < ids.size(); ++i) {
     out << ids[i];
-    out << ((i + 1) % 16 == 0 || i + 1 == ids.size() ? "\n" : ", ");
+    out << std::string_view((i + 1) % 16 == 0 || i + 1 == ids.size() ? "\n" : ", ");
   }
 }
 
 template <size_t N>
-void write_elements(std::ostream& out, const char* type, const std::string& elset,
+void write_elements(StreamBuffer& out, const char* type, const std::string& elset,
                     const std::vector<std::array<int, N>>& elems, int& next_id) {
   if (elems.empty()) return;
   out << "*ELEMENT, TYPE=" << type << ", ELSET=" << elset << '\n';
@@ -41,8 +44,8 @@ void write_inp(const std::string& path, const mesh::MeshDB& db, const geom::Mode
     faces = detail::surface_faces(db, model, detail::abaqus_hex_faces(),
                                   detail::abaqus_wedge_faces());
   }
-  detail::write_text_atomically(path, [&](std::ostream& out) {
-    out.precision(17);
+  detail::write_text_atomically(path, [&](std::ostream& os) {
+    StreamBuffer out(os);
     out << "*HEADING\n" << options.title << "\n";
     out << "*NODE\n";
     for (size_t i = 0; i < db.node_count(); ++i) {

@@ -2,9 +2,11 @@
 
 #include "framework/core/error.h"
 #include "framework/io/export/export_common.h"
+#include "framework/io/export/stream_buffer.h"
 
 #include <map>
 #include <ostream>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -14,16 +16,59 @@ namespace {
 using geom::BoundingBox;
 using geom::Vec3;
 using EntityKey = std::pair<int, int>;  // (dim, id)
+using detail::StreamBuffer;
 
-void write_box(std::ostream& out, const BoundingBox& b) {
+// Numbers of the Gmsh 4.1 format, as text (blank-separated, a line per
+// record) or as binary values of the type the format names (int, size_t,
+// double); section keywords and $PhysicalNames are text in both.
+class MshOut {
+ public:
+  MshOut(StreamBuffer& out, bool binary) : out_(out), binary_(binary) {}
+  bool binary() const { return binary_; }
+  MshOut& i(int v) { return put(v); }
+  MshOut& z(size_t v) { return put(v); }
+  MshOut& d(double v) { return put(v); }
+  /// End of a record (a line in ASCII; nothing in binary).
+  void eol() {
+    if (!binary_) out_ << '\n';
+    first_ = true;
+  }
+  /// A text line; in binary mode a newline first ends the binary run.
+  void line(std::string_view text) {
+    if (binary_ && in_binary_) out_ << '\n';
+    in_binary_ = false;
+    out_ << text << '\n';
+  }
+  StreamBuffer& text() { return out_; }
+
+ private:
+  template <class T>
+  MshOut& put(T v) {
+    if (binary_) {
+      out_.raw(v);
+      in_binary_ = true;
+    } else {
+      if (!first_) out_ << ' ';
+      out_ << v;
+      first_ = false;
+    }
+    return *this;
+  }
+  StreamBuffer& out_;
+  bool binary_;
+  bool first_ = true, in_binary_ = false;
+};
+
+void write_box(MshOut& out, const BoundingBox& b) {
   const Vec3 lo = b.empty() ? Vec3::Zero() : b.min;
   const Vec3 hi = b.empty() ? Vec3::Zero() : b.max;
-  out << lo.x() << ' ' << lo.y() << ' ' << lo.z() << ' ' << hi.x() << ' ' << hi.y() << ' '
-      << hi.z();
+  out.d(lo.x()).d(lo.y()).d(lo.z()).d(hi.x()).d(hi.y()).d(hi.z());
 }
 
-void write_physical(std::ostream& out, bool has) {
-  out << (has ? " 1 " : " 0");
+// numPhysicalTags then the tag (the entity's own id) when it has elements.
+void write_physical(MshOut& out, bool has, int tag) {
+  out.z(has ? 1 : 0);
+  if (has) out.i(tag);
 }
 
 template <size_t N>
@@ -72,11 +117,17 @@ std::vector<EntityKey> node_entities(const mesh::MeshDB& db, const geom::Model& 
   return key;
 }
 
-void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& model) {
-  out.precision(17);
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
+  out.line("$MeshFormat");
+  if (out.binary()) {
+    out.text() << "4.1 1 " << static_cast<int>(sizeof(size_t)) << '\n';
+    out.i(1);  // lets a reader check the byte order
+  } else {
+    out.line("4.1 0 8");
+  }
+  out.line("$EndMeshFormat");
 
-  // ---- physical names ------------------------------------------------------
+  // ---- physical names (text in both encodings) ----------------------------
   std::vector<std::string> physical;
   for (const auto& [vid, v] : db.volumes()) {
     if (v.size() > 0) {
@@ -88,19 +139,22 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
       physical.push_back("2 " + std::to_string(sid) + " \"surface_" + std::to_string(sid) + "\"");
     }
   }
-  out << "$PhysicalNames\n" << physical.size() << '\n';
-  for (const auto& p : physical) out << p << '\n';
-  out << "$EndPhysicalNames\n";
+  out.line("$PhysicalNames");
+  out.line(std::to_string(physical.size()));
+  for (const auto& p : physical) out.line(p);
+  out.line("$EndPhysicalNames");
 
   // ---- entities --------------------------------------------------------------
   const auto owner = node_entities(db, model);
-  out << "$Entities\n"
-      << model.vertices().size() << ' ' << model.curves().size() << ' '
-      << model.surfaces().size() << ' ' << model.volumes().size() << '\n';
+  out.line("$Entities");
+  out.z(model.vertices().size()).z(model.curves().size()).z(model.surfaces().size())
+      .z(model.volumes().size());
+  out.eol();
   for (const auto& v : model.vertices()) {
     const int node = db.vertex_node(v.id);
     const Vec3 p = node >= 0 && node < static_cast<int>(db.node_count()) ? db.node(node) : v.point;
-    out << v.id << ' ' << p.x() << ' ' << p.y() << ' ' << p.z() << " 0\n";
+    out.i(v.id).d(p.x()).d(p.y()).d(p.z()).z(0);
+    out.eol();
   }
   for (const auto& c : model.curves()) {
     BoundingBox b;
@@ -110,11 +164,11 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
     std::vector<int> ends;
     if (c.start_vertex > 0) ends.push_back(c.start_vertex);
     if (c.end_vertex > 0 && c.end_vertex != c.start_vertex) ends.push_back(-c.end_vertex);
-    out << c.id << ' ';
+    out.i(c.id);
     write_box(out, b);
-    out << " 0 " << ends.size();
-    for (int e : ends) out << ' ' << e;
-    out << '\n';
+    out.z(0).z(ends.size());
+    for (int e : ends) out.i(e);
+    out.eol();
   }
   for (const auto& s : model.surfaces()) {
     BoundingBox b;
@@ -126,13 +180,12 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
     for (const auto& loop : s.loops) {
       for (const auto& u : loop.uses) bounding.push_back(u.curve * static_cast<int>(geom::sign(u.sense)));
     }
-    out << s.id << ' ';
+    out.i(s.id);
     write_box(out, b);
-    write_physical(out, m.size() > 0);
-    if (m.size() > 0) out << s.id;
-    out << ' ' << bounding.size();
-    for (int c : bounding) out << ' ' << c;
-    out << '\n';
+    write_physical(out, m.size() > 0, s.id);
+    out.z(bounding.size());
+    for (int c : bounding) out.i(c);
+    out.eol();
   }
   for (const auto& v : model.volumes()) {
     BoundingBox b;
@@ -144,30 +197,36 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
     for (const auto& shell : v.shells) {
       for (const auto& u : shell) bounding.push_back(u.surface * static_cast<int>(geom::sign(u.sense)));
     }
-    out << v.id << ' ';
+    out.i(v.id);
     write_box(out, b);
-    write_physical(out, m.size() > 0);
-    if (m.size() > 0) out << v.id;
-    out << ' ' << bounding.size();
-    for (int s : bounding) out << ' ' << s;
-    out << '\n';
+    write_physical(out, m.size() > 0, v.id);
+    out.z(bounding.size());
+    for (int s : bounding) out.i(s);
+    out.eol();
   }
-  out << "$EndEntities\n";
+  out.line("$EndEntities");
 
   // ---- nodes -------------------------------------------------------------------
   std::map<EntityKey, std::vector<int>> groups;
   for (size_t i = 0; i < owner.size(); ++i) groups[owner[i]].push_back(static_cast<int>(i));
   const size_t n = db.node_count();
-  out << "$Nodes\n" << groups.size() << ' ' << n << ' ' << (n > 0 ? 1 : 0) << ' ' << n << '\n';
+  out.line("$Nodes");
+  out.z(groups.size()).z(n).z(n > 0 ? 1 : 0).z(n);
+  out.eol();
   for (const auto& [key, nodes] : groups) {
-    out << key.first << ' ' << key.second << " 0 " << nodes.size() << '\n';
-    for (int v : nodes) out << v + 1 << '\n';
+    out.i(key.first).i(key.second).i(0).z(nodes.size());
+    out.eol();
+    for (int v : nodes) {
+      out.z(static_cast<size_t>(v) + 1);
+      out.eol();
+    }
     for (int v : nodes) {
       const Vec3& p = db.node(v);
-      out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+      out.d(p.x()).d(p.y()).d(p.z());
+      out.eol();
     }
   }
-  out << "$EndNodes\n";
+  out.line("$EndNodes");
 
   // ---- elements ------------------------------------------------------------------
   size_t blocks = 0, total = 0;
@@ -179,15 +238,18 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
     blocks += !s.quads.empty() + !s.tris.empty();
     total += s.size();
   }
-  out << "$Elements\n" << blocks << ' ' << total << ' ' << (total > 0 ? 1 : 0) << ' ' << total << '\n';
+  out.line("$Elements");
+  out.z(blocks).z(total).z(total > 0 ? 1 : 0).z(total);
+  out.eol();
   size_t tag = 1;
   auto block = [&](int dim, int id, int type, const auto& elems) {
     if (elems.empty()) return;
-    out << dim << ' ' << id << ' ' << type << ' ' << elems.size() << '\n';
+    out.i(dim).i(id).i(type).z(elems.size());
+    out.eol();
     for (const auto& e : elems) {
-      out << tag++;
-      for (int v : e) out << ' ' << v + 1;
-      out << '\n';
+      out.z(tag++);
+      for (int v : e) out.z(static_cast<size_t>(v) + 1);
+      out.eol();
     }
   };
   for (const auto& [vid, v] : db.volumes()) {
@@ -198,7 +260,7 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
     block(2, sid, 3, s.quads);
     block(2, sid, 2, s.tris);
   }
-  out << "$EndElements\n";
+  out.line("$EndElements");
 }
 
 }  // namespace
@@ -206,7 +268,11 @@ void write_body(std::ostream& out, const mesh::MeshDB& db, const geom::Model& mo
 void write_msh(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
                const ExportOptions& options) {
   detail::validate_mesh(db, model);
-  detail::write_text_atomically(path, [&](std::ostream& out) { write_body(out, db, model); });
+  detail::write_text_atomically(path, [&](std::ostream& os) {
+    StreamBuffer buffer(os);
+    MshOut out(buffer, options.binary);
+    write_body(out, db, model);
+  });
 }
 
 }  // namespace cooperage::io

@@ -1,4 +1,4 @@
-// Gmsh .msh 4.1 ASCII export.
+// Gmsh .msh 4.1 export, ASCII or binary.
 #pragma once
 
 #include "framework/geometry/model.h"
@@ -9,7 +9,11 @@
 
 namespace cooperage::io {
 
-/// Writes a Gmsh 4.1 ASCII file ("$MeshFormat 4.1 0 8").
+/// Writes a Gmsh 4.1 file: ASCII ("$MeshFormat 4.1 0 8", numbers in their
+/// shortest exact form), or with options.binary the binary variant ("4.1 1
+/// 8", then the int 1; every number of $Entities, $Nodes and $Elements as a
+/// raw int, size_t or double as the format specifies; $PhysicalNames stays
+/// text). Gmsh and meshio read both; `cooperage quality` reads ASCII.
 ///
 /// $PhysicalNames: one group per meshed volume (dim 3, tag = volume id, name
 /// = volume_label(): the volume name or "V<id>") and one per meshed surface

@@ -7,4 +7,5 @@ cooperage_framework_part(io_export
     ${CMAKE_CURRENT_LIST_DIR}/vtu_writer.cpp
     ${CMAKE_CURRENT_LIST_DIR}/inp_writer.cpp
     ${CMAKE_CURRENT_LIST_DIR}/write_mesh.cpp
-  PRIVATE_DEPS cooperage_exodus)
+    ${CMAKE_CURRENT_LIST_DIR}/../exodus_lazy.cpp
+  PRIVATE_DEPS cooperage_exodus_lazy TBB::tbb)

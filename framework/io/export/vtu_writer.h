@@ -1,4 +1,4 @@
-// VTK XML unstructured grid (.vtu) export, ASCII.
+// VTK XML unstructured grid (.vtu) export, ASCII or raw binary.
 #pragma once
 
 #include "framework/geometry/model.h"
@@ -9,7 +9,12 @@
 
 namespace cooperage::io {
 
-/// Writes a VTK XML UnstructuredGrid (version 1.0, Int64 connectivity, ASCII).
+/// Writes a VTK XML UnstructuredGrid (version 1.0, Int64 connectivity).
+/// ASCII by default (numbers in their shortest exact form); with
+/// options.binary every DataArray is format="appended": raw little-endian
+/// values, each preceded by its UInt64 byte count, in one
+/// <AppendedData encoding="raw"> block after the XML (ParaView and meshio
+/// read it; `cooperage quality` reads only the ASCII and inline forms).
 ///
 /// Cells: the volume elements (VTK_HEXAHEDRON 12, VTK_WEDGE 13) in ascending
 /// volume id, hexes before wedges; then the surface elements (VTK_QUAD 9,

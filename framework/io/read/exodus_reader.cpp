@@ -3,6 +3,7 @@
 #include "framework/io/read/read_common.h"
 
 #include <exodusII.h>
+#include "framework/io/exodus_lazy.h"  // the library is loaded on first use
 
 #include <algorithm>
 #include <cctype>

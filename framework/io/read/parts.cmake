@@ -7,4 +7,4 @@ cooperage_framework_part(io_read
     ${CMAKE_CURRENT_LIST_DIR}/exodus_reader.cpp
     ${CMAKE_CURRENT_LIST_DIR}/msh_reader.cpp
     ${CMAKE_CURRENT_LIST_DIR}/vtu_reader.cpp
-  PRIVATE_DEPS cooperage_exodus tinyxml2::tinyxml2)
+  PRIVATE_DEPS cooperage_exodus_lazy tinyxml2::tinyxml2)

@@ -87,6 +87,10 @@ TEST(JournalErrors, UnknownAttributeIsNamed) {
                 "allowed: name, origin, size"});
   expect_error(journal(kBrick, "<export file=\"a.exo\" format=\"exodus\"/>"),
                ErrorCode::InvalidInput, {"job.xml:5:", "<export>", "\"format\""});
+  expect_error(journal(kBrick, "<export file=\"a.exo\" encoding=\"binary\"/>"),
+               ErrorCode::InvalidInput, {"job.xml:5:", "<export>", "encoding", "a.exo"});
+  expect_error(journal(kBrick, "<export file=\"a.vtu\" encoding=\"base64\"/>"),
+               ErrorCode::InvalidInput, {"job.xml:5:", "<export>", "encoding", "base64"});
   expect_error("<cooperage version=\"1\" author=\"me\"><geometry>" + kBrick + "</geometry></cooperage>",
                ErrorCode::InvalidInput, {"<cooperage>", "\"author\""});
 }

@@ -239,6 +239,9 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   ASSERT_EQ(job.reports.size(), 1u);
   EXPECT_EQ(job.reports[0].file, "out/result.html");
   EXPECT_EQ(job.reports[0].where.element, "report");
+  EXPECT_FALSE(job.exports[0].binary);
+  EXPECT_FALSE(job.exports[1].binary);  // default ascii
+  EXPECT_TRUE(job.exports[2].binary);   // encoding="binary"
 }
 
 TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {

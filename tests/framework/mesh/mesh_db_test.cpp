@@ -57,5 +57,29 @@ TEST(MeshDB, ElementsAndCounts) {
   EXPECT_EQ(db.volumes().rbegin()->first, 3);
 }
 
+// Both paths of append_nodes (taking the new array's storage, or copying
+// into existing room) give the same nodes in the same order.
+TEST(MeshDB, AppendNodesKeepsOrderAndOwners) {
+  for (const bool roomy : {true, false}) {
+    MeshDB db;
+    db.add_node(Vec3(0, 0, 0), {0, 1});
+    db.add_node(Vec3(1, 0, 0), {1, 2});
+    if (!roomy) db.reserve_nodes(10);  // db has room: the new nodes are copied
+    std::vector<Vec3> fresh;
+    fresh.reserve(roomy ? 8 : 3);  // room for the two existing nodes in front
+    fresh = {Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(4, 0, 0)};
+    fresh.reserve(roomy ? 8 : 3);
+    std::vector<NodeOwner> owners{{3, 1}, {3, 1}, {2, 5}};
+    db.append_nodes(std::move(fresh), std::move(owners));
+    ASSERT_EQ(db.node_count(), 5u) << roomy;
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(db.node(i).x(), i) << roomy;
+    EXPECT_EQ(db.owner(1), (NodeOwner{1, 2}));
+    EXPECT_EQ(db.owner(4), (NodeOwner{2, 5}));
+    EXPECT_TRUE(fresh.empty() && owners.empty());
+  }
+  MeshDB db;
+  EXPECT_THROW(db.append_nodes({Vec3(0, 0, 0)}, {}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace cooperage::mesh

@@ -8,7 +8,7 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
-#include "schemes/cooper/classify_faces.h"
+#include "plan_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
@@ -133,10 +133,11 @@ TEST(Cooper, PlateWithThreeSquareHolesSweepsExactly) {
   const auto registry = with_cooper();
   const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
-  EXPECT_EQ(c.sides.size(), 4u + 3u * 4u);
-  EXPECT_EQ(c.source_scheme, "submap");
+  EXPECT_EQ(c.lattice.sides.size(), 4u + 3u * 4u);
+  EXPECT_TRUE(c.one_barrel());
+  EXPECT_EQ(c.roles.scheme.at(c.source), "submap");
   const int layers = layers_along_z(model, r.mesh);
   ASSERT_GT(layers, 0);
   EXPECT_EQ(r.mesh.hex_count(), r.mesh.surface(c.source).quads.size() * static_cast<size_t>(layers));
@@ -187,7 +188,7 @@ TEST(Cooper, CurvedAxisSweepGoesAroundTheArc) {
   const auto registry = with_cooper();
   const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.2), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
   EXPECT_EQ(model.surface(c.source).loops.size(), 2u);  // the end faces are the caps
   expect_conformal(r.mesh);
@@ -217,7 +218,7 @@ TEST(Cooper, DifferentlySizedCapsWithSlopedSide) {
   const auto registry = with_cooper();
   const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
   EXPECT_GT(model.surface(c.source).area, model.surface(c.target).area);  // larger cap is the source
   expect_conformal(r.mesh);
@@ -250,12 +251,12 @@ TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
   const int end_face = end_face_at_angle_zero(m0);
   ASSERT_GT(end_face, 0);
   CooperOptions options;
-  options.hints[1] = SweepHints{{end_face}, {}, std::nullopt};
+  options.hints[1] = SweepHints{{end_face}, {}, std::nullopt, {}};
   const auto registry = with_cooper(options);
   const pipeline::MeshResult r0 = pipeline::mesh_model(m0, sized(0.25, true), *registry, kOptions);
   const pipeline::MeshResult r1 = pipeline::mesh_model(m1, sized(0.25, true), *registry, kOptions);
   ASSERT_EQ(r0.plan.volumes.at(1).scheme, "cooper");
-  EXPECT_EQ(classify_faces(m0, 1, *registry, options.hints[1]).source, end_face);
+  EXPECT_EQ(plan_test::plan_with(m0, 1, *registry, options.hints[1]).source, end_face);
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
@@ -272,13 +273,12 @@ TEST(Cooper, PermutedFaceOrderGivesTheSameBarrelsAndMesh) {
   std::mt19937 rng(42);
   std::shuffle(shell.begin(), shell.end(), rng);
   const auto registry = with_cooper();
-  const Classification c0 = classify_faces(model, 1, *registry);
-  const Classification c1 = classify_faces(permuted, 1, *registry);
+  const VolumePlan c0 = plan_test::plan_with(model, 1, *registry);
+  const VolumePlan c1 = plan_test::plan_with(permuted, 1, *registry);
   ASSERT_TRUE(c0.ok && c1.ok);
   EXPECT_EQ(c0.source, c1.source);
   EXPECT_EQ(c0.target, c1.target);
-  ASSERT_EQ(c0.sides.size(), c1.sides.size());
-  for (size_t k = 0; k < c0.sides.size(); ++k) EXPECT_EQ(c0.sides[k].surface, c1.sides[k].surface);
+  EXPECT_EQ(c0.lattice.sides, c1.lattice.sides);
   const pipeline::MeshResult r0 = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
   const pipeline::MeshResult r1 = pipeline::mesh_model(permuted, sized(0.5), *registry, kOptions);
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
@@ -333,12 +333,12 @@ TEST(Cooper, ApplicableBothWaysAndRoles) {
   const scheme::Applicability a = cooper->applicable(view);
   ASSERT_TRUE(a.ok) << a.why;
   EXPECT_GT(a.score, 0);
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   const scheme::SurfaceRoles roles = cooper->roles(view);
   EXPECT_EQ(roles.size(), model.surfaces().size());
   EXPECT_EQ(roles.at(c.source), "submap");
   EXPECT_EQ(roles.at(c.target), scheme::kMeshedByVolume);
-  for (const auto& s : c.sides) EXPECT_EQ(roles.at(s.surface), "submap");
+  for (int s : c.lattice.sides) EXPECT_EQ(roles.at(s), "submap");
   // A registry without submap cannot give sides.
   scheme::Registry bare;
   bare.add(make_cooper(bare));
@@ -367,7 +367,7 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   registry.add(std::move(owned));
   const scheme::VolumeView view{model, 1, nullptr};
   // Unhinted: the larger annular faces are the caps (a sweep along z).
-  const Classification free = classify_faces(model, 1, registry);
+  const VolumePlan free = plan_test::plan_with(model, 1, registry);
   ASSERT_TRUE(free.ok) << free.why;
   EXPECT_NEAR(model.surface(free.source).box.size().z(), 0, 1e-6);
   // A hinted source is obeyed: the sweep goes around the arc.
@@ -375,7 +375,7 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   cooper->set_hints(1, {end_face}, {}, std::nullopt);
   const scheme::SurfaceRoles roles = cooper->roles(view);
   EXPECT_EQ(roles.at(end_face), "map");
-  const Classification arc = classify_faces(model, 1, registry, SweepHints{{end_face}, {}, {}});
+  const VolumePlan arc = plan_test::plan_with(model, 1, registry, SweepHints{{end_face}, {}, {}, {}});
   ASSERT_TRUE(arc.ok) << arc.why;
   EXPECT_EQ(arc.source, end_face);
   EXPECT_EQ(roles.at(arc.target), scheme::kMeshedByVolume);
@@ -390,9 +390,9 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   cooper->set_hints(1, {arc.source, arc.target}, {}, std::nullopt);
   const scheme::Applicability two = cooper->applicable(view);
   EXPECT_FALSE(two.ok);
-  EXPECT_NE(two.why.find("part II"), std::string::npos) << two.why;
+  EXPECT_NE(two.why.find("hinted source surface"), std::string::npos) << two.why;
   // A hinted target that no one-barrel sweep from that source reaches.
-  cooper->set_hints(1, {arc.source}, {arc.sides.front().surface}, std::nullopt);
+  cooper->set_hints(1, {arc.source}, {arc.lattice.sides.front()}, std::nullopt);
   const scheme::Applicability bad = cooper->applicable(view);
   EXPECT_FALSE(bad.ok);
   EXPECT_NE(bad.why.find("volume 1"), std::string::npos) << bad.why;
@@ -409,7 +409,7 @@ TEST(Cooper, DirectionHintChoosesTheCaps) {
   const geom::Model model = wb.build_model();
   const auto registry = with_cooper();
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, -1)}) {
-    const Classification c = classify_faces(model, 1, *registry, SweepHints{{}, {}, d});
+    const VolumePlan c = plan_test::plan_with(model, 1, *registry, SweepHints{{}, {}, d, {}});
     ASSERT_TRUE(c.ok) << c.why;
     const Vec3 n = model.surface(c.source).geometry->project(Vec3(0.5, 1, 1.5)).normal;
     EXPECT_NEAR(std::abs(n.dot(d)), 1.0, 1e-9) << c.why;

@@ -10,7 +10,7 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
-#include "schemes/cooper/classify_faces.h"
+#include "plan_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "selector/select_schemes.h"
 
@@ -85,20 +85,22 @@ TEST(CooperCompositeCaps, WebcutBossBodyClassifiesWithASubcap) {
   const int disk = shared_surface(model);
   ASSERT_NE(annulus, 0);
   ASSERT_NE(disk, 0);
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
+  ASSERT_TRUE(c.one_barrel());
   EXPECT_EQ(c.source, annulus);
-  EXPECT_EQ(c.source_subcaps, std::vector<int>{disk});
-  ASSERT_EQ(c.source_subcap_schemes.size(), 1u);
-  EXPECT_FALSE(c.source_subcap_schemes[0].empty());
-  EXPECT_EQ(c.source_loops, std::vector<int>{0});
-  EXPECT_EQ(c.sides.size(), 1u);
-  EXPECT_NE(c.why.find("subcaps"), std::string::npos) << c.why;
+  // One barrel whose upper cap has two subcaps: the annulus and the disk.
+  const auto upper = plan_test::end_caps(c.tree.barrels.front().upper);
+  EXPECT_EQ(upper, (std::vector<int>{std::min(annulus, disk), std::max(annulus, disk)}));
+  ASSERT_TRUE(c.roles.scheme.count(disk));
+  ASSERT_TRUE(c.roles.scheme.count(annulus));
+  EXPECT_EQ(c.lattice.sides.size(), 1u);
+  EXPECT_NE(c.why.find(std::to_string(disk)), std::string::npos) << c.why;
   // The roles mesh the subcap with its own surface scheme.
   const scheme::SurfaceRoles roles =
       registry->volume_scheme("cooper")->roles(scheme::VolumeView{model, 1, nullptr});
-  EXPECT_EQ(roles.at(disk), c.source_subcap_schemes[0]);
-  EXPECT_EQ(roles.at(annulus), c.source_scheme);
+  EXPECT_EQ(roles.at(disk), c.roles.scheme.at(disk));
+  EXPECT_EQ(roles.at(annulus), c.roles.scheme.at(annulus));
   EXPECT_EQ(roles.at(c.target), scheme::kMeshedByVolume);
 }
 
@@ -125,13 +127,14 @@ TEST(CooperCompositeCaps, TouchingBricksFlipSoTheCompositeIsTheSource) {
   const int square = shared_surface(model);
   ASSERT_NE(holed, 0);
   ASSERT_NE(square, 0);
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
   // The bottom face ties with the composite (one loop, four curves, same
   // area) and has the lower id, yet the composite is the source.
   EXPECT_EQ(c.source, holed);
-  EXPECT_EQ(c.source_subcaps, std::vector<int>{square});
-  EXPECT_EQ(c.sides.size(), 4u);
+  EXPECT_EQ(plan_test::end_caps(c.tree.barrels.front().upper).size(), 2u);
+  EXPECT_TRUE(c.roles.scheme.count(square));
+  EXPECT_EQ(c.lattice.sides.size(), 4u);
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
@@ -150,20 +153,20 @@ TEST(CooperCompositeCaps, HintsNamingTheSubcap) {
   // A source hint naming the subcap names its composite cap.
   SweepHints src;
   src.sources = {square};
-  const Classification a = classify_faces(model, 1, *registry, src);
+  const VolumePlan a = plan_test::plan_with(model, 1, *registry, src);
   ASSERT_TRUE(a.ok) << a.why;
   EXPECT_EQ(a.source, holed);
   // The composite cap cannot be the target.
   SweepHints tgt;
   tgt.targets = {square};
-  const Classification b = classify_faces(model, 1, *registry, tgt);
+  const VolumePlan b = plan_test::plan_with(model, 1, *registry, tgt);
   EXPECT_FALSE(b.ok);
-  EXPECT_NE(b.why.find("subcap"), std::string::npos) << b.why;
+  EXPECT_NE(b.why.find("hinted target surface " + std::to_string(square)), std::string::npos) << b.why;
   SweepHints host;
   host.targets = {holed};
-  const Classification h = classify_faces(model, 1, *registry, host);
+  const VolumePlan h = plan_test::plan_with(model, 1, *registry, host);
   EXPECT_FALSE(h.ok);
-  EXPECT_NE(h.why.find("composite cap can only be the source"), std::string::npos) << h.why;
+  EXPECT_NE(h.why.find("hinted target surface " + std::to_string(holed)), std::string::npos) << h.why;
 }
 
 TEST(CooperCompositeCaps, TwoSubcapsOnOneCap) {
@@ -176,10 +179,10 @@ TEST(CooperCompositeCaps, TwoSubcapsOnOneCap) {
   const geom::Model model = wb.build_model();
   ASSERT_EQ(model.volumes().size(), 3u);
   const auto registry = builtin();
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
   EXPECT_EQ(c.source, surface_with_loops(model, 1, 3));
-  EXPECT_EQ(c.source_subcaps.size(), 2u);
+  EXPECT_EQ(plan_test::end_caps(c.tree.barrels.front().upper).size(), 3u);
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
@@ -188,28 +191,31 @@ TEST(CooperCompositeCaps, TwoSubcapsOnOneCap) {
   EXPECT_GE(s.min_sj, 0.99);
 }
 
-TEST(CooperCompositeCaps, SubcapsOnBothEndsAreRejectedWithAReason) {
-  // One small brick on top, one below: both caps of the base are composite;
-  // the target must be a single face (not supported in the one-to-one path).
+TEST(CooperCompositeCaps, SubcapsOnBothEndsSharedWithNeighboursAreRejectedWithAReason) {
+  // One small brick on top, one below: both caps of the base are composite,
+  // and a subcap of each is a face of a neighbour. The sweep would have to
+  // mesh one of them itself, which its neighbour could not share.
   occ::Workbench wb;
   wb.brick("base", {0, 0, 0}, {6, 4, 1});
   wb.brick("a", {1, 1, 1}, {1.5, 2, 1});
   wb.brick("b", {3.5, 1, -1}, {2, 2, 1});
   const geom::Model model = wb.build_model();
   const auto registry = builtin();
-  const Classification c = classify_faces(model, 1, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   EXPECT_FALSE(c.ok);
-  EXPECT_NE(c.why.find("both have subcaps"), std::string::npos) << c.why;
+  EXPECT_NE(c.why.find("shared with another volume"), std::string::npos) << c.why;
 }
 
 TEST(CooperCompositeCaps, ASubcapOfAnotherVolumeAlone) {
   // Volume 2 (the boss) is a plain one-to-one sweep: no subcaps.
   const geom::Model model = webcut_boss();
   const auto registry = builtin();
-  const Classification c = classify_faces(model, 2, *registry);
+  const VolumePlan c = plan_test::plan_with(model, 2, *registry);
   ASSERT_TRUE(c.ok) << c.why;
-  EXPECT_TRUE(c.source_subcaps.empty());
-  EXPECT_TRUE(c.source_loops.empty());
+  ASSERT_TRUE(c.one_barrel());
+  EXPECT_EQ(plan_test::end_caps(c.tree.barrels.front().upper).size(), 1u);
+  // Its cap shared with the body is the one meshed by its surface scheme.
+  EXPECT_EQ(c.source, shared_surface(model));
 }
 
 }  // namespace

@@ -13,9 +13,9 @@
 
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
-#include "schemes/cooper/classify_barrels.h"
+#include "plan_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
-#include "schemes/cooper/sweep_many_to_one.h"
+#include "schemes/cooper/sweep_volume.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
 #include "schemes/pave/pave_2d.h"
@@ -79,21 +79,18 @@ TEST(CooperSelfIntersecting, FlushSubcapsOnBothEndsClassifyAlongTheAxis) {
   const auto reg = registry();
   SweepHints along_z;
   along_z.direction = kUp;
-  const ManyToOne m = classify_barrels(model, 1, *reg, along_z, true);
+  const VolumePlan m = plan_test::plan_with(model, 1, *reg, along_z);
   ASSERT_TRUE(m.ok) << m.why;
-  EXPECT_NEAR(std::abs(m.axis.z()), 1.0, 1e-9);
-  ASSERT_EQ(m.barrels.size(), 3u);
-  for (size_t b = 0; b < 2; ++b) {
-    EXPECT_TRUE(m.barrels[b].flush) << b;
-    EXPECT_TRUE(m.barrels[b].from_middle) << b;
-  }
-  const BarrelPlan& middle = m.barrels.back();
-  EXPECT_EQ(middle.inflow.size(), 1u);
-  EXPECT_EQ(middle.lower_inflow.size(), 1u);
-  EXPECT_EQ(m.volume_caps.size(), 4u);  // every cap is meshed from the middle
-  // Without a hint the first planar normal that works is y (the block's
-  // slab between the foot's front and the boss's back, a plain subtraction).
-  EXPECT_TRUE(classify_barrels(model, 1, *reg, {}, true).ok);
+  ASSERT_TRUE(m.down.has_value());
+  EXPECT_NEAR(m.down->z(), 1.0, 1e-9);  // the hint, sign included
+  ASSERT_EQ(m.tree.barrels.size(), 3u);
+  // The block's barrel has a virtual cap on both ends, each beside a real cap.
+  const BarrelNode& middle = m.tree.barrels[1];
+  EXPECT_EQ(plan_test::end_barrels(m, middle.upper, true).size(), 1u);
+  EXPECT_EQ(plan_test::end_barrels(m, middle.lower, false).size(), 1u);
+  EXPECT_EQ(imprint_operation(middle), "imprint");
+  // Without a hint another axis works too.
+  EXPECT_TRUE(plan_test::plan_with(model, 1, *reg).ok);
 }
 
 TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
@@ -111,13 +108,11 @@ TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
   std::printf("[cooper 5.5] flush boss and foot: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
   // The sec. 5.5 step ran: the barrel reports of the same sweep, replayed on
   // the meshed sides (cooper's own caps are meshed again, not read).
-  SweepHints along_z;
-  along_z.direction = kUp;
-  const ManyToOne m = classify_barrels(model, 1, *reg, along_z, true);
-  ASSERT_TRUE(m.ok) << m.why;
+  const auto m = plan_test::scheme_plan(*reg, model, 1);
+  ASSERT_TRUE(m && m->ok);
   const Pave2D mesher;
   std::vector<BarrelReport> reports;
-  const scheme::EntityMesh replay = sweep_many_to_one(scheme::VolumeView{model, 1, &r.mesh}, m, &mesher, &reports);
+  const scheme::EntityMesh replay = sweep_volume(scheme::VolumeView{model, 1, &r.mesh}, *m, &mesher, &reports);
   EXPECT_EQ(replay.hexes.size(), s.hexes);
   size_t self_intersections = 0;
   for (const BarrelReport& b : reports) {

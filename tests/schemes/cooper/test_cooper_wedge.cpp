@@ -4,6 +4,8 @@
 // wedges, side faces stay quads. Many-to-one volumes give their caps to
 // "tri" in wedge mode (test_cooper_wedge_many.cpp meshes them), and the
 // journal checks reject wedge or mixed + volume map.
+#include "support/mixed_mesh_check.h"
+
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
@@ -274,12 +276,11 @@ TEST(CooperWedge, ApplicableBothWays) {
   EXPECT_FALSE(no.ok);
 }
 
-// Flush steps (stepped rings) build their rib loops from quads only: in
-// wedge and mixed mode cooper refuses them a priori, naming the reason,
-// instead of failing while meshing.
-TEST(CooperWedge, FlushStepIsRefusedOutsideHexMode) {
-  // The self-intersecting-subcap model: a boss flush with the front wall on
-  // top, a foot flush with three walls below; no one-to-one sweep exists.
+// Flush steps (a boss flush with the front wall on top, a foot flush with
+// three walls below: virtual caps beside real ones on both ends of the
+// block's barrel) sweep in every element kind: the subcaps are node loops,
+// whatever the cap elements. Volume 32 + 6 + 8 = 46.
+TEST(CooperWedge, FlushStepsSweepInEveryElementKind) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {4, 4, 2});
   wb.brick("boss", {1, 0, 2}, {2, 3, 1});
@@ -291,13 +292,20 @@ TEST(CooperWedge, FlushStepIsRefusedOutsideHexMode) {
     settings.volumes.front().direction = Vec3(0, 0, 1);  // along the steps: flush
     const auto registry = registry_for(settings);
     const scheme::Applicability a = registry->volume_scheme("cooper")->applicable({model, 1, nullptr});
-    if (kind == io::ElementKind::Hex) {
-      EXPECT_TRUE(a.ok) << a.why;
-    } else {
-      EXPECT_FALSE(a.ok);
-      EXPECT_NE(a.why.find("flush"), std::string::npos) << a.why;
-      std::printf("[cooper wedge] flush step refused: %s\n", a.why.c_str());
+    ASSERT_TRUE(a.ok) << a.why;
+    const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
+    const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, r.mesh);
+    EXPECT_NEAR(m.volume, 46.0, 46.0 * 1e-6);
+    EXPECT_GE(m.min_hex_sj, 0.3);
+    EXPECT_GE(m.min_wedge_sj, 0.3);
+    if (kind == io::ElementKind::Wedge) {
+      EXPECT_EQ(m.hexes, 0u);
     }
+    if (kind == io::ElementKind::Hex) {
+      EXPECT_EQ(m.wedges, 0u);
+    }
+    std::printf("[cooper wedge] flush steps, kind %d: %zu hexes, %zu wedges, min SJ hex %.4f wedge %.4f\n",
+                static_cast<int>(kind), m.hexes, m.wedges, m.min_hex_sj, m.min_wedge_sj);
   }
 }
 

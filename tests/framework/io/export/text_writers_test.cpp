@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
+#include <filesystem>
 #include <limits>
 #include <map>
 
@@ -112,14 +114,19 @@ std::vector<TestMesh> volume_fixtures() {
   return f;
 }
 
-TEST(MshWriter, ReadsBackWithMeshioAndGmsh) {
+// ASCII and binary (ExportOptions::binary) read back the same.
+class MshEncoding : public ::testing::TestWithParam<bool> {};
+
+TEST_P(MshEncoding, ReadsBackWithMeshioAndGmsh) {
   COOPERAGE_REQUIRE_MESHIO();
   const std::string dir = scratch_dir();
+  io::ExportOptions options;
+  options.binary = GetParam();
   int n = 0;
   for (const TestMesh& t : volume_fixtures()) {
     SCOPED_TRACE("fixture " + std::to_string(n));
-    const std::string path = dir + "/m" + std::to_string(n++) + ".msh";
-    io::write_msh(path, t.db, t.model);
+    const std::string path = dir + "/m" + std::to_string(n++) + (GetParam() ? "b" : "a") + ".msh";
+    io::write_msh(path, t.db, t.model, options);
     const Lines r = readback(path, "--gmsh");
     check_points_and_volumes(t, r);
     EXPECT_EQ(cell_counts(r), expected_counts(t, true, true));
@@ -148,6 +155,27 @@ TEST(MshWriter, ReadsBackWithMeshioAndGmsh) {
   }
 }
 
+INSTANTIATE_TEST_SUITE_P(MshWriter, MshEncoding, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "binary" : "ascii"; });
+
+TEST(MshWriter, BinaryHeaderAndSize) {
+  const TestMesh t = two_blocks();
+  io::ExportOptions options;
+  options.binary = true;
+  const std::string dir = scratch_dir();
+  io::write_msh(dir + "/b.msh", t.db, t.model, options);
+  io::write_msh(dir + "/a.msh", t.db, t.model);
+  const std::string text = read_all(dir + "/b.msh");
+  const std::string head = "$MeshFormat\n4.1 1 8\n";
+  ASSERT_EQ(text.rfind(head, 0), 0u);
+  int one = 0;
+  std::memcpy(&one, text.data() + head.size(), sizeof one);
+  EXPECT_EQ(one, 1) << "the byte-order check value";
+  EXPECT_NE(text.find("\n$EndNodes\n"), std::string::npos);
+  EXPECT_NE(text.find("\n$EndElements\n"), std::string::npos);
+  EXPECT_NE(text.find("3 1 \"left\"\n"), std::string::npos) << "physical names stay text";
+}
+
 TEST(MshWriter, PhysicalNamesAndNodeEntities) {
   const TestMesh t = two_blocks();
   const std::string path = scratch_dir() + "/names.msh";
@@ -162,14 +190,23 @@ TEST(MshWriter, PhysicalNamesAndNodeEntities) {
   EXPECT_NE(text.find("\n0 8 0 1\n"), std::string::npos);
 }
 
-TEST(VtuWriter, ReadsBackWithMeshio) {
+class VtuEncoding : public ::testing::TestWithParam<bool> {};
+
+TEST_P(VtuEncoding, ReadsBackWithMeshio) {
   COOPERAGE_REQUIRE_MESHIO();
   const std::string dir = scratch_dir();
+  io::ExportOptions options;
+  options.binary = GetParam();
   int n = 0;
   for (const TestMesh& t : volume_fixtures()) {
     SCOPED_TRACE("fixture " + std::to_string(n));
-    const std::string path = dir + "/v" + std::to_string(n++) + ".vtu";
-    io::write_vtu(path, t.db, t.model);
+    const std::string path = dir + "/v" + std::to_string(n++) + (GetParam() ? "b" : "a") + ".vtu";
+    io::write_vtu(path, t.db, t.model, options);
+    if (GetParam()) {
+      const std::string text = read_all(path);
+      EXPECT_NE(text.find("<AppendedData encoding=\"raw\">"), std::string::npos);
+      EXPECT_EQ(text.find("format=\"ascii\""), std::string::npos);
+    }
     const Lines r = readback(path);
     check_points_and_volumes(t, r);
     EXPECT_EQ(cell_counts(r), expected_counts(t, true, false));
@@ -186,12 +223,17 @@ TEST(VtuWriter, ReadsBackWithMeshio) {
   }
 }
 
-TEST(VtuWriter, SurfacesOnRequestAndForSurfaceMeshes) {
+INSTANTIATE_TEST_SUITE_P(VtuWriter, VtuEncoding, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "binary" : "ascii"; });
+
+TEST_P(VtuEncoding, SurfacesOnRequestAndForSurfaceMeshes) {
   COOPERAGE_REQUIRE_MESHIO();
-  const std::string dir = scratch_dir();
+  const std::string dir = scratch_dir() + (GetParam() ? "/b" : "/a");
+  std::filesystem::create_directories(dir);
   const TestMesh t = mixed();
   io::ExportOptions opt;
   opt.include_surfaces = true;
+  opt.binary = GetParam();
   io::write_vtu(dir + "/with_surfaces.vtu", t.db, t.model, opt);
   Lines r = readback(dir + "/with_surfaces.vtu");
   EXPECT_EQ(cell_counts(r), expected_counts(t, true, true));
@@ -199,7 +241,9 @@ TEST(VtuWriter, SurfacesOnRequestAndForSurfaceMeshes) {
   check_points_and_volumes(t, r);
 
   const TestMesh s = surface_only();
-  io::write_vtu(dir + "/shell.vtu", s.db, s.model);
+  io::ExportOptions shell_options;
+  shell_options.binary = GetParam();
+  io::write_vtu(dir + "/shell.vtu", s.db, s.model, shell_options);
   r = readback(dir + "/shell.vtu");
   EXPECT_EQ(cell_counts(r), expected_counts(s, false, true));
   EXPECT_EQ(sorted_by_tag(with_key(r, "SURF")), sorted_by_tag(expected_surf(s)));

@@ -1,0 +1,258 @@
+#include "framework/geometry/occ/surface_projector.h"
+
+#include <ElSLib.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <ShapeAnalysis_Surface.hxx>
+#include <Standard_Failure.hxx>
+#include <gp_Lin.hxx>
+#include <gp_Pnt2d.hxx>
+#include <gp_Vec.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cooperage::occ::detail {
+namespace {
+
+using geom::Vec2;
+
+// Shifts x by whole periods into [lo - slack, lo - slack + period).
+double into_period(double x, double lo, double period, double slack) {
+  const double base = lo - slack;
+  return x - period * std::floor((x - base) / period);
+}
+
+}  // namespace
+
+SurfaceProjector::SurfaceProjector(const Handle(Geom_Surface)& surface, double u0, double u1,
+                                   double v0, double v1)
+    : surface_(surface), u0_(u0), u1_(u1), v0_(v0), v1_(v1) {
+  const GeomAdaptor_Surface a(surface_);
+  switch (a.GetType()) {
+    case GeomAbs_Plane: kind_ = Kind::Plane; break;
+    case GeomAbs_Cylinder: kind_ = Kind::Cylinder; break;
+    case GeomAbs_Cone: kind_ = Kind::Cone; break;
+    case GeomAbs_Sphere: kind_ = Kind::Sphere; break;
+    case GeomAbs_Torus: kind_ = Kind::Torus; break;
+    default: kind_ = Kind::Other; break;
+  }
+  u_periodic_ = surface_->IsUPeriodic();
+  v_periodic_ = surface_->IsVPeriodic();
+  if (u_periodic_) u_period_ = surface_->UPeriod();
+  if (v_periodic_) v_period_ = surface_->VPeriod();
+  // Size of the face from its corners and centre (for 3D tolerances).
+  const gp_Pnt c[5] = {surface_->Value(u0, v0), surface_->Value(u1, v0), surface_->Value(u0, v1),
+                       surface_->Value(u1, v1),
+                       surface_->Value(0.5 * (u0 + u1), 0.5 * (v0 + v1))};
+  double s = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = i + 1; j < 5; ++j) s = std::max(s, c[i].Distance(c[j]));
+  }
+  scale_ = std::max(s, 1e-6);
+}
+
+bool SurfaceProjector::in_box(Vec2& uv) const {
+  const double su = 1e-9 * std::max(1.0, std::abs(u1_ - u0_));
+  const double sv = 1e-9 * std::max(1.0, std::abs(v1_ - v0_));
+  if (u_periodic_) uv.x() = into_period(uv.x(), u0_, u_period_, su);
+  if (v_periodic_) uv.y() = into_period(uv.y(), v0_, v_period_, sv);
+  if (uv.x() < u0_ - su || uv.x() > u1_ + su || uv.y() < v0_ - sv || uv.y() > v1_ + sv) return false;
+  uv.x() = std::clamp(uv.x(), u0_, u1_);
+  uv.y() = std::clamp(uv.y(), v0_, v1_);
+  return true;
+}
+
+std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p) const {
+  if (kind_ == Kind::Other) return std::nullopt;
+  const GeomAdaptor_Surface a(surface_);
+  double u = 0.0, v = 0.0;
+  switch (kind_) {
+    case Kind::Plane: ElSLib::Parameters(a.Plane(), p, u, v); break;
+    case Kind::Cylinder: {
+      // On the axis every angle is closest: leave the choice to the global search.
+      const gp_Cylinder c = a.Cylinder();
+      if (gp_Lin(c.Axis()).Distance(p) < 1e-9 * c.Radius()) return std::nullopt;
+      ElSLib::Parameters(c, p, u, v);
+      break;
+    }
+    case Kind::Cone: {
+      const gp_Cone c = a.Cone();
+      if (gp_Lin(c.Axis()).Distance(p) < 1e-9 * scale_) return std::nullopt;
+      ElSLib::Parameters(c, p, u, v);
+      // ElSLib gives the foot on the generatrix at the point's angle, the
+      // closest point while it does not lie beyond the apex.
+      if (c.RefRadius() + v * std::sin(c.SemiAngle()) < 0.0) return std::nullopt;
+      break;
+    }
+    case Kind::Sphere: {
+      const gp_Sphere s = a.Sphere();
+      if (s.Location().Distance(p) < 1e-9 * s.Radius()) return std::nullopt;
+      ElSLib::Parameters(s, p, u, v);
+      break;
+    }
+    case Kind::Torus: {
+      const gp_Torus t = a.Torus();
+      if (gp_Lin(t.Axis()).Distance(p) < 1e-9 * t.MajorRadius()) return std::nullopt;
+      ElSLib::Parameters(t, p, u, v);
+      break;
+    }
+    case Kind::Other: return std::nullopt;
+  }
+  Vec2 uv(u, v);
+  if (!std::isfinite(u) || !std::isfinite(v) || !in_box(uv)) return std::nullopt;
+  return uv;
+}
+
+std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) const {
+  if (!std::isfinite(hint.x()) || !std::isfinite(hint.y())) return std::nullopt;
+  double u = std::clamp(hint.x(), u0_, u1_), v = std::clamp(hint.y(), v0_, v1_);
+  const double tol = 1e-12 * scale_;
+  gp_Pnt s;
+  gp_Vec su, sv, suu, svv, suv;
+  try {
+    for (int it = 0; it < 30; ++it) {
+      surface_->D2(u, v, s, su, sv, suu, svv, suv);
+      const gp_Vec r(p, s);  // S - p
+      const double g0 = r.Dot(su), g1 = r.Dot(sv);
+      // Hessian of |S - p|^2 / 2; Gauss-Newton's J^T J when it is not
+      // positive definite (far from the minimum on a strongly curved face).
+      double h00 = su.Dot(su) + r.Dot(suu), h01 = su.Dot(sv) + r.Dot(suv),
+             h11 = sv.Dot(sv) + r.Dot(svv);
+      double det = h00 * h11 - h01 * h01;
+      if (!(h00 > 0.0 && det > 1e-14 * h00 * h11)) {
+        h00 = su.Dot(su);
+        h01 = su.Dot(sv);
+        h11 = sv.Dot(sv);
+        det = h00 * h11 - h01 * h01;
+        if (!(h00 > 0.0 && det > 1e-14 * h00 * h11)) return std::nullopt;  // singular point
+      }
+      const double du = -(h11 * g0 - h01 * g1) / det;
+      const double dv = -(h00 * g1 - h01 * g0) / det;
+      const double un = std::clamp(u + du, u0_, u1_), vn = std::clamp(v + dv, v0_, v1_);
+      const double moved = (su * (un - u) + sv * (vn - v)).Magnitude();
+      u = un;
+      v = vn;
+      if (!std::isfinite(moved)) return std::nullopt;
+      if (moved <= tol) {
+        // Converged: a minimum strictly inside the box (a point on its edge
+        // is a constrained minimum, which the global search decides).
+        surface_->D2(u, v, s, su, sv, suu, svv, suv);
+        const gp_Vec rr(p, s);
+        const double a00 = su.Dot(su) + rr.Dot(suu), a01 = su.Dot(sv) + rr.Dot(suv),
+                     a11 = sv.Dot(sv) + rr.Dot(svv);
+        if (!(a00 > 0.0 && a00 * a11 - a01 * a01 > 0.0)) return std::nullopt;
+        const double gl = std::hypot(rr.Dot(su), rr.Dot(sv));
+        const double ref = std::max(rr.Magnitude(), scale_) * std::max(su.Magnitude(), sv.Magnitude());
+        if (gl > 1e-8 * ref) return std::nullopt;
+        const bool edge_u = (u <= u0_ || u >= u1_) && !u_periodic_;
+        const bool edge_v = (v <= v0_ || v >= v1_) && !v_periodic_;
+        if ((edge_u || edge_v) && rr.Magnitude() > 1e-9 * scale_) return std::nullopt;
+        return Vec2(u, v);
+      }
+    }
+  } catch (const Standard_Failure&) {
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+Vec2 SurfaceProjector::global(const gp_Pnt& p) const {
+  double u = 0.5 * (u0_ + u1_), v = 0.5 * (v0_ + v1_);
+  bool found = false;
+  try {
+    auto& proj = per_thread_.local();
+    if (!proj) {
+      proj = std::make_unique<GeomAPI_ProjectPointOnSurf>();
+      proj->Init(surface_, u0_, u1_, v0_, v1_);
+    }
+    proj->Perform(p);
+    if (proj->IsDone() && proj->NbPoints() > 0) {
+      proj->LowerDistanceParameters(u, v);
+      found = true;
+    }
+  } catch (const Standard_Failure&) {
+    per_thread_.local().reset();  // rebuilt on the next call
+  }
+  if (!found) {
+    ShapeAnalysis_Surface sas(surface_);
+    const gp_Pnt2d uv = sas.ValueOfUV(p, 1e-9);
+    u = uv.X();
+    v = uv.Y();
+  }
+  return Vec2(std::clamp(u, u0_, u1_), std::clamp(v, v0_, v1_));
+}
+
+void SurfaceProjector::build_samples() const {
+  // Denser where the surface has more spans (B-spline knots), as OCCT's own
+  // sampling; 25 x 25 at least, 65 x 65 at most. Stored in 5 x 5 tiles so a
+  // query skips the tiles whose box is farther than its best sample so far.
+  int nu = 24, nv = 24;
+  const GeomAdaptor_Surface a(surface_);
+  if (a.GetType() == GeomAbs_BSplineSurface) {
+    nu = std::clamp(3 * a.NbUIntervals(GeomAbs_C2) * std::max(1, a.UDegree()), 24, 64);
+    nv = std::clamp(3 * a.NbVIntervals(GeomAbs_C2) * std::max(1, a.VDegree()), 24, 64);
+  }
+  constexpr int kTile = 5;
+  samples_.reserve(static_cast<size_t>((nu + 1) * (nv + 1)));
+  for (int ti = 0; ti <= nu; ti += kTile) {
+    for (int tj = 0; tj <= nv; tj += kTile) {
+      Tile t{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}, samples_.size(), 0};
+      for (int i = ti; i < std::min(ti + kTile, nu + 1); ++i) {
+        for (int j = tj; j < std::min(tj + kTile, nv + 1); ++j) {
+          const double u = u0_ + (u1_ - u0_) * i / nu, v = v0_ + (v1_ - v0_) * j / nv;
+          const gp_Pnt q = surface_->Value(u, v);
+          samples_.push_back({q.X(), q.Y(), q.Z(), u, v});
+          const double c[3] = {q.X(), q.Y(), q.Z()};
+          for (int k = 0; k < 3; ++k) {
+            t.lo[k] = std::min(t.lo[k], c[k]);
+            t.hi[k] = std::max(t.hi[k], c[k]);
+          }
+        }
+      }
+      t.end = samples_.size();
+      tiles_.push_back(t);
+    }
+  }
+}
+
+std::optional<Vec2> SurfaceProjector::seeded(const gp_Pnt& p) const {
+  if (kind_ != Kind::Other) return std::nullopt;
+  std::call_once(samples_once_, [this] { build_samples(); });
+  const double c[3] = {p.X(), p.Y(), p.Z()};
+  const Sample* best = nullptr;
+  double best_d2 = std::numeric_limits<double>::max();
+  for (const Tile& t : tiles_) {
+    double box_d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = c[k] < t.lo[k] ? t.lo[k] - c[k] : (c[k] > t.hi[k] ? c[k] - t.hi[k] : 0.0);
+      box_d2 += d * d;
+    }
+    if (box_d2 >= best_d2) continue;
+    for (size_t i = t.first; i < t.end; ++i) {
+      const Sample& s = samples_[i];
+      const double dx = s.x - c[0], dy = s.y - c[1], dz = s.z - c[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = &s;
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  auto uv = newton(p, Vec2(best->u, best->v));
+  if (!uv) return std::nullopt;
+  // A descent that ended farther than its start found no better point.
+  if (surface_->Value(uv->x(), uv->y()).SquareDistance(p) > best_d2 * (1 + 1e-12)) {
+    return std::nullopt;
+  }
+  return uv;
+}
+
+Vec2 SurfaceProjector::closest(const gp_Pnt& p) const {
+  if (auto uv = closed_form(p)) return *uv;
+  if (auto uv = seeded(p)) return *uv;
+  return global(p);
+}
+
+}  // namespace cooperage::occ::detail

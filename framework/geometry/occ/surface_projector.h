@@ -1,0 +1,84 @@
+// SurfaceProjector: parameters of the point of an OCCT surface closest to a
+// given point, within a face's parameter box. Three ways, cheapest first:
+//  * closed form on elementary surfaces (plane, cylinder, cone, sphere,
+//    torus; ElSLib), exact and global;
+//  * a local Newton step on the squared distance from a parameter hint
+//    (newton(); project_near in evaluators.h), or, without a hint, from the
+//    nearest point of a uv sample grid built once per face (seeded());
+//  * OCCT's global projector (GeomAPI_ProjectPointOnSurf), initialised once
+//    per face and thread (its sampling grid is the expensive part: building
+//    one per call cost 234-473 us a point on B-spline faces, issue 20) and
+//    reused.
+// Every result is a function of the query alone (never of the previous
+// query), so meshes do not depend on the thread count.
+// Internal to framework/geometry/occ (names OCCT types).
+#pragma once
+
+#include "framework/geometry/types.h"
+
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_Surface.hxx>
+#include <gp_Pnt.hxx>
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace cooperage::occ::detail {
+
+class SurfaceProjector {
+ public:
+  /// `surface` is immutable and shared; (u0..u1) x (v0..v1) the face's box.
+  SurfaceProjector(const Handle(Geom_Surface)& surface, double u0, double u1, double v0,
+                   double v1);
+
+  /// Parameters of the closest point to p in the box: the closed form when
+  /// the surface is elementary and its answer lies in the box, else the
+  /// global projector (a clamped ShapeAnalysis inversion if that fails).
+  geom::Vec2 closest(const gp_Pnt& p) const;
+
+  /// Exact parameters on an elementary surface, shifted into the box by
+  /// whole periods; nullopt for other surfaces or when outside the box.
+  std::optional<geom::Vec2> closed_form(const gp_Pnt& p) const;
+
+  /// Local minimum of |S(u,v) - p| reached by Newton iterations from `hint`
+  /// (clamped into the box). nullopt when the iteration does not converge,
+  /// ends on the box boundary or at a point that is not a local minimum:
+  /// the caller then falls back to closest().
+  std::optional<geom::Vec2> newton(const gp_Pnt& p, const geom::Vec2& hint) const;
+
+  /// Newton from the nearest sample of a grid over the box (built on first
+  /// use), accepted only when it ends no farther than that sample; nullopt
+  /// otherwise (and for elementary surfaces, which have closed forms).
+  std::optional<geom::Vec2> seeded(const gp_Pnt& p) const;
+
+ private:
+  enum class Kind { Plane, Cylinder, Cone, Sphere, Torus, Other };
+
+  geom::Vec2 global(const gp_Pnt& p) const;
+  bool in_box(geom::Vec2& uv) const;  // shifts periodic parameters; true when inside
+
+  Handle(Geom_Surface) surface_;
+  double u0_, u1_, v0_, v1_;
+  double scale_;  // model size of the face (for tolerances)
+  Kind kind_ = Kind::Other;
+  bool u_periodic_ = false, v_periodic_ = false;
+  double u_period_ = 0.0, v_period_ = 0.0;
+  mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAPI_ProjectPointOnSurf>> per_thread_;
+  struct Sample {
+    double x, y, z, u, v;
+  };
+  struct Tile {  // a block of neighbouring samples and their bounding box
+    double lo[3], hi[3];
+    size_t first, end;  // range in samples_
+  };
+  mutable std::once_flag samples_once_;
+  mutable std::vector<Sample> samples_;  // tile by tile
+  mutable std::vector<Tile> tiles_;
+  void build_samples() const;
+};
+
+}  // namespace cooperage::occ::detail

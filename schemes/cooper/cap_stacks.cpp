@@ -1,0 +1,289 @@
+// Cap stacks (Blacker 1996, sec. 6.1): the matched subcaps through all the
+// barrels form stacks; each stack is meshed once -- from its cap meshed by
+// a surface scheme, or by the polygon mesher at one of its subcaps (a real
+// one when it has any) -- and the mesh is projected to every other subcap
+// of the stack "using a least square weighted residual method": the
+// barrel's least-squares map of its rings, plus the residuals of the
+// subcap's own boundary (whose images are known through the ribs)
+// interpolated inside, then onto the real cap.
+#include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/residual_field.h"
+#include "schemes/cooper/smooth_cap.h"
+#include "schemes/cooper/sweep_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numeric>
+
+#include <Eigen/Geometry>
+
+namespace cooperage::cooper::detail {
+namespace {
+
+int find_root(std::vector<int>& parent, int x) {
+  while (parent[static_cast<size_t>(x)] != x) {
+    parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+    x = parent[static_cast<size_t>(x)];
+  }
+  return x;
+}
+
+// The barrel and end holding a piece (its upper end first).
+std::pair<size_t, int> home(const Piece& p) {
+  return p.upper_of >= 0 ? std::make_pair(static_cast<size_t>(p.upper_of), 0)
+                         : std::make_pair(static_cast<size_t>(p.lower_of), 1);
+}
+
+// Meshes a piece with the polygon mesher in its barrel's chart.
+void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
+  if (!s.mesher) fail(s.vid, "a cap stack without a meshed cap needs a polygon mesher, which is not available");
+  const auto [b, end] = home(p);
+  const BarrelState& st = s.barrels[b];
+  std::map<int, Vec2> xy;
+  for (const auto& l : p.loops) {
+    for (int n : l) xy[n] = s.plane(b, end == 0 ? s.pos(n) : st.to_upper.apply(s.pos(n)));
+  }
+  std::vector<std::vector<int>> loops = p.loops;
+  size_t outer = 0;
+  double best = -1;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const double a = std::abs(signed_area(loops[l], xy));
+    if (a > best) {
+      best = a;
+      outer = l;
+    }
+  }
+  std::swap(loops[0], loops[outer]);
+  std::vector<std::vector<Eigen::Vector2d>> loops2d;
+  std::vector<int> boundary;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    if ((l == 0) != (signed_area(loops[l], xy) > 0)) std::reverse(loops[l].begin(), loops[l].end());
+    loops2d.emplace_back();
+    for (int n : loops[l]) {
+      loops2d.back().push_back(xy.at(n));
+      boundary.push_back(n);
+    }
+  }
+  scheme::QuadMesh2D m;
+  try {
+    m = s.mesher->mesh(loops2d);
+  } catch (const std::exception& e) {
+    fail(s.vid, "meshing a subcap of " + (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
+                    " in " + s.barrel_name(b) + ": " + e.what());
+  }
+  if (m.boundary_count != static_cast<int>(boundary.size())) {
+    fail(s.vid, "the polygon mesher changed the boundary of a subcap in " + s.barrel_name(b));
+  }
+  std::vector<int> node(m.points.size());
+  for (size_t k = 0; k < m.points.size(); ++k) {
+    if (k < boundary.size()) {
+      node[k] = boundary[k];
+      continue;
+    }
+    Vec3 x = st.u * m.points[k].x() + st.v * m.points[k].y() + st.level * st.d;
+    if (end == 1) x = st.to_lower.apply(x);
+    if (p.cap) {
+      x = s.model.surface(p.cap).geometry->project(x).point;
+      node[k] = s.out.add_owned(x, {2, p.cap});
+    } else {
+      node[k] = s.out.add(x);
+    }
+  }
+  for (const auto& q : m.quads) {
+    p.quads.push_back({node[static_cast<size_t>(q[0])], node[static_cast<size_t>(q[1])],
+                       node[static_cast<size_t>(q[2])], node[static_cast<size_t>(q[3])]});
+  }
+  for (const auto& t : m.tris) {
+    p.tris.push_back({node[static_cast<size_t>(t[0])], node[static_cast<size_t>(t[1])], node[static_cast<size_t>(t[2])]});
+  }
+  p.meshed = true;
+}
+
+// The surface mesh of a cap meshed beforehand.
+void take_surface_mesh(SweepState& s, Piece& p) {
+  if (!s.db.surface_meshed(p.cap)) fail(s.vid, "cap surface " + std::to_string(p.cap) + " is not meshed");
+  const mesh::SurfaceMeshData& m = s.db.surface(p.cap);
+  for (const auto& q : m.quads) p.quads.push_back({s.existing(q[0]), s.existing(q[1]), s.existing(q[2]), s.existing(q[3])});
+  for (const auto& t : m.tris) p.tris.push_back({s.existing(t[0]), s.existing(t[1]), s.existing(t[2])});
+  p.meshed = true;
+}
+
+// Where the rings change shape a lot (a hole doubling its radius while the
+// outer loop stays), the projected subcap can fold next to its boundary:
+// then its new nodes are smoothed (sec. 6.1: "a smooth ... to optimize
+// element quality"), kept only if its worst corner improves.
+void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads, const std::vector<mesh::Tri>& tris,
+              const std::map<int, int>& index, const std::map<int, int>& image, const Piece& to) {
+  const BarrelState& st = s.barrels[b];
+  std::vector<int> node(index.size());
+  for (const auto& [n, i] : index) node[static_cast<size_t>(i)] = n;
+  std::vector<Vec3> before(node.size()), after(node.size());
+  std::vector<char> movable(node.size(), 0);
+  for (size_t i = 0; i < node.size(); ++i) {
+    before[i] = s.pos(node[i]);
+    const auto it = image.find(node[i]);
+    after[i] = it != image.end() ? s.pos(it->second) : Vec3::Zero();
+    movable[i] = it != image.end() ? 1 : 0;
+  }
+  // Faces counter-clockwise about the barrel's direction where they come from.
+  std::vector<mesh::Quad> q = quads;
+  std::vector<mesh::Tri> t = tris;
+  auto orient = [&](auto& f) {
+    Vec3 n = Vec3::Zero();
+    for (size_t k = 0; k < f.size(); ++k) n += before[static_cast<size_t>(f[k])].cross(before[static_cast<size_t>(f[(k + 1) % f.size()])]);
+    if (n.dot(st.d) < 0) std::reverse(f.begin() + 1, f.end());
+  };
+  for (auto& f : q) orient(f);
+  for (auto& f : t) orient(f);
+  // Positions on the target end for every node (the ring's images too).
+  std::map<int, int> across;
+  for (const auto& [u, l] : st.rib_pairs) {
+    across[u] = l;
+    across[l] = u;
+  }
+  for (size_t i = 0; i < node.size(); ++i) {
+    if (movable[i]) continue;
+    const auto a = across.find(node[i]);
+    after[i] = a != across.end() ? s.pos(a->second) : before[i];
+  }
+  const double q_before = std::min(min_quad_corner_quality(before, q, st.d), min_tri_corner_quality(before, t, st.d));
+  const double q_after = std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
+  if (q_after >= std::min(0.5, q_before)) return;
+  const auto& g = to.cap ? s.model.surface(to.cap).geometry : nullptr;
+  auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
+  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60)) return;
+  for (size_t i = 0; i < node.size(); ++i) {
+    if (movable[i]) s.out.coords[static_cast<size_t>(image.at(node[i]))] = after[i];
+  }
+}
+
+// Projects piece `from` through barrel b onto its match `to` (sec. 6.1).
+void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
+  BarrelState& st = s.barrels[b];
+  std::map<int, int> across;  // from's node -> to's node, through the ribs
+  for (const auto& [u, l] : st.rib_pairs) {
+    if (down) {
+      across[u] = l;
+    } else {
+      across[l] = u;
+    }
+  }
+  const AffineMap& map = down ? st.to_lower : st.to_upper;
+  std::vector<int> ring;
+  std::vector<Vec3> residual;
+  for (const auto& l : from.loops) {
+    for (int n : l) {
+      const auto it = across.find(n);
+      if (it == across.end()) fail(s.vid, s.barrel_name(b) + ": a subcap boundary node has no rib across the barrel");
+      ring.push_back(n);
+      residual.push_back(s.pos(it->second) - map.apply(s.pos(n)));
+    }
+  }
+  // Cap-local numbering: the boundary (ring) first, then the interior.
+  std::map<int, int> index;
+  std::vector<Vec3> points;
+  for (int n : ring) {
+    if (index.emplace(n, static_cast<int>(points.size())).second) points.push_back(s.pos(n));
+  }
+  const size_t boundary = points.size();
+  if (boundary != ring.size()) fail(s.vid, s.barrel_name(b) + ": a subcap's loops repeat a node");
+  std::vector<mesh::Quad> quads;
+  std::vector<mesh::Tri> tris;
+  auto local = [&](int n) {
+    auto [it, added] = index.emplace(n, static_cast<int>(points.size()));
+    if (added) points.push_back(s.pos(n));
+    return it->second;
+  };
+  for (const auto& q : from.quads) quads.push_back({local(q[0]), local(q[1]), local(q[2]), local(q[3])});
+  for (const auto& t : from.tris) tris.push_back({local(t[0]), local(t[1]), local(t[2])});
+  const ResidualField field(points, boundary);
+  std::vector<Vec3> r;
+  field.apply(residual, r);
+  std::map<int, int> image;
+  auto image_of = [&](int n) {
+    const auto a = across.find(n);
+    if (a != across.end()) return a->second;
+    const auto it = image.find(n);
+    if (it != image.end()) return it->second;
+    Vec3 y = map.apply(s.pos(n)) + r[static_cast<size_t>(index.at(n))];
+    int m;
+    if (to.cap) {
+      y = s.model.surface(to.cap).geometry->project(y).point;
+      m = s.out.add_owned(y, {2, to.cap});
+    } else {
+      m = s.out.add(y);
+    }
+    image[n] = m;
+    return m;
+  };
+  for (const auto& q : from.quads) to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});
+  for (const auto& t : from.tris) to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
+  to.meshed = true;
+  untangle(s, b, quads, tris, index, image, to);
+}
+
+}  // namespace
+
+// cite: Blacker 1996, sec. 6.1 (forming and meshing cap stacks).
+void mesh_stacks(SweepState& s) {
+  const size_t n = s.pieces.size();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const BarrelState& st : s.barrels) {
+    for (const auto& [u, l] : st.matches) {
+      const int a = find_root(parent, u), z = find_root(parent, l);
+      if (a != z) parent[static_cast<size_t>(std::max(a, z))] = std::min(a, z);
+    }
+  }
+  std::map<int, std::vector<int>> stacks;
+  for (const Piece& p : s.pieces) {
+    if (p.alive) stacks[find_root(parent, p.id)].push_back(p.id);
+  }
+  for (const auto& [root, members] : stacks) {
+    // The seed: the cap meshed beforehand, else a real piece, else any.
+    int seed = -1;
+    for (int m : members) {
+      const Piece& p = s.pieces[static_cast<size_t>(m)];
+      if (!p.premeshed) continue;
+      if (seed >= 0) {
+        fail(s.vid, "caps " + std::to_string(s.pieces[static_cast<size_t>(seed)].cap) + " and " + std::to_string(p.cap) +
+                        " were both meshed by their surface schemes but lie in one cap stack");
+      }
+      seed = m;
+    }
+    if (seed >= 0) {
+      take_surface_mesh(s, s.pieces[static_cast<size_t>(seed)]);
+    } else {
+      for (int m : members) {
+        if (seed < 0 && s.pieces[static_cast<size_t>(m)].cap) seed = m;
+      }
+      if (seed < 0) seed = members.front();
+      mesh_with_polygon_mesher(s, s.pieces[static_cast<size_t>(seed)]);
+    }
+    std::deque<int> queue{seed};
+    while (!queue.empty()) {
+      const int m = queue.front();
+      queue.pop_front();
+      const Piece& from = s.pieces[static_cast<size_t>(m)];
+      for (const int b : {from.upper_of, from.lower_of}) {
+        if (b < 0) continue;
+        const bool down = b == from.upper_of;
+        const BarrelState& st = s.barrels[static_cast<size_t>(b)];
+        for (const auto& [u, l] : st.matches) {
+          const int other = down ? (u == m ? l : -1) : (l == m ? u : -1);
+          if (other < 0) continue;
+          Piece& to = s.pieces[static_cast<size_t>(other)];
+          if (to.meshed) continue;
+          project(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
+          queue.push_back(other);
+        }
+      }
+    }
+    for (int m : members) {
+      if (!s.pieces[static_cast<size_t>(m)].meshed) fail(s.vid, "a subcap of a cap stack was not reached by its stack's mesh");
+    }
+  }
+}
+
+}  // namespace cooperage::cooper::detail

@@ -1,0 +1,224 @@
+// Imprinting across all barrels (Blacker 1996, sec. 5: "iteratively
+// matching and imprinting all subcaps to produce stacks of caps"). Each
+// barrel's two ends go through imprint_subcaps() in its chart; a virtual
+// cap split in one barrel is split in the barrel on its other side too
+// (the pieces are shared), so the barrels are imprinted again until no
+// subcap changes. New nodes get positions on their end (projected onto a
+// real cap); a cap meshed beforehand must never be cut.
+#include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/sweep_state.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+
+namespace cooperage::cooper::detail {
+namespace {
+
+// Outer loop (largest) first and counter-clockwise, holes clockwise.
+std::vector<std::vector<int>> oriented(std::vector<std::vector<int>> loops, const std::map<int, Vec2>& xy) {
+  size_t outer = 0;
+  double best = -1;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const double a = std::abs(signed_area(loops[l], xy));
+    if (a > best) {
+      best = a;
+      outer = l;
+    }
+  }
+  std::swap(loops[0], loops[outer]);
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const double a = signed_area(loops[l], xy);
+    if ((l == 0) != (a > 0)) std::reverse(loops[l].begin(), loops[l].end());
+  }
+  return loops;
+}
+
+// One barrel's ends as value types, in its chart.
+BarrelEnds ends_of(const SweepState& s, size_t b) {
+  BarrelEnds ends;
+  const BarrelState& st = s.barrels[b];
+  for (const Piece& p : s.pieces) {
+    if (!p.alive) continue;
+    const int end = p.upper_of == static_cast<int>(b) ? 0 : p.lower_of == static_cast<int>(b) ? 1 : -1;
+    if (end < 0) continue;
+    for (const auto& l : p.loops) {
+      for (int n : l) {
+        const Vec3& x = s.pos(n);
+        ends.xy[n] = s.plane(b, end == 0 ? x : st.to_upper.apply(x));
+        if (s.out.global[static_cast<size_t>(n)] >= 0) ends.fixed.insert(n);
+      }
+    }
+  }
+  for (const Piece& p : s.pieces) {
+    if (!p.alive) continue;
+    const bool upper = p.upper_of == static_cast<int>(b);
+    if (!upper && p.lower_of != static_cast<int>(b)) continue;
+    (upper ? ends.upper : ends.lower).push_back({p.id, oriented(p.loops, ends.xy)});
+  }
+  ends.ribs = st.rib_pairs;
+  return ends;
+}
+
+// Applies one barrel's imprint result; true when a subcap or rib changed.
+bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r) {
+  BarrelState& st = s.barrels[b];
+  std::set<int> upper_nodes, lower_nodes;
+  for (const Subcap& c : r.ends.upper) {
+    for (const auto& l : c.loops) upper_nodes.insert(l.begin(), l.end());
+  }
+  for (const Subcap& c : r.ends.lower) {
+    for (const auto& l : c.loops) lower_nodes.insert(l.begin(), l.end());
+  }
+  // The piece (input id) a node of the result lies on, for its surface.
+  std::map<int, int> piece_of_node;
+  for (const auto* list : {&r.ends.upper, &r.ends.lower}) {
+    for (const Subcap& c : *list) {
+      const auto o = r.origin.find(c.id);
+      const int origin = o == r.origin.end() ? c.id : o->second;
+      for (const auto& l : c.loops) {
+        for (int n : l) piece_of_node.emplace(n, origin);
+      }
+    }
+  }
+  std::map<int, int> remap;
+  bool changed = false;
+  auto node = [&](int id) {
+    if (in.xy.count(id)) return id;
+    const auto it = remap.find(id);
+    if (it != remap.end()) return it->second;
+    const Vec2& p2 = r.ends.xy.at(id);
+    Vec3 x = st.u * p2.x() + st.v * p2.y() + st.level * st.d;
+    const bool lower = lower_nodes.count(id) > 0;
+    if (lower) x = st.to_lower.apply(x);
+    const Piece& p = s.pieces[static_cast<size_t>(piece_of_node.at(id))];
+    int n;
+    if (p.cap) {
+      x = s.model.surface(p.cap).geometry->project(x).point;
+      n = s.out.add_owned(x, {2, p.cap});
+    } else {
+      n = s.out.add(x);
+    }
+    remap[id] = n;
+    changed = true;
+    return n;
+  };
+  auto loops_of = [&](const Subcap& c) {
+    std::vector<std::vector<int>> out;
+    for (const auto& l : c.loops) {
+      out.emplace_back();
+      for (int n : l) out.back().push_back(node(n));
+    }
+    return out;
+  };
+  std::set<int> input_ids;
+  for (const auto* list : {&in.upper, &in.lower}) {
+    for (const Subcap& c : *list) input_ids.insert(c.id);
+  }
+  std::set<int> kept;
+  std::map<int, int> new_piece;  // imprint subcap id -> piece id
+  for (const auto* list : {&r.ends.upper, &r.ends.lower}) {
+    for (const Subcap& c : *list) {
+      auto loops = loops_of(c);
+      if (input_ids.count(c.id)) {
+        Piece& p = s.pieces[static_cast<size_t>(c.id)];
+        std::set<int> before, after;
+        for (const auto& l : p.loops) before.insert(l.begin(), l.end());
+        for (const auto& l : loops) after.insert(l.begin(), l.end());
+        if (before != after || p.loops.size() != loops.size()) {
+          if (p.premeshed) {
+            fail(s.vid, s.barrel_name(b) + ": imprinting cuts cap " + std::to_string(p.cap) +
+                            ", which was meshed by its surface scheme (the plan did not foresee it)");
+          }
+          changed = true;
+        }
+        p.loops = std::move(loops);
+        kept.insert(c.id);
+        new_piece[c.id] = c.id;
+        continue;
+      }
+      const auto o = r.origin.find(c.id);
+      if (o == r.origin.end()) fail(s.vid, s.barrel_name(b) + ": an imprinted subcap has no origin");
+      const Piece& parent = s.pieces[static_cast<size_t>(o->second)];
+      if (parent.premeshed) {
+        fail(s.vid, s.barrel_name(b) + ": imprinting cuts cap " + std::to_string(parent.cap) +
+                        ", which was meshed by its surface scheme (the plan did not foresee it)");
+      }
+      Piece p;
+      p.id = static_cast<int>(s.pieces.size());
+      p.cap = parent.cap;
+      p.interface = parent.interface;
+      p.upper_of = parent.upper_of;
+      p.lower_of = parent.lower_of;
+      p.loops = std::move(loops);
+      s.pieces.push_back(std::move(p));
+      new_piece[c.id] = static_cast<int>(s.pieces.size()) - 1;
+      changed = true;
+    }
+  }
+  for (const auto* list : {&in.upper, &in.lower}) {
+    for (const Subcap& c : *list) {
+      if (!kept.count(c.id)) {
+        s.pieces[static_cast<size_t>(c.id)].alive = false;
+        changed = true;
+      }
+    }
+  }
+  std::vector<std::pair<int, int>> ribs;
+  for (const auto& [a, z] : r.ends.ribs) ribs.push_back({node(a), node(z)});
+  if (ribs != st.rib_pairs) changed = true;
+  st.rib_pairs = std::move(ribs);
+  st.matches.clear();
+  for (const auto& [a, z] : r.matches) st.matches.push_back({new_piece.at(a), new_piece.at(z)});
+  st.steps.insert(st.steps.end(), r.steps.begin(), r.steps.end());
+  return changed;
+}
+
+}  // namespace
+
+// cite: Blacker 1996, sec. 5 (5.1 matching, 5.2 subtraction, 5.3
+// intersection, 5.4 seaming, 5.5 self-intersection), repeated over the
+// barrels until every subcap is matched in every barrel.
+void imprint_barrels(SweepState& s) {
+  ImprintOptions options;
+  options.even_parity = s.plan.elements != Elements::Wedge;
+  const size_t passes = 4 + 2 * s.barrels.size();
+  for (size_t pass = 0; pass < passes; ++pass) {
+    bool changed = false;
+    for (size_t b = 0; b < s.barrels.size(); ++b) {
+      const BarrelEnds ends = ends_of(s, b);
+      const ImprintResult r = imprint_subcaps(ends, options);
+      if (!r.ok) {
+        for (int e = 0; e < 2; ++e) {
+          for (const Subcap& c : e == 0 ? ends.upper : ends.lower) {
+            std::fprintf(stderr, "IMPRINT end %d subcap %d\n", e, c.id);
+            for (const auto& l : c.loops) {
+              std::fprintf(stderr, "  loop:");
+              for (int n : l) std::fprintf(stderr, " %d(%.3f,%.3f)", n, ends.xy.at(n).x(), ends.xy.at(n).y());
+              std::fprintf(stderr, "\n");
+            }
+          }
+        }
+        for (int e = 0; e < 2; ++e) {
+          for (const Subcap& c : e == 0 ? r.ends.upper : r.ends.lower) {
+            std::fprintf(stderr, "RESULT end %d subcap %d\n", e, c.id);
+            for (const auto& l : c.loops) {
+              std::fprintf(stderr, "  loop:");
+              for (int n : l) std::fprintf(stderr, " %d(%.3f,%.3f)", n, r.ends.xy.at(n).x(), r.ends.xy.at(n).y());
+              std::fprintf(stderr, "\n");
+            }
+          }
+        }
+        std::fprintf(stderr, "RIBS:");
+        for (const auto& [a, z] : r.ends.ribs) std::fprintf(stderr, " %d-%d", a, z);
+        std::fprintf(stderr, "\n");
+        fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed (" + r.why + ")");
+      }
+      changed = apply(s, b, ends, r) || changed;
+    }
+    if (!changed) return;
+  }
+  fail(s.vid, "subcap imprinting did not settle after " + std::to_string(passes) + " passes over the barrels");
+}
+
+}  // namespace cooperage::cooper::detail

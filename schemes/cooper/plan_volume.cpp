@@ -1,0 +1,345 @@
+#include "schemes/cooper/plan_volume.h"
+
+#include "framework/core/log.h"
+#include "schemes/cooper/cap_candidates.h"
+#include "schemes/cooper/cap_scheme.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cooperage::cooper {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string volume_name(int id) { return "volume " + std::to_string(id); }
+
+std::string join(const std::vector<int>& ids) {
+  std::string s;
+  for (size_t i = 0; i < ids.size(); ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+  return s;
+}
+
+std::string hint_place(const SweepHints& h) { return h.where.empty() ? std::string() : " (" + h.where + ")"; }
+
+// The hints a plan must honour; empty when it does, else why not.
+std::string check_hints(const VolumePlan& p, const SweepHints& hints) {
+  for (int s : hints.sources) {
+    const auto it = p.order.upper.find(s);
+    if (it == p.order.upper.end() || !it->second) {
+      return "the hinted source surface " + std::to_string(s) + hint_place(hints) + " is not a cap the sweep starts from";
+    }
+  }
+  for (int t : hints.targets) {
+    const auto it = p.order.upper.find(t);
+    if (it == p.order.upper.end() || it->second) {
+      return "the hinted target surface " + std::to_string(t) + hint_place(hints) + " is not a cap the sweep ends on";
+    }
+  }
+  if (hints.direction && hints.direction->norm() > 0) {
+    const geom::Vec3 d = hints.direction->normalized();
+    const double c = std::cos(kCapFacing * kPi / 180.0);
+    for (const auto& [cap, upper] : p.order.upper) {
+      if (!upper) continue;
+      const double along = -p.facts.face(cap)->normal.dot(d);
+      if (along < c) {
+        return "the sweep would leave cap " + std::to_string(cap) + " along " +
+               direction_text(-p.facts.face(cap)->normal) + ", not along the direction hint " +
+               direction_text(d) + hint_place(hints);
+      }
+    }
+  }
+  return {};
+}
+
+double worst_side_score(const VolumePlan& p) {
+  double worst = 1.0;
+  for (int s : p.lattice.sides) worst = std::min(worst, p.facts.face(s)->submap_score);
+  return std::clamp(worst, 0.0, 1.0);
+}
+
+std::string summary(const VolumePlan& p) {
+  std::ostringstream w;
+  w << volume_name(p.volume) << ": ";
+  if (p.one_barrel()) {
+    const BarrelNode& b = p.tree.barrels.front();
+    std::vector<int> up, lo;
+    for (const EndPiece& e : b.upper) up.push_back(e.cap);
+    for (const EndPiece& e : b.lower) lo.push_back(e.cap);
+    w << "one-barrel sweep from surface" << (up.size() > 1 ? "s " : " ") << join(up);
+    for (int c : up) {
+      const auto it = p.roles.scheme.find(c);
+      if (it != p.roles.scheme.end()) w << " (" << c << ": " << it->second << ")";
+    }
+    w << " to surface" << (lo.size() > 1 ? "s " : " ") << join(lo) << " along " << p.lattice.sides.size()
+      << " side faces";
+  } else {
+    w << "many-to-one sweep";
+    if (p.down) w << " along " << direction_text(*p.down);
+    w << " in " << p.tree.barrels.size() << " barrels, " << p.roles.scheme.size()
+      << " caps meshed by their surface schemes, " << p.roles.by_volume.size() << " by the sweep";
+  }
+  return w.str();
+}
+
+// Runs the steps for one sorting of the faces.
+VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry, const VolumeFacts& facts,
+                    const PlanInputs& in, const CapCandidate& cand) {
+  VolumePlan p;
+  p.volume = facts.volume;
+  p.elements = in.elements;
+  p.candidate = cand.label;
+  p.facts = facts;
+  auto fail = [&](int stage, const std::string& why) {
+    p.why = cand.label + ": " + why;
+    p.stage = stage;
+    return p;
+  };
+  p.lattice = side_lattice(facts, cand.caps);
+  if (!p.lattice.ok) return fail(1, p.lattice.why);
+  p.order = sweep_order(facts, p.lattice, cand.anchor);
+  if (!p.order.ok) return fail(2, p.order.why);
+  p.slabs = slab_regions(facts, p.lattice, p.order);
+  if (!p.slabs.ok) return fail(3, p.slabs.why);
+  p.tree = form_barrel_tree(facts, p.lattice, p.order, p.slabs);
+  if (!p.tree.ok) return fail(4, p.tree.why);
+  if (cand.anchor.down) p.down = cand.anchor.down->normalized();
+  const CapSchemeOf scheme_of = [&](int cap, std::string& why) {
+    return cap_scheme(model, registry, cap, why, in.elements);
+  };
+  p.roles = cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
+  if (!p.roles.ok) return fail(5, p.roles.why);
+  if (const std::string h = check_hints(p, in.hints); !h.empty()) return fail(6, h);
+  std::set<int> even;
+  for (const auto& [cap, upper] : p.order.upper) {
+    const auto it = p.roles.scheme.find(cap);
+    const bool paved = it != p.roles.scheme.end() && (it->second == "pave" || it->second == "quad_dominant");
+    const bool imprinted = p.roles.needs_polygon_mesher && in.elements != Elements::Wedge;
+    if (imprinted || (paved && facts.face(cap)->loops.size() > 1)) even.insert(cap);
+  }
+  p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even, volume_name(p.volume) + " (cooper)");
+  if (p.one_barrel()) {
+    p.source = cand.source;
+    p.target = cand.target;
+    for (const EndPiece& e : p.tree.barrels.front().upper) {
+      if (!p.source && e.cap) p.source = e.cap;
+    }
+    for (const EndPiece& e : p.tree.barrels.front().lower) {
+      if (!p.target && e.cap) p.target = e.cap;
+    }
+  }
+  const double worst = worst_side_score(p);
+  p.score = p.one_barrel() ? 0.5 + 0.4 * worst : 0.3 + 0.15 * worst;
+  p.ok = true;
+  p.why = summary(p);
+  return p;
+}
+
+// Of two plans for one sorting, the one leaving fewer shared caps to the
+// sweep, then meshing more caps by their surface schemes, then the first.
+bool better(const VolumePlan& a, const VolumePlan& b) {
+  auto shared_here = [](const VolumePlan& p) {
+    int n = 0;
+    for (int c : p.roles.by_volume) n += p.facts.face(c)->other_volumes > 0 ? 1 : 0;
+    return n;
+  };
+  if (shared_here(a) != shared_here(b)) return shared_here(a) < shared_here(b);
+  return a.roles.scheme.size() > b.roles.scheme.size();
+}
+
+// How well the linking chains follow a straight sweep: their chords'
+// |cos| with the axis, weighted by length (1: every chain along it).
+double alignment(const VolumePlan& p) {
+  if (!p.down) return 0;
+  double sum = 0, total = 0;
+  for (const LinkChain& c : p.lattice.chains) {
+    const geom::Vec3 chord = p.facts.vertices.at(c.to_vertex) - p.facts.vertices.at(c.from_vertex);
+    if (!(chord.norm() > 0)) continue;
+    sum += c.length * std::abs(chord.normalized().dot(*p.down));
+    total += c.length;
+  }
+  return total > 0 ? sum / total : 0;
+}
+
+// The paper's Fig. 3a: virtual faces (where parts of the volume meet)
+// projecting in directions no single sweep holds.
+std::string fig3a(const VolumeFacts& facts) {
+  const auto dirs = virtual_face_directions(facts);
+  const double c = std::cos(kCapFacing * kPi / 180.0);
+  for (size_t i = 0; i < dirs.size(); ++i) {
+    for (size_t j = i + 1; j < dirs.size(); ++j) {
+      if (std::abs(dirs[i].second.dot(dirs[j].second)) >= c) continue;
+      return volume_name(facts.volume) + " is not cooperable: the virtual faces in the hole loops of surfaces " +
+             std::to_string(dirs[i].first) + " (projecting along " + direction_text(dirs[i].second) + ") and " +
+             std::to_string(dirs[j].first) + " (along " + direction_text(dirs[j].second) +
+             ") project in different directions (Blacker 1996, sec. 3, Fig. 3a); decompose it, e.g. with "
+             "<webcut>, into pieces that sweep in one direction each";
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+// cite: Blacker 1996, sec. 3 (classification), sec. 4 (barrel formation).
+VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Registry& registry,
+                       const PlanInputs& in) {
+  VolumePlan refused;
+  refused.volume = volume_id;
+  refused.elements = in.elements;
+  const std::string vname = volume_name(volume_id);
+  if (model.volume(volume_id).shells.size() != 1) {
+    refused.why = vname + " has " + std::to_string(model.volume(volume_id).shells.size()) +
+                  " shells; a sweep needs one (no internal voids)";
+    return refused;
+  }
+  if (!registry.surface_scheme("submap")) {
+    refused.why = vname + ": the submap scheme is not registered; cooper needs it for the sides";
+    return refused;
+  }
+  const VolumeFacts facts = gather_facts(model, volume_id, registry);
+  if (facts.faces.size() < 3) {
+    refused.why = vname + ": " + std::to_string(facts.faces.size()) + " surfaces, a sweep needs at least 3";
+    return refused;
+  }
+  for (const auto* list : {&in.hints.sources, &in.hints.targets}) {
+    for (int id : *list) {
+      if (!facts.face(id)) {
+        refused.why = vname + ": hinted surface " + std::to_string(id) + hint_place(in.hints) +
+                      " does not bound the volume";
+        return refused;
+      }
+    }
+  }
+  // The refusal reported: the candidate that got furthest (the first of them).
+  std::string first_failure;
+  int deepest = -1;
+  auto note = [&](const VolumePlan& p) {
+    log::debug("cooper, volume " + std::to_string(volume_id) + ", candidate refused: " + p.why);
+    if (p.stage > deepest) {
+      deepest = p.stage;
+      first_failure = p.why;
+    }
+  };
+  // 1. One barrel between a pair of caps.
+  std::string pair_why;
+  for (const CapCandidate& c : pair_candidates(facts, in.hints.sources, in.hints.targets, pair_why)) {
+    VolumePlan p = evaluate(model, registry, facts, in, c);
+    if (p.ok && p.one_barrel()) return p;
+    if (!p.ok) note(p);
+  }
+  if (!pair_why.empty() && deepest < 1) {
+    deepest = 0;
+    first_failure = pair_why;
+  }
+  // 2. A straight axis, both directions along it (the hint's only); of the
+  // axes that work, the one the linking curves follow best.
+  {
+    std::optional<VolumePlan> best;
+    double best_alignment = -1;
+    for (const geom::Vec3& axis : candidate_axes(facts, in.hints.direction)) {
+      CapCandidate c;
+      c.kind = CapCandidate::Kind::Axis;
+      c.caps = caps_facing(facts, axis);
+      for (int sign : {-1, 1}) {
+        if (in.hints.direction && sign < 0) continue;
+        c.anchor.down = sign * axis;
+        c.label = "along " + direction_text(sign * axis);
+        VolumePlan p = evaluate(model, registry, facts, in, c);
+        if (!p.ok) {
+          note(p);
+          continue;
+        }
+        const double a = alignment(p);
+        const bool clearly_better = a > best_alignment + 1e-6;
+        const bool tie = std::abs(a - best_alignment) <= 1e-6;
+        if (!best || clearly_better || (tie && better(p, *best))) {
+          best_alignment = std::max(a, best_alignment);
+          best = std::move(p);
+        }
+      }
+    }
+    if (best) return *best;
+  }
+  // 3. A curved sweep with several barrels.
+  if (!in.hints.direction) {
+    std::optional<VolumePlan> best;
+    std::string last_label;
+    for (const CapCandidate& c : curved_candidates(facts)) {
+      if (best && c.label != last_label) break;  // both orientations of one sorting tried
+      VolumePlan p = evaluate(model, registry, facts, in, c);
+      last_label = c.label;
+      if (!p.ok) continue;
+      if (!best || better(p, *best)) best = std::move(p);
+    }
+    if (best) return *best;
+  }
+  if (const std::string f = fig3a(facts); !f.empty()) {
+    refused.needs_decomposition = true;
+    refused.why = f;
+    return refused;
+  }
+  if (in.hints.direction) {
+    refused.why = vname + ": the direction hint " + direction_text(*in.hints.direction) + hint_place(in.hints) +
+                  " cannot be honoured: " + (first_failure.empty() ? "no sorting fits it" : first_failure);
+  } else {
+    refused.why = vname + ": no sorting of its faces into caps and sides gives barrels (the one that got furthest: " +
+                  (first_failure.empty() ? std::string("none") : first_failure) + ")";
+  }
+  return refused;
+}
+
+geom::Vec3 sweep_direction(const VolumePlan& p) {
+  if (p.down) return *p.down;
+  if (p.source && p.facts.face(p.source)) return -p.facts.face(p.source)->normal;
+  return geom::Vec3::Zero();
+}
+
+std::string imprint_operation(const BarrelNode& barrel) {
+  const size_t u = barrel.upper.size(), l = barrel.lower.size();
+  if (u == 1 && l == 1) return "match";
+  if (u == 1 || l == 1) return "subtract";
+  return "imprint";
+}
+
+std::string describe_plan(const VolumePlan& p) {
+  std::ostringstream s;
+  if (!p.ok) {
+    s << p.why << "\n";
+    return s.str();
+  }
+  s << "cooper plan of " << volume_name(p.volume) << ": " << p.tree.barrels.size() << " barrel"
+    << (p.tree.barrels.size() == 1 ? "" : "s");
+  if (p.down) {
+    s << ", straight along " << direction_text(*p.down);
+  } else if (p.source) {
+    s << ", leaving surface " << p.source << " along " << direction_text(sweep_direction(p));
+  }
+  s << (p.down ? "" : " (" + p.candidate + ")") << "\n";
+  auto piece = [&](const EndPiece& e, bool upper_end, size_t self) {
+    std::ostringstream t;
+    if (e.cap) {
+      const auto it = p.roles.scheme.find(e.cap);
+      t << "surface " << e.cap << " (" << (it != p.roles.scheme.end() ? it->second : std::string("by the sweep")) << ")";
+    } else {
+      const BarrelInterface& v = p.tree.interfaces[static_cast<size_t>(e.interface)];
+      const int other = upper_end ? v.above : v.below;
+      (void)self;
+      t << "virtual cap " << (upper_end ? "from" : "into") << " barrel " << other + 1;
+    }
+    return t.str();
+  };
+  for (size_t b = 0; b < p.tree.barrels.size(); ++b) {
+    const BarrelNode& n = p.tree.barrels[b];
+    s << "  barrel " << b + 1 << ": sides " << join(n.sides) << "; " << imprint_operation(n) << "\n";
+    s << "    upper:";
+    for (const EndPiece& e : n.upper) s << " " << piece(e, true, b) << (&e == &n.upper.back() ? "" : ",");
+    s << "\n    lower:";
+    for (const EndPiece& e : n.lower) s << " " << piece(e, false, b) << (&e == &n.lower.back() ? "" : ",");
+    s << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace cooperage::cooper

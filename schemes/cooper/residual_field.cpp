@@ -1,0 +1,56 @@
+#include "schemes/cooper/residual_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cooperage::cooper {
+namespace {
+
+// Beyond this many weights (n x B) they are recomputed per call instead of
+// kept (64 MB).
+constexpr std::size_t kMaxKeptWeights = std::size_t{1} << 23;
+
+double weight(const Vec3& x, const Vec3& b) {
+  const double d2 = (x - b).squaredNorm();
+  return 1.0 / (d2 * std::sqrt(d2) + 1e-300);
+}
+
+}  // namespace
+
+ResidualField::ResidualField(const std::vector<Vec3>& points, std::size_t boundary)
+    : points_(points), boundary_(boundary) {
+  const std::size_t n = points_.size();
+  if (n <= boundary_ || boundary_ == 0 || (n - boundary_) * boundary_ > kMaxKeptWeights) return;
+  weights_.resize((n - boundary_) * boundary_);
+  for (std::size_t i = boundary_; i < n; ++i) {
+    double* row = &weights_[(i - boundary_) * boundary_];
+    double sum = 0;
+    for (std::size_t k = 0; k < boundary_; ++k) sum += weight(points_[i], points_[k]);
+    for (std::size_t k = 0; k < boundary_; ++k) row[k] = weight(points_[i], points_[k]) / sum;
+  }
+}
+
+// cite: Blacker 1996, sec. 6.1 (least-squares weighted residuals).
+void ResidualField::apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) const {
+  const std::size_t n = points_.size();
+  out.assign(n, Vec3::Zero());
+  for (std::size_t k = 0; k < boundary_ && k < r.size(); ++k) out[k] = r[k];
+  for (std::size_t i = boundary_; i < n; ++i) {
+    Vec3 sum = Vec3::Zero();
+    if (!weights_.empty()) {
+      const double* row = &weights_[(i - boundary_) * boundary_];
+      for (std::size_t k = 0; k < boundary_; ++k) sum += row[k] * r[k];
+    } else {
+      double wsum = 0;
+      for (std::size_t k = 0; k < boundary_; ++k) {
+        const double w = weight(points_[i], points_[k]);
+        sum += w * r[k];
+        wsum += w;
+      }
+      sum /= wsum;
+    }
+    out[i] = sum;
+  }
+}
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,37 @@
+// The part of a barrel ring's motion that no affine map explains (a hole
+// shrinking while the outer loop stays, a countersink's cone), carried from
+// the boundary nodes of a cap mesh to its interior (Blacker 1996, sec. 6.1:
+// "a least square weighted residual method ... which maintains the overall
+// shape and quality of the mesh even for drastic distortions in geometry")
+// by inverse-distance (Shepard, power 3) weights of the boundary nodes. The
+// weights depend on the cap only: computed once per barrel and reused for
+// every layer (issue 20, item 4). Value types only.
+#pragma once
+
+#include "schemes/cooper/least_squares_map.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace cooperage::cooper {
+
+class ResidualField {
+ public:
+  /// \param[in] points  cap nodes, the first `boundary` of them on the boundary
+  ResidualField(const std::vector<Vec3>& points, std::size_t boundary);
+
+  /// Residuals of every node from those of the boundary nodes: out[k] = r[k]
+  /// for k < boundary, the weighted mean of r at the interior nodes.
+  void apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) const;
+
+  std::size_t boundary() const { return boundary_; }
+
+ private:
+  std::vector<Vec3> points_;
+  std::size_t boundary_ = 0;
+  /// Normalised weights, (n - boundary) x boundary, row-major; empty when
+  /// too large to keep (then recomputed on every call).
+  std::vector<double> weights_;
+};
+
+}  // namespace cooperage::cooper

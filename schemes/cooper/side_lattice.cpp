@@ -1,0 +1,262 @@
+#include "schemes/cooper/side_lattice.h"
+
+#include "framework/scheme/vertex_angles.h"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+namespace cooperage::cooper {
+namespace {
+
+using scheme::VertexType;
+
+struct UnionFind {
+  std::map<int, int> parent;
+  int find(int x) {
+    auto it = parent.find(x);
+    if (it == parent.end()) {
+      parent[x] = x;
+      return x;
+    }
+    if (it->second == x) return x;
+    const int r = find(it->second);
+    parent[x] = r;
+    return r;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+std::string text(double d) {
+  std::ostringstream s;
+  s.precision(4);
+  s << d;
+  return s.str();
+}
+
+int vertex_at_start(const VolumeFacts& facts, const UseFact& u) {
+  const CurveFact& c = facts.curves.at(u.curve);
+  return u.forward ? c.start : c.end;
+}
+int vertex_at_end(const VolumeFacts& facts, const UseFact& u) {
+  const CurveFact& c = facts.curves.at(u.curve);
+  return u.forward ? c.end : c.start;
+}
+
+// Lattice directions of a single loop: d_0 = 0, d_k = d_{k-1} + t_k (mod 4),
+// t = END 1, SIDE 0, CORNER -1 (ALGORITHMS.md sec. 1). Empty with `why`
+// when a corner has no type, is a REVERSAL, or the turns do not close.
+std::vector<int> loop_directions(const FaceFact& f, std::string& why) {
+  const size_t n = f.loops.front().size();
+  if (f.angles.size() != n) {
+    why = "surface " + std::to_string(f.id) + " has no corner angles";
+    return {};
+  }
+  std::vector<int> turn(n);
+  int sum = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const auto type = scheme::classify_angle(f.angles[k]);
+    if (!type || *type == VertexType::Reversal) {
+      why = "surface " + std::to_string(f.id) + " has a corner of " + text(f.angles[k]) +
+            " degrees before curve " + std::to_string(f.loops.front()[k].curve) +
+            (type ? " (a REVERSAL)" : " (no vertex type below 45 degrees)");
+      return {};
+    }
+    turn[k] = static_cast<int>(*type);
+    sum += turn[k];
+  }
+  if (sum != 4) {
+    why = "the corners of surface " + std::to_string(f.id) + " turn by " + std::to_string(sum) +
+          " quarter turns, not 4 (no lattice)";
+    return {};
+  }
+  std::vector<int> d(n);
+  d[0] = 0;
+  for (size_t k = 1; k < n; ++k) d[k] = ((d[k - 1] + turn[k]) % 4 + 4) % 4;
+  return d;
+}
+
+}  // namespace
+
+// cite: Blacker 1996, sec. 3 (side faces jointly submappable, Fig. 4/5).
+SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
+  SideLattice out;
+  out.caps.assign(caps.begin(), caps.end());
+  // Cap curves: (curve -> (cap, loop index)).
+  std::map<int, std::vector<std::pair<int, int>>> cap_curves;
+  for (int c : caps) {
+    const FaceFact* f = facts.face(c);
+    if (!f) {
+      out.why = "surface " + std::to_string(c) + " does not bound volume " + std::to_string(facts.volume);
+      return out;
+    }
+    for (size_t l = 0; l < f->loops.size(); ++l) {
+      for (const UseFact& u : f->loops[l]) cap_curves[u.curve].push_back({c, static_cast<int>(l)});
+    }
+  }
+  std::map<int, std::vector<int>> dirs;  // side face -> lattice direction per use
+  for (const FaceFact& f : facts.faces) {
+    if (caps.count(f.id)) continue;
+    if (f.loops.size() != 1 || !f.submappable) {
+      out.why = "surface " + std::to_string(f.id) + " cannot be a side (" + f.submap_why + ")";
+      return out;
+    }
+    std::string why;
+    auto d = loop_directions(f, why);
+    if (d.empty()) {
+      out.why = why;
+      return out;
+    }
+    dirs[f.id] = std::move(d);
+    out.sides.push_back(f.id);
+  }
+  // Roles: parity of the lattice direction that runs along, per face.
+  std::map<int, int> along_parity;  // face -> 0 or 1
+  std::map<int, bool> curve_along;  // decided curves
+  for (const auto& [curve, list] : cap_curves) curve_along[curve] = true;
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (int s : out.sides) {
+      if (along_parity.count(s)) continue;
+      const auto& loop = facts.face(s)->loops.front();
+      const auto& d = dirs.at(s);
+      int parity = -1;
+      for (size_t k = 0; k < loop.size() && parity < 0; ++k) {
+        const auto it = curve_along.find(loop[k].curve);
+        if (it != curve_along.end()) parity = (d[k] + (it->second ? 0 : 1)) % 2;
+      }
+      if (parity < 0) continue;
+      for (size_t k = 0; k < loop.size(); ++k) {
+        const bool along = d[k] % 2 == parity;
+        const auto [it, added] = curve_along.emplace(loop[k].curve, along);
+        if (!added && it->second != along) {
+          out.why = "curve " + std::to_string(loop[k].curve) + " runs " +
+                    (it->second ? "along the caps" : "between the caps") + " for a neighbour of side surface " +
+                    std::to_string(s) + " but " + (along ? "along" : "between") +
+                    " them in its lattice; the sides are not jointly submappable (Blacker 1996, Fig. 5)";
+          return out;
+        }
+      }
+      along_parity[s] = parity;
+      progress = true;
+    }
+  }
+  for (int s : out.sides) {
+    if (!along_parity.count(s)) {
+      out.why = "side surface " + std::to_string(s) +
+                " touches no cap and no oriented side, so its sweep direction is unknown";
+      return out;
+    }
+  }
+  for (const auto& [curve, along] : curve_along) {
+    if (along) out.along.insert(curve);
+  }
+  // Level classes: the ends of every curve running along, and every cap.
+  UnionFind uf;
+  for (const auto& [id, p] : facts.vertices) uf.find(id);
+  for (int curve : out.along) {
+    const CurveFact& c = facts.curves.at(curve);
+    uf.unite(c.start, c.end);
+  }
+  for (int c : caps) {
+    int first = -1;
+    for (const auto& loop : facts.face(c)->loops) {
+      for (const UseFact& u : loop) {
+        const int v = facts.curves.at(u.curve).start;
+        if (first < 0) first = v;
+        uf.unite(first, v);
+      }
+    }
+  }
+  std::map<int, int> dense;
+  for (const auto& [id, p] : facts.vertices) {
+    const int r = uf.find(id);
+    const auto [it, added] = dense.emplace(r, static_cast<int>(dense.size()));
+    out.vertex_class[id] = it->second;
+  }
+  out.classes = static_cast<int>(dense.size());
+  for (int c : caps) {
+    out.cap_class[c] = out.vertex_class.at(facts.curves.at(facts.face(c)->loops.front().front().curve).start);
+  }
+  // Chains, contacts, stacked curves.
+  for (int s : out.sides) {
+    const auto& loop = facts.face(s)->loops.front();
+    const auto& d = dirs.at(s);
+    const int parity = along_parity.at(s);
+    const size_t n = loop.size();
+    auto along_at = [&](size_t k) { return d[k % n] % 2 == parity; };
+    auto sign_of = [&](size_t k) { return d[k % n] == (parity + 1) % 4 ? 1 : -1; };
+    size_t start = n;
+    for (size_t k = 0; k < n && start == n; ++k) {
+      if (along_at(k) && !along_at(k + n - 1)) start = k;  // first use of a run along
+    }
+    if (start == n) {
+      out.why = "side surface " + std::to_string(s) + " has no curve running along the caps";
+      return out;
+    }
+    std::set<int> classes;
+    for (size_t i = 0; i < n; ++i) {
+      const size_t k = (start + i) % n;
+      const UseFact& u = loop[k];
+      if (along_at(k)) {
+        classes.insert(out.vertex_class.at(vertex_at_start(facts, u)));
+        // The face lies on the left of the loop: on the +j side of a run
+        // walked along +i (the lattice direction `parity`), else on -j.
+        const int leaving = d[k] == parity ? 1 : -1;
+        const auto cc = cap_curves.find(u.curve);
+        const int cls = out.vertex_class.at(vertex_at_start(facts, u));
+        if (cc == cap_curves.end()) {
+          out.stacked.push_back({u.curve, s, leaving, cls});
+          continue;
+        }
+        const auto dh = facts.dihedral.find(u.curve);
+        for (const auto& [cap, cap_loop] : cc->second) {
+          if (dh == facts.dihedral.end()) {
+            out.why = "curve " + std::to_string(u.curve) + " between side surface " + std::to_string(s) +
+                      " and cap " + std::to_string(cap) + " has no dihedral angle";
+            return out;
+          }
+          const double a = dh->second;
+          if (a >= kMaxCapDihedral && a <= kReentrantMin) {
+            out.why = "side surface " + std::to_string(s) + " meets cap " + std::to_string(cap) + " at " + text(a) +
+                      " degrees along curve " + std::to_string(u.curve) +
+                      " (tangent: neither an end nor a re-entrant shoulder)";
+            return out;
+          }
+          out.contacts.push_back({s, cap, cap_loop, u.curve, a < kMaxCapDihedral, leaving, cls});
+        }
+        continue;
+      }
+      if (along_at(k + n - 1)) {  // a chain starts here
+        LinkChain chain;
+        chain.face = s;
+        chain.lattice_sign = sign_of(k);
+        chain.from_vertex = vertex_at_start(facts, u);
+        for (size_t m = k; !along_at(m) && m < k + n; ++m) {
+          chain.curves.push_back(loop[m % n].curve);
+          chain.forward.push_back(loop[m % n].forward);
+          chain.to_vertex = vertex_at_end(facts, loop[m % n]);
+          chain.length += facts.curves.at(loop[m % n].curve).length;
+        }
+        chain.from_class = out.vertex_class.at(chain.from_vertex);
+        chain.to_class = out.vertex_class.at(chain.to_vertex);
+        if (chain.from_class == chain.to_class) {
+          out.why = "side surface " + std::to_string(s) + ": the curves " + std::to_string(chain.curves.front()) +
+                    (chain.curves.size() > 1 ? "..." : "") +
+                    " link one level to itself (both ends lie on one cap or on one run along the caps)";
+          return out;
+        }
+        out.chains.push_back(std::move(chain));
+      }
+    }
+    out.face_classes[s].assign(classes.begin(), classes.end());
+  }
+  out.ok = true;
+  return out;
+}
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,90 @@
+// The lattice of the side faces (Blacker 1996, sec. 3: "a side face must
+// admit a submapping mesh and the combination of all adjacent side faces
+// must also admit a submapped mesh", Fig. 4/5). Every curve use of a side
+// face runs along the caps (it stays on one level) or across them (it links
+// two levels): cap curves run along; walking a side loop, a SIDE corner
+// keeps the role and an END or CORNER corner swaps it. Faces without a cap
+// curve (a face stacked between two others along the sweep: the cylinder
+// under a countersink's cone, a band split off by imprinting) take the
+// role of a curve they share with a neighbour. Vertices joined by curves
+// running along, and the vertices of one cap, form level classes; maximal
+// runs of linking uses are the chains between them (the layers of the
+// barrels). Plain data: testable without CAD.
+#pragma once
+
+#include "schemes/cooper/volume_facts.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace cooperage::cooper {
+
+/// A maximal run of linking uses in one side face loop.
+struct LinkChain {
+  int face = 0;
+  std::vector<int> curves;  ///< loop order
+  std::vector<bool> forward;  ///< per curve: walked from its start vertex
+  int from_vertex = 0;      ///< where the run starts (loop order)
+  int to_vertex = 0;
+  int from_class = -1;      ///< level classes of the two ends
+  int to_class = -1;
+  /// +1 or -1: the chain's direction in its face's lattice (the same for
+  /// every chain of a face that runs the same way).
+  int lattice_sign = 1;
+  double length = 0;        ///< summed curve lengths
+};
+
+/// Where a side face meets a cap (a curve of the cap's loop `cap_loop`).
+struct CapContact {
+  int face = 0;
+  int cap = 0;
+  int cap_loop = 0;         ///< 0 the cap's outer loop, >= 1 a hole loop
+  int curve = 0;
+  bool convex = true;       ///< dihedral below pi (else re-entrant)
+  /// The side face lies on this side (+1: +j, -1: -j) of the run in its
+  /// lattice (it lies on the left of its loop).
+  int leaving_sign = 1;
+  int level_class = -1;
+};
+
+/// A curve running along between two side faces (stacked sides).
+struct StackedCurve {
+  int curve = 0;
+  int face = 0;
+  int leaving_sign = 1;  ///< as CapContact::leaving_sign, in `face`
+  int level_class = -1;
+};
+
+struct SideLattice {
+  bool ok = false;
+  std::string why;                ///< for !ok: a sentence naming the faces
+  std::vector<int> caps;          ///< ascending
+  std::vector<int> sides;         ///< ascending
+  std::set<int> along;            ///< curves of the sides and caps running along
+  std::vector<LinkChain> chains;  ///< by face, then loop order
+  std::vector<CapContact> contacts;
+  std::vector<StackedCurve> stacked;
+  std::map<int, int> vertex_class;  ///< vertex id -> level class
+  int classes = 0;
+  std::map<int, int> cap_class;     ///< cap face -> level class
+  /// Per side face: its level classes (those of its runs along).
+  std::map<int, std::vector<int>> face_classes;
+};
+
+/// Upper bound of an end cap's dihedral angle with its sides [degrees]; the
+/// paper's bound is pi, a small margin keeps tangent (180) joints out.
+inline constexpr double kMaxCapDihedral = 175.0;
+/// Dihedral angle [degrees] above which a side meets a cap re-entrantly (a
+/// shoulder: the cap is a virtual subcap there); between the two, tangent.
+inline constexpr double kReentrantMin = 185.0;
+
+/// Roles, chains, contacts and level classes for `caps` (every other face
+/// of the volume is a side). Not ok when a side has several loops, is not
+/// submappable, has a corner without a type or a REVERSAL, its roles cannot
+/// be decided or contradict a neighbour's, meets a cap tangentially, or a
+/// chain links a level to itself.
+SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps);
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,252 @@
+#include "schemes/cooper/slab_regions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace cooperage::cooper {
+namespace {
+
+struct DisjointSets {
+  std::vector<int> parent;
+  explicit DisjointSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[static_cast<size_t>(x)] != x) {
+      parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+      x = parent[static_cast<size_t>(x)];
+    }
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+  }
+};
+
+}  // namespace
+
+int region_of_cycle(const Slab& slab, int c) {
+  for (size_t r = 0; r < slab.regions.size(); ++r) {
+    if (std::count(slab.regions[r].begin(), slab.regions[r].end(), c)) return static_cast<int>(r);
+  }
+  return -1;
+}
+
+// cite: Blacker 1996, sec. 4 (a complete layer of ribs at a time; barrels
+// bounded by ribs on the sides and caps on the ends).
+SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order) {
+  SlabRegions out;
+  const double scale = order.straight ? facts.size() : std::max(1.0, [&] {
+    double lo = 0, hi = 0;
+    for (double h : order.height) {
+      lo = std::min(lo, h);
+      hi = std::max(hi, h);
+    }
+    return hi - lo;
+  }());
+  const double tol = 1e-6 * scale;
+  out.tolerance = tol;
+  auto height = [&](int cls) { return order.height[static_cast<size_t>(cls)]; };
+  // Cap levels, highest first.
+  std::vector<double> hs;
+  for (const auto& [cap, cls] : lattice.cap_class) hs.push_back(height(cls));
+  std::sort(hs.begin(), hs.end(), std::greater<double>());
+  for (double h : hs) {
+    if (out.levels.empty() || out.levels.back() - h > tol) out.levels.push_back(h);
+  }
+  if (out.levels.size() < 2) {
+    out.why = "all caps lie on one level";
+    return out;
+  }
+  for (int s : lattice.sides) {
+    double lo = 1e300, hi = -1e300;
+    for (int cls : lattice.face_classes.at(s)) {
+      lo = std::min(lo, height(cls));
+      hi = std::max(hi, height(cls));
+    }
+    out.span[s] = {lo, hi};
+  }
+  // Outer or hole walls, from the contacts: a convex contact on a cap's
+  // outer loop or a re-entrant one on a hole loop walls the volume in, a
+  // convex one on a hole loop walls a hole; the rest follow neighbours.
+  std::map<int, std::set<int>> neighbours;  // sides sharing a non-cap curve
+  {
+    std::map<int, std::vector<int>> by_curve;
+    std::set<int> cap_curves;
+    for (const CapContact& k : lattice.contacts) cap_curves.insert(k.curve);
+    for (int s : lattice.sides) {
+      for (const UseFact& u : facts.face(s)->loops.front()) {
+        if (!cap_curves.count(u.curve)) by_curve[u.curve].push_back(s);
+      }
+    }
+    for (const auto& [curve, list] : by_curve) {
+      for (int a : list) {
+        for (int b : list) {
+          if (a != b) neighbours[a].insert(b);
+        }
+      }
+    }
+  }
+  for (const CapContact& k : lattice.contacts) {
+    // A ring rising re-entrantly from a cap's outer loop walls a blind
+    // hole above a floor, or a step flush with an outer wall: undecided.
+    if (!k.convex && k.cap_loop == 0) continue;
+    const bool outer = k.convex == (k.cap_loop == 0);
+    const auto [it, added] = out.outer_face.emplace(k.face, outer);
+    if (!added && it->second != outer) {
+      out.why = "side surface " + std::to_string(k.face) + " walls the volume in at one cap and a hole at another";
+      return out;
+    }
+  }
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (int s : lattice.sides) {
+      if (out.outer_face.count(s)) continue;
+      for (int n : neighbours[s]) {
+        const auto it = out.outer_face.find(n);
+        if (it == out.outer_face.end()) continue;
+        out.outer_face[s] = it->second;
+        progress = true;
+        break;
+      }
+    }
+  }
+  for (int s : lattice.sides) {
+    if (!out.outer_face.count(s)) {
+      out.why = "side surface " + std::to_string(s) + " cannot be told an outer wall or a hole wall";
+      return out;
+    }
+  }
+  // Curve spans (linking curves) and heights (curves running along).
+  auto curve_lo_hi = [&](int curve) {
+    const CurveFact& c = facts.curves.at(curve);
+    const double a = height(lattice.vertex_class.at(c.start)), b = height(lattice.vertex_class.at(c.end));
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  std::set<int> cap_curves;
+  for (const CapContact& k : lattice.contacts) cap_curves.insert(k.curve);
+  // Slabs and their cycles.
+  for (size_t k = 0; k + 1 < out.levels.size(); ++k) {
+    Slab slab;
+    slab.top = out.levels[k];
+    slab.bottom = out.levels[k + 1];
+    std::vector<int> active;
+    for (int s : lattice.sides) {
+      const auto [lo, hi] = out.span.at(s);
+      if (hi > slab.bottom + tol && lo < slab.top - tol) active.push_back(s);
+    }
+    std::map<int, int> index;
+    for (size_t i = 0; i < active.size(); ++i) index[active[i]] = static_cast<int>(i);
+    DisjointSets ds(active.size());
+    std::map<int, std::vector<int>> by_curve;
+    for (int s : active) {
+      for (const UseFact& u : facts.face(s)->loops.front()) {
+        if (cap_curves.count(u.curve)) continue;
+        const auto [lo, hi] = curve_lo_hi(u.curve);
+        const bool joins = lattice.along.count(u.curve) ? (lo > slab.bottom + tol && lo < slab.top - tol)
+                                                        : (hi > slab.bottom + tol && lo < slab.top - tol);
+        if (joins) by_curve[u.curve].push_back(s);
+      }
+    }
+    for (const auto& [curve, list] : by_curve) {
+      for (int s : list) ds.unite(index.at(list.front()), index.at(s));
+    }
+    std::map<int, std::vector<int>> groups;
+    for (int s : active) groups[ds.find(index.at(s))].push_back(s);
+    for (auto& [root, faces] : groups) {
+      Cycle c;
+      c.faces = faces;
+      c.outer = out.outer_face.at(faces.front());
+      for (int f : faces) {
+        if (out.outer_face.at(f) != c.outer) {
+          out.why = "the sides " + std::to_string(faces.front()) + " and " + std::to_string(f) +
+                    " form one cycle but wall the volume on different sides";
+          return out;
+        }
+      }
+      slab.cycles.push_back(std::move(c));
+    }
+    std::sort(slab.cycles.begin(), slab.cycles.end(),
+              [](const Cycle& a, const Cycle& b) { return a.faces.front() < b.faces.front(); });
+    out.slabs.push_back(std::move(slab));
+  }
+  // Regions: union over (slab, cycle).
+  std::vector<size_t> offset{0};
+  for (const Slab& s : out.slabs) offset.push_back(offset.back() + s.cycles.size());
+  DisjointSets ds(offset.back());
+  auto node = [&](size_t k, size_t c) { return static_cast<int>(offset[k] + c); };
+  auto cycle_of_face = [&](size_t k, int face) -> int {
+    const auto& cycles = out.slabs[k].cycles;
+    for (size_t c = 0; c < cycles.size(); ++c) {
+      if (std::binary_search(cycles[c].faces.begin(), cycles[c].faces.end(), face)) return static_cast<int>(c);
+    }
+    return -1;
+  };
+  // (a) a cap joins the cycles it bounds on its material side.
+  for (int cap : lattice.caps) {
+    const double h = height(lattice.cap_class.at(cap));
+    const bool upper = order.upper.at(cap);
+    for (size_t k = 0; k < out.slabs.size(); ++k) {
+      const Slab& slab = out.slabs[k];
+      const bool bounds = upper ? std::abs(slab.top - h) <= tol : std::abs(slab.bottom - h) <= tol;
+      if (!bounds) continue;
+      int first = -1;
+      for (const CapContact& c : lattice.contacts) {
+        if (c.cap != cap) continue;
+        const int cy = cycle_of_face(k, c.face);
+        if (cy < 0) continue;
+        if (first < 0) first = cy;
+        ds.unite(node(k, static_cast<size_t>(first)), node(k, static_cast<size_t>(cy)));
+      }
+    }
+  }
+  // (b) a cycle passing a level unchanged keeps its region.
+  for (size_t k = 0; k + 1 < out.slabs.size(); ++k) {
+    for (size_t a = 0; a < out.slabs[k].cycles.size(); ++a) {
+      for (size_t b = 0; b < out.slabs[k + 1].cycles.size(); ++b) {
+        if (out.slabs[k].cycles[a].faces == out.slabs[k + 1].cycles[b].faces) ds.unite(node(k, a), node(k + 1, b));
+      }
+    }
+  }
+  for (size_t k = 0; k < out.slabs.size(); ++k) {
+    Slab& slab = out.slabs[k];
+    std::map<int, std::vector<int>> classes;
+    for (size_t c = 0; c < slab.cycles.size(); ++c) classes[ds.find(node(k, c))].push_back(static_cast<int>(c));
+    std::vector<std::vector<int>> with_outer, holes_only;
+    for (auto& [root, list] : classes) {
+      int outers = 0;
+      for (int c : list) outers += slab.cycles[static_cast<size_t>(c)].outer ? 1 : 0;
+      if (outers > 1) {
+        out.why = "two outer cycles of side faces (" +
+                  std::to_string(slab.cycles[static_cast<size_t>(list.front())].faces.front()) + ", ...) bound one region";
+        return out;
+      }
+      (outers ? with_outer : holes_only).push_back(list);
+    }
+    for (const auto& holes : holes_only) {
+      if (with_outer.size() != 1) {
+        out.why = "the hole walled by side surface " +
+                  std::to_string(slab.cycles[static_cast<size_t>(holes.front())].faces.front()) +
+                  " cannot be placed in one of " + std::to_string(with_outer.size()) +
+                  " regions between two cap levels";
+        return out;
+      }
+      with_outer.front().insert(with_outer.front().end(), holes.begin(), holes.end());
+    }
+    for (auto& list : with_outer) {
+      std::stable_sort(list.begin(), list.end(), [&](int a, int b) {
+        const bool oa = slab.cycles[static_cast<size_t>(a)].outer, ob = slab.cycles[static_cast<size_t>(b)].outer;
+        return oa != ob ? oa : a < b;
+      });
+      slab.regions.push_back(list);
+    }
+    std::sort(slab.regions.begin(), slab.regions.end());
+  }
+  out.ok = true;
+  return out;
+}
+
+}  // namespace cooperage::cooper

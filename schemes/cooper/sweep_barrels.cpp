@@ -1,0 +1,187 @@
+// Interior nodes and elements of every barrel (Blacker 1996, sec. 6.2-6.3):
+// its upper cap mesh (the union of its upper subcaps' meshes) is swept to
+// its lower cap mesh, whose nodes are all known from the stacks: the layers
+// in between are the two-sided least-squares blend, elements are formed
+// layer by layer from the cap faces and their ribs. The meshes of the caps
+// this scheme meshed are handed back with their surfaces' natural normals.
+#include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/smooth_cap.h"
+#include "schemes/cooper/sweep_barrel.h"
+#include "schemes/cooper/sweep_state.h"
+#include "schemes/cooper/sweep_volume.h"
+#include "framework/core/log.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+namespace cooperage::cooper::detail {
+namespace {
+
+template <size_t N>
+std::array<int, N> reversed(std::array<int, N> f) {
+  std::reverse(f.begin() + 1, f.end());
+  return f;
+}
+
+// Signed area of a face in the barrel's chart (upper end).
+template <size_t N>
+double area_2d(const SweepState& s, size_t b, const std::array<int, N>& f) {
+  double a = 0;
+  for (size_t k = 0; k < N; ++k) {
+    const Vec2 p = s.plane(b, s.pos(f[k]));
+    const Vec2 q = s.plane(b, s.pos(f[(k + 1) % N]));
+    a += p.x() * q.y() - p.y() * q.x();
+  }
+  return 0.5 * a;
+}
+
+// Node under each node of the upper piece: the faces of matched pieces
+// correspond one for one (one was projected from the other).
+template <size_t N>
+void correspond(const std::vector<std::array<int, N>>& up, const std::vector<std::array<int, N>>& lo,
+                std::map<int, int>& below, int vid) {
+  if (up.size() != lo.size()) fail(vid, "matched subcaps carry different meshes");
+  for (size_t k = 0; k < up.size(); ++k) {
+    for (size_t c = 0; c < N; ++c) {
+      const auto [it, added] = below.emplace(up[k][c], lo[k][c]);
+      if (!added && it->second != lo[k][c]) fail(vid, "a cap node has two images across its barrel");
+    }
+  }
+}
+
+}  // namespace
+
+// cite: Blacker 1996, sec. 6.2 (x_ij = x^U_ij (1 - j/J) + x^L_ij j/J) and
+// sec. 6.3 (elements from the cap stack faces and their ribs).
+void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
+  for (size_t b = 0; b < s.barrels.size(); ++b) {
+    BarrelState& st = s.barrels[b];
+    std::map<int, int> below;
+    for (const auto& [u, l] : st.rib_pairs) below[u] = l;
+    std::vector<mesh::Quad> quads;
+    std::vector<mesh::Tri> tris;
+    for (const auto& [u, l] : st.matches) {
+      const Piece& pu = s.pieces[static_cast<size_t>(u)];
+      const Piece& pl = s.pieces[static_cast<size_t>(l)];
+      correspond(pu.quads, pl.quads, below, s.vid);
+      correspond(pu.tris, pl.tris, below, s.vid);
+      quads.insert(quads.end(), pu.quads.begin(), pu.quads.end());
+      tris.insert(tris.end(), pu.tris.begin(), pu.tris.end());
+    }
+    // Cap nodes: the exterior rib starts in rib order, then the rest.
+    SweepInput in;
+    in.layers = st.layers;
+    in.boundary = static_cast<int>(st.ribs.size());
+    in.loop_starts = st.loop_starts;
+    std::vector<int> cap;
+    std::map<int, int> index;
+    for (const auto& rib : st.ribs) {
+      index.emplace(s.existing(rib.front()), static_cast<int>(cap.size()));
+      cap.push_back(s.existing(rib.front()));
+    }
+    std::set<int> rest;
+    for (const auto& q : quads) rest.insert(q.begin(), q.end());
+    for (const auto& t : tris) rest.insert(t.begin(), t.end());
+    for (int n : rest) {
+      if (index.emplace(n, static_cast<int>(cap.size())).second) cap.push_back(n);
+    }
+    auto local = [&](int n) { return index.at(n); };
+    for (const auto& q : quads) {
+      mesh::Quad l{local(q[0]), local(q[1]), local(q[2]), local(q[3])};
+      in.quads.push_back(area_2d(s, b, q) < 0 ? reversed(l) : l);
+    }
+    for (const auto& t : tris) {
+      mesh::Tri l{local(t[0]), local(t[1]), local(t[2])};
+      in.tris.push_back(area_2d(s, b, t) < 0 ? reversed(l) : l);
+    }
+    in.cap_nodes = static_cast<int>(cap.size());
+    in.has_fixed_target.assign(cap.size(), 0);
+    in.fixed_target.assign(cap.size(), Vec3::Zero());
+    for (size_t i = 0; i < cap.size(); ++i) {
+      in.source.push_back(s.pos(cap[i]));
+      if (static_cast<int>(i) < in.boundary) continue;
+      const auto it = below.find(cap[i]);
+      if (it == below.end()) fail(s.vid, s.barrel_name(b) + ": a node of its upper cap has no image on its lower cap");
+      in.has_fixed_target[i] = 1;
+      in.fixed_target[i] = s.pos(it->second);
+    }
+    for (const auto& rib : st.ribs) {
+      for (int g : rib) in.ribs.push_back(s.db.node(g));
+    }
+    if (log::threshold() <= log::Level::Debug) {
+      std::vector<Vec3> lo(in.source);
+      for (size_t i = 0; i < cap.size(); ++i) lo[i] = i < st.ribs.size() ? s.db.node(st.ribs[i].back()) : in.fixed_target[i];
+      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + s.barrel_name(b) + ": worst corner sine of its caps " +
+                 std::to_string(min_quad_corner_quality(in.source, in.quads, st.d)) + " (upper), " +
+                 std::to_string(min_quad_corner_quality(lo, in.quads, st.d)) + " (lower)");
+    }
+    const SweepResult sweep = sweep_barrel(in);
+    if (!sweep.ok) fail(s.vid, s.barrel_name(b) + ": " + sweep.why);
+    if (log::threshold() <= log::Level::Debug) {
+      char line[200];
+      std::snprintf(line, sizeof line, "%s: %d layers, %zu quads, %zu triangles per layer, min scaled Jacobian %.4f%s",
+                    s.barrel_name(b).c_str(), st.layers, in.quads.size(), in.tris.size(), sweep.min_scaled_jacobian,
+                    sweep.smoothed ? " (smoothed)" : "");
+      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + line);
+    }
+    const size_t n = cap.size();
+    const size_t B = st.ribs.size();
+    const size_t J = static_cast<size_t>(st.layers);
+    std::vector<int> node(sweep.points.size());
+    for (size_t j = 0; j <= J; ++j) {
+      for (size_t i = 0; i < n; ++i) {
+        const size_t q = j * n + i;
+        if (i < B) {
+          node[q] = s.existing(st.ribs[i][j]);
+        } else if (j == 0) {
+          node[q] = cap[i];
+        } else if (j == J) {
+          node[q] = below.at(cap[i]);
+        } else {
+          node[q] = s.out.add(sweep.points[q]);
+        }
+      }
+    }
+    for (const auto& h : sweep.hexes) {
+      mesh::Hex e;
+      for (size_t k = 0; k < 8; ++k) e[k] = node[static_cast<size_t>(h[k])];
+      s.out.hexes.push_back(e);
+    }
+    for (const auto& w : sweep.wedges) {
+      mesh::Wedge e;
+      for (size_t k = 0; k < 6; ++k) e[k] = node[static_cast<size_t>(w[k])];
+      s.out.wedges.push_back(e);
+    }
+    if (reports) {
+      BarrelReport r;
+      r.barrel = static_cast<int>(b);
+      r.layers = st.layers;
+      r.min_scaled_jacobian = sweep.min_scaled_jacobian;
+      r.smoothed = sweep.smoothed;
+      r.imprint_steps = st.steps;
+      for (const EndPiece& e : s.plan.tree.barrels[b].upper) {
+        if (e.cap) r.upper_caps.push_back(e.cap);
+      }
+      reports->push_back(std::move(r));
+    }
+  }
+  // The caps meshed here, with their natural normals.
+  for (const Piece& p : s.pieces) {
+    if (!p.alive || !p.cap || p.premeshed) continue;
+    const auto& g = *s.model.surface(p.cap).geometry;
+    auto natural = [&](auto f) {
+      Vec3 c = Vec3::Zero();
+      for (int k : f) c += s.pos(k) / static_cast<double>(f.size());
+      Vec3 nrm = Vec3::Zero();
+      for (size_t k = 0; k < f.size(); ++k) nrm += s.pos(f[k]).cross(s.pos(f[(k + 1) % f.size()]));
+      return nrm.dot(g.project(c).normal) >= 0 ? f : reversed(f);
+    };
+    for (const auto& q : p.quads) s.out.surface_quads[p.cap].push_back(natural(q));
+    for (const auto& t : p.tris) s.out.surface_tris[p.cap].push_back(natural(t));
+  }
+}
+
+}  // namespace cooperage::cooper::detail

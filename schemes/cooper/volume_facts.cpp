@@ -1,0 +1,106 @@
+#include "schemes/cooper/volume_facts.h"
+
+#include "framework/scheme/vertex_angles.h"
+#include "schemes/cooper/cap_dihedral.h"
+
+#include <algorithm>
+#include <set>
+
+namespace cooperage::cooper {
+
+const FaceFact* VolumeFacts::face(int id) const {
+  const auto it = std::lower_bound(faces.begin(), faces.end(), id,
+                                   [](const FaceFact& f, int i) { return f.id < i; });
+  return it != faces.end() && it->id == id ? &*it : nullptr;
+}
+
+std::vector<int> VolumeFacts::faces_of_curve(int curve) const {
+  std::vector<int> out;
+  for (const FaceFact& f : faces) {
+    bool uses = false;
+    for (const auto& loop : f.loops) {
+      for (const UseFact& u : loop) uses = uses || u.curve == curve;
+    }
+    if (uses) out.push_back(f.id);
+  }
+  return out;
+}
+
+double VolumeFacts::size() const {
+  if (vertices.empty()) return 1.0;
+  geom::Vec3 lo = vertices.begin()->second, hi = lo;
+  for (const auto& [id, p] : vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  for (const auto& [id, c] : curves) {
+    for (const geom::Vec3& p : c.samples) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  const double d = (hi - lo).norm();
+  return d > 0 ? d : 1.0;
+}
+
+VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry) {
+  VolumeFacts out;
+  out.volume = volume_id;
+  out.shells = static_cast<int>(model.volume(volume_id).shells.size());
+  std::vector<int> ids = model.surfaces_of(volume_id);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  const scheme::SurfaceScheme* submap = registry.surface_scheme("submap");
+  std::map<int, std::set<int>> curve_faces;
+  for (int id : ids) {
+    const geom::Surface& s = model.surface(id);
+    FaceFact f;
+    f.id = id;
+    f.planar = s.geometry->type() == geom::SurfaceType::Plane;
+    f.area = s.area;
+    for (int v : s.volumes) f.other_volumes += v != volume_id && v != 0 ? 1 : 0;
+    const auto at = s.geometry->project(0.5 * (s.box.min + s.box.max));
+    f.centre = at.point;
+    f.normal = geom::sign(model.sense_in(id, volume_id)) * at.normal.normalized();
+    for (const auto& loop : s.loops) {
+      f.loops.emplace_back();
+      for (const auto& use : loop.uses) {
+        f.loops.back().push_back({use.curve, use.sense == geom::Sense::Forward});
+        curve_faces[use.curve].insert(id);
+      }
+    }
+    if (s.loops.size() == 1) {
+      for (const auto& corner : scheme::loop_corners(model, id, 0)) f.angles.push_back(corner.angle);
+      if (submap) {
+        const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr});
+        f.submappable = a.ok;
+        f.submap_score = a.score;
+        f.submap_why = a.why;
+      } else {
+        f.submap_why = "the submap scheme is not registered";
+      }
+    } else {
+      f.submap_why = "it has " + std::to_string(s.loops.size()) + " loops; a side face needs one";
+    }
+    out.faces.push_back(std::move(f));
+  }
+  for (const auto& [curve, faces] : curve_faces) {
+    const geom::Curve& c = model.curve(curve);
+    CurveFact cf;
+    cf.id = curve;
+    cf.start = c.start_vertex;
+    cf.end = c.end_vertex;
+    cf.length = c.length;
+    const auto [t0, t1] = c.geometry->range();
+    constexpr int kSamples = 16;
+    for (int k = 0; k <= kSamples; ++k) cf.samples.push_back(c.geometry->point(t0 + (t1 - t0) * k / kSamples));
+    out.curves[curve] = std::move(cf);
+    for (int v : {c.start_vertex, c.end_vertex}) out.vertices[v] = model.vertex(v).point;
+    if (faces.size() == 2) {
+      out.dihedral[curve] = cap_dihedral_degrees(model, volume_id, *faces.begin(), *faces.rbegin(), curve);
+    }
+  }
+  return out;
+}
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,74 @@
+// What the cooper classification needs to know about one volume, gathered
+// once from the model (Blacker 1996, sec. 3: "a simple calculation based on
+// topology and angle designations"): loops, corner angles, the dihedral
+// angle at every curve between two of its faces, normals, sampled curves.
+// gather_facts() is the only classification step that reads CAD; every
+// later step (side_lattice.h, sweep_order.h, slab_regions.h,
+// barrel_tree.h, cap_roles.h) works on these plain values and is
+// unit-tested with hand-made facts.
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/scheme/registry.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace cooperage::cooper {
+
+/// A curve use in a face loop.
+struct UseFact {
+  int curve = 0;
+  bool forward = true;  ///< walked from the curve's start vertex to its end
+};
+
+struct FaceFact {
+  int id = 0;
+  std::vector<std::vector<UseFact>> loops;  ///< outer loop first
+  /// Single-loop faces: interior angle [degrees] at corner k (before use k).
+  std::vector<double> angles;
+  bool planar = false;
+  geom::Vec3 normal = geom::Vec3::Zero();  ///< unit, out of the volume, at the face's centre
+  geom::Vec3 centre = geom::Vec3::Zero();  ///< a point of the face near its box centre
+  double area = 0;
+  /// The registry's submap accepts it (single loop): it may be a side.
+  bool submappable = false;
+  double submap_score = 0;
+  std::string submap_why;
+  /// Other volumes it bounds (an interface of an assembly): its mesh is
+  /// shared, so it must come from a surface scheme, never from this sweep.
+  int other_volumes = 0;
+};
+
+struct CurveFact {
+  int id = 0;
+  int start = 0;  ///< vertex ids
+  int end = 0;
+  double length = 0;
+  /// Points along the curve, start to end (for outlines and directions).
+  std::vector<geom::Vec3> samples;
+};
+
+struct VolumeFacts {
+  int volume = 0;
+  int shells = 1;
+  std::vector<FaceFact> faces;  ///< ascending id
+  std::map<int, CurveFact> curves;
+  std::map<int, geom::Vec3> vertices;
+  /// Interior dihedral angle [degrees, (0, 360)] inside the volume at a
+  /// curve shared by two of its faces (90 at a brick edge, 270 re-entrant).
+  std::map<int, double> dihedral;
+
+  const FaceFact* face(int id) const;
+  /// Faces of the volume whose loops use the curve (ascending, once each).
+  std::vector<int> faces_of_curve(int curve) const;
+  /// Diagonal of the box of all vertices (a length scale for tolerances).
+  double size() const;
+};
+
+/// Gathers the facts of `volume_id`; the submap verdicts come from the
+/// registry's "submap" (none when it is not registered).
+VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry);
+
+}  // namespace cooperage::cooper

@@ -1,0 +1,142 @@
+// Whatever `cooperage plan` accepts, `cooperage run` meshes (issue 15,
+// deliverable 3: a refusal belongs in applicable(), never in mesh()). Over
+// every shipped example, every journal of the test data, and the must-mesh
+// parts at two element sizes: when the selector plans a model, meshing it
+// succeeds; and for every volume cooper accepts, pinning cooper on it and
+// planning again either refuses (the pin conflicts with a neighbour, said
+// at plan time) or meshes.
+#include "support/mesh_checks.h"
+
+#include "framework/core/error.h"
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/mesher.h"
+#include "must_mesh_parts.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cooperage::cooper {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Plans `model` with `settings`; when that succeeds, meshing must succeed
+// with no inverted element. Returns whether it planned.
+bool expect_parity(const geom::Model& model, const io::MeshSettings& settings, const std::string& name) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry, builtin_options(settings));
+  selector::SelectOptions options;
+  options.check_intervals = settings.size.has_value();
+  try {
+    selector::select_schemes(model, registry, settings, options);
+  } catch (const MeshingError&) {
+    return false;  // refused at plan time: nothing to prove
+  }
+  try {
+    const auto r = pipeline::mesh_model(model, settings, registry, selector::mesh_options());
+    EXPECT_GT(r.mesh.hex_count() + r.mesh.wedge_count(), 0u) << name;
+  } catch (const MeshingError& e) {
+    ADD_FAILURE() << name << ": planned, but meshing failed: " << e.what();
+  }
+  return true;
+}
+
+// The plan/mesh parity of a model, automatic and with cooper pinned on
+// each volume it accepts.
+void check_model(const geom::Model& model, const io::MeshSettings& settings, const std::string& name) {
+  const bool planned = expect_parity(model, settings, name);
+  EXPECT_TRUE(planned || !settings.size) << name << ": a shipped model does not plan";
+  scheme::Registry registry;
+  register_builtin_schemes(registry, builtin_options(settings));
+  for (const auto& v : model.volumes()) {
+    const auto a = registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, v.id, nullptr});
+    if (!a.ok) continue;
+    // Already meshed by cooper in the automatic plan: nothing new to prove.
+    if (planned && a.score > 0.3) {
+      scheme::Registry auto_registry;
+      register_builtin_schemes(auto_registry, builtin_options(settings));
+      selector::SelectOptions options;
+      options.check_intervals = settings.size.has_value();
+      const auto sel = selector::select_schemes(model, auto_registry, settings, options);
+      if (sel.plan().volumes.at(v.id).scheme == "cooper") continue;
+    }
+    io::MeshSettings pinned = settings;
+    bool found = false;
+    for (auto& setting : pinned.volumes) {
+      if (setting.id != v.id) continue;
+      setting.scheme = "cooper";
+      found = true;
+    }
+    if (!found) {
+      io::VolumeSetting setting;
+      setting.id = v.id;
+      setting.scheme = "cooper";
+      pinned.volumes.push_back(setting);
+    }
+    expect_parity(model, pinned, name + " (cooper pinned on volume " + std::to_string(v.id) + ")");
+  }
+}
+
+std::vector<fs::path> journals(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() == ".xml") out.push_back(entry.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void check_journal(const fs::path& path) {
+  SCOPED_TRACE(path.string());
+  io::Job job;
+  geom::Model model;
+  try {
+    job = io::read_journal(path.string());
+    if (!job.mesh) return;
+    model = pipeline::build_geometry(job);
+  } catch (const MeshingError&) {
+    return;  // a journal about errors (a missing import, a bad value): no model
+  }
+  check_model(model, *job.mesh, path.filename().string());
+}
+
+TEST(CooperParity, EveryShippedExamplePlansAndMeshes) {
+  const auto list = journals(fs::path(COOPERAGE_SOURCE_DIR) / "examples");
+  ASSERT_GE(list.size(), 10u);
+  for (const auto& p : list) check_journal(p);
+}
+
+TEST(CooperParity, EveryTestJournalThatPlansMeshes) {
+  size_t n = 0;
+  for (const auto& p : journals(fs::path(COOPERAGE_SOURCE_DIR) / "tests")) {
+    check_journal(p);
+    ++n;
+  }
+  EXPECT_GE(n, 6u);
+}
+
+// The must-mesh parts at two sizes: the overlaps of round and square
+// footprints land on different nodes at each (the parity of imprinted
+// pieces, sec. 5.3).
+TEST(CooperParity, MustMeshPartsAtTwoSizes) {
+  for (const auto& [name, build] : parts::all()) {
+    occ::Workbench wb;
+    build(wb);
+    const geom::Model model = wb.build_model();
+    for (double size : {0.3, 0.45}) {
+      io::MeshSettings settings;
+      settings.size = size;
+      check_model(model, settings, name + " at size " + std::to_string(size));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cooperage::cooper

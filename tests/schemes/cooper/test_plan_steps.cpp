@@ -1,0 +1,244 @@
+// The plan's steps on hand-made facts, without CAD (issue 15, deliverable
+// 8): side lattice, sweep order, slabs and regions, the barrel tree, cut
+// caps and the interval rows of a cube, a block with a boss, a block with
+// a blind pocket, the classic stepped L (Fig. 8) and appendages whose
+// footprints overlap.
+#include "polyhedron_facts.h"
+
+#include "schemes/cooper/barrel_constraints.h"
+#include "schemes/cooper/barrel_tree.h"
+#include "schemes/cooper/cap_candidates.h"
+#include "schemes/cooper/cap_roles.h"
+#include "schemes/cooper/plan_volume.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+namespace cooperage::cooper {
+namespace {
+
+using testing::oriented;
+using testing::PolyFace;
+using testing::rect_xy;
+using testing::walls;
+using geom::Vec3;
+
+const Vec3 kUp(0, 0, 1), kDown(0, 0, -1);
+
+std::vector<PolyFace> cube() {
+  std::vector<PolyFace> f = walls(0, 0, 1, 1, 0, 1);
+  f.push_back({oriented(rect_xy(0, 0, 1, 1, 0), kDown)});
+  f.push_back({oriented(rect_xy(0, 0, 1, 1, 1), kUp)});
+  return f;
+}
+
+// A 4 x 4 x 2 block with a 1 x 1 x 1 boss on top.
+std::vector<PolyFace> boss_on_block() {
+  std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 2), kUp, false)});
+  for (const PolyFace& w : walls(1.5, 1.5, 2.5, 2.5, 2, 3)) f.push_back(w);
+  f.push_back({oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 3), kUp)});
+  return f;
+}
+
+// A 4 x 4 x 2 block with a 2 x 2 pocket 1 deep from the top.
+std::vector<PolyFace> pocket() {
+  std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1, 1, 3, 3, 2), kUp, false)});
+  for (const PolyFace& w : walls(1, 1, 3, 3, 1, 2, true)) f.push_back(w);
+  f.push_back({oriented(rect_xy(1, 1, 3, 3, 1), kUp)});
+  return f;
+}
+
+// The classic stepped L: a 4 x 4 x 1 block, a 4 x 2 x 1 step on its front
+// half; the side walls touch the step top, the shoulder and the bottom.
+std::vector<PolyFace> stepped_l() {
+  std::vector<PolyFace> f;
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
+  f.push_back({oriented({{0, 0, 0}, {4, 0, 0}, {4, 0, 2}, {0, 0, 2}}, Vec3(0, -1, 0))});  // front
+  f.push_back({oriented({{0, 4, 0}, {4, 4, 0}, {4, 4, 1}, {0, 4, 1}}, Vec3(0, 1, 0))});   // back
+  for (double x : {0.0, 4.0}) {
+    f.push_back({oriented({{x, 0, 0}, {x, 4, 0}, {x, 4, 1}, {x, 2, 1}, {x, 2, 2}, {x, 0, 2}}, Vec3(x > 0 ? 1 : -1, 0, 0))});
+  }
+  f.push_back({oriented(rect_xy(0, 2, 4, 4, 1), kUp)});                                    // shoulder
+  f.push_back({oriented({{0, 2, 1}, {4, 2, 1}, {4, 2, 2}, {0, 2, 2}}, Vec3(0, 1, 0))});   // step back
+  f.push_back({oriented(rect_xy(0, 0, 4, 2, 2), kUp)});                                    // step top
+  return f;
+}
+
+// The ids of the faces facing z.
+std::set<int> z_caps(const VolumeFacts& facts) { return caps_facing(facts, kUp); }
+
+struct Steps {
+  SideLattice lattice;
+  SweepOrder order;
+  SlabRegions slabs;
+  BarrelTree tree;
+};
+
+Steps run_steps(const VolumeFacts& facts, const std::set<int>& caps, const OrderAnchor& anchor) {
+  Steps s;
+  s.lattice = side_lattice(facts, caps);
+  EXPECT_TRUE(s.lattice.ok) << s.lattice.why;
+  if (!s.lattice.ok) return s;
+  s.order = sweep_order(facts, s.lattice, anchor);
+  EXPECT_TRUE(s.order.ok) << s.order.why;
+  if (!s.order.ok) return s;
+  s.slabs = slab_regions(facts, s.lattice, s.order);
+  EXPECT_TRUE(s.slabs.ok) << s.slabs.why;
+  if (!s.slabs.ok) return s;
+  s.tree = form_barrel_tree(facts, s.lattice, s.order, s.slabs);
+  EXPECT_TRUE(s.tree.ok) << s.tree.why;
+  return s;
+}
+
+OrderAnchor down() {
+  OrderAnchor a;
+  a.down = kDown;
+  return a;
+}
+
+TEST(PlanSteps, CubeIsOneBarrelOfTwoLevels) {
+  const VolumeFacts facts = testing::polyhedron_facts(cube());
+  ASSERT_EQ(facts.faces.size(), 6u);
+  ASSERT_EQ(facts.curves.size(), 12u);
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  // The cap curves run along, the vertical edges between: two levels.
+  EXPECT_EQ(s.lattice.sides.size(), 4u);
+  EXPECT_EQ(s.lattice.along.size(), 8u);
+  std::set<int> classes;
+  for (const auto& [v, c] : s.lattice.vertex_class) classes.insert(c);
+  EXPECT_EQ(classes.size(), 2u);
+  EXPECT_EQ(s.lattice.chains.size(), 8u);  // each wall: its two vertical edges
+  for (const CapContact& k : s.lattice.contacts) EXPECT_TRUE(k.convex);
+  // Down from the top: the top is the upper cap, every chain runs down.
+  for (const auto& [cap, upper] : s.order.upper) EXPECT_EQ(upper, facts.face(cap)->normal.z() > 0) << cap;
+  EXPECT_EQ(s.slabs.slabs.size(), 1u);
+  ASSERT_EQ(s.tree.barrels.size(), 1u);
+  EXPECT_EQ(s.tree.barrels[0].sides.size(), 4u);
+  EXPECT_TRUE(s.tree.interfaces.empty());
+  // Either sign of the axis gives the mirrored order.
+  OrderAnchor up;
+  up.down = kUp;
+  const SweepOrder o = sweep_order(facts, s.lattice, up);
+  ASSERT_TRUE(o.ok) << o.why;
+  for (const auto& [cap, upper] : o.upper) EXPECT_EQ(upper, facts.face(cap)->normal.z() < 0) << cap;
+}
+
+TEST(PlanSteps, ABossEndsItsBarrelOnTheShoulder) {
+  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_EQ(s.tree.barrels.size(), 2u);
+  // The boss walls meet the shoulder re-entrantly.
+  int reentrant = 0;
+  for (const CapContact& k : s.lattice.contacts) reentrant += k.convex ? 0 : 1;
+  EXPECT_EQ(reentrant, 4);
+  // Barrel 1: the boss, down to a virtual cap; barrel 2: shoulder + that
+  // virtual cap, down to the bottom.
+  const BarrelNode& boss = s.tree.barrels[0];
+  const BarrelNode& block = s.tree.barrels[1];
+  EXPECT_EQ(boss.sides.size(), 4u);
+  ASSERT_EQ(boss.lower.size(), 1u);
+  EXPECT_EQ(boss.lower[0].cap, 0);
+  ASSERT_EQ(block.upper.size(), 2u);
+  EXPECT_NE(block.upper[0].cap, 0);  // the shoulder
+  EXPECT_GE(block.upper[1].interface, 0);
+  ASSERT_EQ(s.tree.interfaces.size(), 1u);
+  EXPECT_EQ(s.tree.interfaces[0].above, 0);
+  EXPECT_EQ(s.tree.interfaces[0].below, 1);
+  // Constraints: the block's and the boss's layers each at least one; the
+  // four boss chains equal, the four block chains equal.
+  const auto rows = barrel_constraints(facts, s.lattice, s.order, s.tree, {}, "t");
+  int at_least = 0, equal = 0;
+  for (const IntervalRow& r : rows) {
+    if (r.sense == intervals::Sense::GreaterEqual) {
+      ++at_least;
+      EXPECT_EQ(r.rhs, 1);
+    }
+    if (r.sense == intervals::Sense::Equal && !r.even) ++equal;
+  }
+  EXPECT_EQ(at_least, 2);
+  EXPECT_GE(equal, 6);  // 3 + 3 parallel chains tied to the first of each barrel
+  // Nothing projects into the boss top or the shoulder.
+  const std::set<int> z = z_caps(facts);  // one set: begin() and end() of the same object
+  std::vector<int> caps(z.begin(), z.end());
+  const auto cut = cut_caps(facts, caps, kDown, 1e-3);
+  EXPECT_EQ(cut.size(), 1u);  // the bottom: the boss's footprint lies inside it
+}
+
+TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
+  const VolumeFacts facts = testing::polyhedron_facts(pocket());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_EQ(s.tree.barrels.size(), 2u);
+  const int floor = facts.faces.back().id;
+  // Barrel 1: the top, down the outer and the pocket walls to the floor's
+  // level; barrel 2 starts from the floor and barrel 1's virtual cap.
+  EXPECT_EQ(s.tree.barrels[0].sides.size(), 8u);
+  EXPECT_EQ(s.tree.barrels[1].sides.size(), 4u);
+  const auto& upper = s.tree.barrels[1].upper;
+  EXPECT_TRUE(std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.cap == floor; }));
+  EXPECT_TRUE(std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.interface >= 0; }));
+  EXPECT_EQ(imprint_operation(s.tree.barrels[1]), "subtract");
+  // The outer walls pass the floor's level without a vertex: barrel 2 has a
+  // layer only if the walls' chains exceed the pocket walls' chains.
+  const auto rows = barrel_constraints(facts, s.lattice, s.order, s.tree, {}, "t");
+  bool difference = false;
+  for (const IntervalRow& r : rows) {
+    if (r.sense != intervals::Sense::GreaterEqual) continue;
+    int pos = 0, neg = 0;
+    for (const auto& [c, k] : r.terms) (k > 0 ? pos : neg)++;
+    difference = difference || (pos > 0 && neg > 0);
+  }
+  EXPECT_TRUE(difference);
+  // The floor faces up: an upper cap, the pocket walls meet it re-entrantly.
+  EXPECT_TRUE(s.order.upper.at(floor));
+}
+
+TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
+  const VolumeFacts facts = testing::polyhedron_facts(stepped_l());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  // The L-shaped walls span two slabs: the step's barrel ends at the
+  // shoulder's level, its virtual cap beside the shoulder (Fig. 8d).
+  ASSERT_EQ(s.slabs.slabs.size(), 2u);
+  ASSERT_EQ(s.tree.barrels.size(), 2u);
+  const BarrelNode& step = s.tree.barrels[0];
+  const BarrelNode& block = s.tree.barrels[1];
+  EXPECT_EQ(step.lower.size(), 1u);
+  EXPECT_EQ(block.upper.size(), 2u);  // the shoulder and the step's virtual cap
+  // The L walls are sides of both barrels.
+  int shared = 0;
+  for (int f : step.sides) shared += std::count(block.sides.begin(), block.sides.end(), f) ? 1 : 0;
+  EXPECT_EQ(shared, 3);  // the front and the two L walls
+}
+
+TEST(PlanSteps, AFaceThatCannotBeASideIsRefusedWithAReason) {
+  // The cube with its top declared a side and only the bottom a cap.
+  const VolumeFacts facts = testing::polyhedron_facts(cube());
+  const SideLattice l = side_lattice(facts, {facts.faces.back().id - 1});
+  EXPECT_FALSE(l.ok);
+  EXPECT_FALSE(l.why.empty());
+}
+
+TEST(PlanSteps, CandidatesOfTheBossAreAPairThenTheAxis) {
+  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  std::string why;
+  const auto pairs = pair_candidates(facts, {}, {}, why);
+  // The shoulder has two loops and cannot be a side; pairs must contain it.
+  const int shoulder = 6;
+  ASSERT_FALSE(pairs.empty()) << why;
+  for (const CapCandidate& c : pairs) EXPECT_TRUE(c.caps.count(shoulder)) << c.label;
+  const auto axes = candidate_axes(facts, std::nullopt);
+  ASSERT_FALSE(axes.empty());
+  EXPECT_NEAR(std::abs(axes.front().z()), 1.0, 1e-12);  // the face with a hole first
+  // A hinted axis is the only one.
+  const auto hinted = candidate_axes(facts, Vec3(1, 0, 0));
+  ASSERT_EQ(hinted.size(), 1u);
+  EXPECT_NEAR(hinted.front().x(), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
