@@ -6,6 +6,7 @@
 #include "progress.h"
 #include "quality_command.h"
 #include "run_report.h"
+#include "schemes_command.h"
 
 #include "framework/core/error.h"
 #include "framework/core/log.h"
@@ -24,6 +25,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -53,6 +55,9 @@ struct RunLimits {
   double max_elements = 0;      ///< 0: the journal's or the default
   double volume_tolerance = 0;  ///< percent; 0: the journal's or the default
   bool allow_partial = false;
+  /// --plugin libraries; they load after COOPERAGE_PLUGIN_PATH's and before
+  /// the journal's.
+  std::vector<std::string> plugins;
 };
 
 /// An error in at most three lines (issue 16 item 5): the entity and the
@@ -86,7 +91,8 @@ void print_error(const MeshingError& e) {
 
 int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   scheme::Registry registry;
-  register_builtin_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{});
+  register_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{},
+                   run_plugins(limits.plugins, job.plugins));
   app::Progress progress(!limits.quiet);
   pipeline::MeshOptions options;
   options.planner = selector::planner();
@@ -134,6 +140,26 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   return finish_run(pipeline::model_job(model, options), dim, limits);
 }
 
+// `cooperage schemes`: the registry of a run without a journal.
+int run_schemes(const std::vector<std::string>& plugins, bool json) {
+  scheme::Registry registry;
+  register_schemes(registry, {}, run_plugins(plugins, {}));
+  if (json) {
+    app::write_schemes_json(registry, std::cout);
+  } else {
+    app::write_schemes_text(registry, std::cout);
+  }
+  return 0;
+}
+
+// info and quality use no scheme; a --plugin given to them is still loaded,
+// so a broken one is reported the same way everywhere.
+void check_plugins(const std::vector<std::string>& plugins) {
+  if (plugins.empty()) return;
+  scheme::Registry registry;
+  register_schemes(registry, {}, run_plugins(plugins, {}), false);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -143,6 +169,13 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "cooperage 0.1.0");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "Print diagnostics on stderr");
+  std::vector<std::string> plugins;
+  app.add_option("--plugin", plugins,
+                 "Load a plug-in library of schemes (repeatable; before or after the "
+                 "subcommand; COOPERAGE_PLUGIN_PATH lists more)")
+      ->allow_extra_args(false);
+  // --plugin and -v may follow the subcommand too.
+  app.fallthrough();
 
   std::string info_file;
   bool info_json = false;
@@ -213,6 +246,12 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
 
+  bool schemes_json = false;
+  CLI::App* schemes = app.add_subcommand(
+      "schemes", "List every registered scheme: name, dimension, origin (built in or which "
+                 "plug-in library), the roles it serves");
+  schemes->add_flag("--json", schemes_json, "Print one JSON array instead of text");
+
   std::string quality_file;
   bool quality_json = false;
   CLI::App* quality = app.add_subcommand(
@@ -234,13 +273,21 @@ int main(int argc, char** argv) {
     std::cerr << (level >= log::Level::Warning ? "cooperage: " : "") << line << '\n';
   });
 
+  limits.plugins = plugins;
   try {
-    if (*info) return run_info(info_file, info_json, info_no_imprint);
+    if (*schemes) return run_schemes(limits.plugins, schemes_json);
+    if (*info) {
+      check_plugins(limits.plugins);
+      return run_info(info_file, info_json, info_no_imprint);
+    }
     if (*run) return run_journal(run_file, report_file, limits);
-    if (*quality) return app::run_quality(quality_file, quality_json, std::cout, report_file);
+    if (*quality) {
+      check_plugins(limits.plugins);
+      return app::run_quality(quality_file, quality_json, std::cout, report_file);
+    }
     if (*plan) {
       return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
-                           plan_json, std::cout);
+                           plan_json, plugins, std::cout);
     }
     if (*mesh) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge

@@ -211,17 +211,19 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
 
 }  // namespace
 
-int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out) {
+int run_plan(const std::string& file, std::optional<double> size, bool json,
+             const std::vector<std::string>& plugins, std::ostream& out) {
   // Decomposition only happens for jobs without per-entity settings, for
-  // which the default scheme options are the job's own.
+  // which the default scheme options are the job's own; the command line's
+  // plug-ins take part in it (a journal's are known only once it is read).
   scheme::Registry defaults;
-  register_builtin_schemes(defaults);
+  register_schemes(defaults, BuiltinOptions{}, run_plugins(plugins, {}));
   const pipeline::PlanInput input =
       pipeline::plan_input(file, size, &defaults, selector::planner());
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_schemes(registry, builtin_options(settings), run_plugins(plugins, input.plugins));
   selector::SelectOptions options;
   options.check_intervals = settings.size.has_value();
   const selector::Selection sel = selector::select_schemes(model, registry, settings, options);

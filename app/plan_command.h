@@ -8,12 +8,15 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace cooperage::app {
 
 /// Plans the model of FILE (a journal, or a CAD file with automatic schemes).
 /// `size` overrides the journal's global size; without any size the interval
-/// feasibility check is skipped (and said so). Returns the exit code.
-int run_plan(const std::string& file, std::optional<double> size, bool json, std::ostream& out);
+/// feasibility check is skipped (and said so). `plugins` (--plugin) are
+/// loaded before the journal's. Returns the exit code.
+int run_plan(const std::string& file, std::optional<double> size, bool json,
+             const std::vector<std::string>& plugins, std::ostream& out);
 
 }  // namespace cooperage::app

@@ -2,6 +2,7 @@
 
 #include "framework/mesh/improve_split_nodes.h"
 #include "framework/mesh2d/triangulate.h"
+#include "framework/scheme/plugin_loader.h"
 
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
@@ -92,6 +93,26 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
     if (v.elements == io::ElementKind::Mixed) cooper_options.elements[v.id] = cooper::Elements::Mixed;
   }
   registry.add(cooper::make_cooper(registry, std::move(cooper_options)));
+}
+
+std::vector<io::PluginSetting> run_plugins(const std::vector<std::string>& command_line,
+                                           const std::vector<io::PluginSetting>& journal) {
+  std::vector<io::PluginSetting> out;
+  for (const std::string& file : command_line) out.push_back({file, file, {"", 0, "--plugin"}});
+  out.insert(out.end(), journal.begin(), journal.end());
+  return out;
+}
+
+void register_schemes(scheme::Registry& registry, const BuiltinOptions& options,
+                      const std::vector<io::PluginSetting>& plugins, bool plugin_path) {
+  register_builtin_schemes(registry, options);
+  if (plugin_path) scheme::load_plugin_path(registry);
+  for (const io::PluginSetting& p : plugins) {
+    const std::string where = p.where.line > 0
+                                  ? p.where.file + ":" + std::to_string(p.where.line)
+                                  : p.where.element;
+    scheme::load_plugin(registry, p.path, where);
+  }
 }
 
 }  // namespace cooperage

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "framework/intervals/solve.h"
+#include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/interval_setup.h"
 
 #include <algorithm>
@@ -338,6 +339,7 @@ pipeline::SchemePlan Selection::plan() const {
 
 Selection select_schemes(const geom::Model& model, const scheme::Registry& registry,
                          const io::MeshSettings& settings, const SelectOptions& options) {
+  pipeline::check_scheme_names(settings, registry);  // a typo lists the registered names
   return Selector(model, registry, settings, options).run();
 }
 

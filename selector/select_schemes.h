@@ -30,7 +30,8 @@ struct SelectOptions {
 /// automatic surface choice with the lowest score among the surfaces whose
 /// curves are in conflict moves to its next candidate, and the problem is
 /// solved again (bounded, deterministic).
-/// Throws MeshingError: NotApplicable naming the entity and every scheme's
+/// Throws MeshingError: InvalidInput for a pin naming no registered scheme
+/// (pipeline::check_scheme_names); NotApplicable naming the entity and every scheme's
 /// reason; InvalidInput for contradictory pins (naming both); Infeasible
 /// when no automatic choice can be relaxed.
 Selection select_schemes(const geom::Model& model, const scheme::Registry& registry,

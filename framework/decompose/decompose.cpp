@@ -66,7 +66,7 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
                          "scheme's reason)");
     }
     DecomposeOptions budget = options;
-    budget.max_cuts = std::max(8, std::min(options.max_cuts, kSearchFaceCuts / std::max(faces, 1)));
+    budget.max_cuts = std::min(options.max_cuts, std::max(8, kSearchFaceCuts / std::max(faces, 1)));
     CutSearch search(registry, check, budget);
     auto plan = search.solve(solids.only(v - 1));
     d.tried = search.tried();

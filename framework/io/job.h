@@ -97,14 +97,17 @@ enum class ElementKind { Hex, Wedge, Mixed };
 struct SurfaceSetting {
   int id = 0;
   SizeSetting sizing;
-  std::string scheme = "auto";   ///< "auto", "map", "submap", "pave", "tri"
+  /// "auto" or a registered surface scheme's name ("map", "submap", "pave",
+  /// "tri", "quad_dominant", a plug-in's); checked against the registry
+  /// when the run starts (pipeline/check_settings.h).
+  std::string scheme = "auto";
   SourceLocation where;
 };
 
 struct VolumeSetting {
   int id = 0;
   SizeSetting sizing;
-  std::string scheme = "auto";   ///< "auto", "map", "cooper"
+  std::string scheme = "auto";   ///< "auto" or a registered volume scheme ("map", "cooper", ...)
   ElementKind elements = ElementKind::Hex;
   std::vector<int> sources;      ///< sweep source surface hints
   std::vector<int> targets;      ///< sweep target surface hints
@@ -165,10 +168,18 @@ struct ReportSetting {
   SourceLocation where;
 };
 
+/// A plug-in library of schemes to load before meshing (framework/scheme/plugin.h).
+struct PluginSetting {
+  std::string file;  ///< as written
+  std::string path;  ///< `file` resolved against the journal's directory
+  SourceLocation where;
+};
+
 /// A whole journal.
 struct Job {
   std::string file;                      ///< the journal path ("" when built in code)
   std::string base_dir;                  ///< relative paths inside are resolved against it
+  std::vector<PluginSetting> plugins;    ///< loaded after the built-in schemes, in order
   std::vector<GeometryStep> geometry;
   bool imprint_merge = true;             ///< fragment touching solids into a conformal model
   std::optional<MeshSettings> mesh;

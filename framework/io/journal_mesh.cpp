@@ -2,6 +2,8 @@
 #include "framework/io/journal_xml.h"
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <map>
 #include <string>
 #include <utility>
@@ -26,6 +28,20 @@ class FirstLine {
  private:
   std::map<Key, int> lines_;
 };
+
+// A scheme pin: "auto" or a name, checked against the registry (built-in
+// and plug-in schemes) when the run starts, not here.
+std::optional<std::string> scheme_name(const Element& e) {
+  const auto name = e.text("scheme");
+  if (!name) return std::nullopt;
+  const bool valid = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+  if (!valid)
+    e.fail_at("scheme", "attribute \"scheme\" must be \"auto\" or a scheme name (letters, digits, "
+                        "'_', '-', '.'), got \"" + *name + "\"");
+  return name;
+}
 
 SizeSetting read_sizing(const Element& e, bool with_intervals) {
   SizeSetting s;
@@ -77,9 +93,7 @@ SurfaceSetting read_surface(const Element& e) {
   SurfaceSetting s;
   s.id = e.required_integer("id", 1);
   s.sizing = read_sizing(e, false);
-  static const char* const kSchemes[] = {"auto", "map", "submap", "pave", "tri", "quad_dominant"};
-  if (auto i = e.choice("scheme", {"auto", "map", "submap", "pave", "tri", "quad_dominant"}))
-    s.scheme = kSchemes[*i];
+  if (auto name = scheme_name(e)) s.scheme = *name;
   if (!s.sizing.size && !e.has("scheme")) e.fail("sets nothing; give size or scheme");
   s.where = e.where();
   return s;
@@ -91,8 +105,7 @@ VolumeSetting read_volume(const Element& e) {
   VolumeSetting v;
   v.id = e.required_integer("id", 1);
   v.sizing = read_sizing(e, false);
-  static const char* const kSchemes[] = {"auto", "map", "cooper"};
-  if (auto i = e.choice("scheme", {"auto", "map", "cooper"})) v.scheme = kSchemes[*i];
+  if (auto name = scheme_name(e)) v.scheme = *name;
   v.elements = static_cast<ElementKind>(e.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
   if (e.has("sources")) v.sources = e.ids("sources");
   if (e.has("targets")) v.targets = e.ids("targets");

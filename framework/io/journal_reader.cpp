@@ -1,5 +1,5 @@
 // The journal reader: the document, the <cooperage> root and its sections in
-// order (<geometry>, <mesh>?, <quality>*, <export>*, <report>*). The sections live in
+// order (<plugin>*, <geometry>, <mesh>?, <quality>*, <export>*, <report>*). The sections live in
 // journal_geometry.cpp and journal_mesh.cpp; attribute parsing in journal_xml.cpp.
 #include "framework/io/journal_reader.h"
 
@@ -22,7 +22,10 @@ namespace {
 
 using detail::Element;
 
-const std::vector<std::string> kRootElements = {"geometry", "mesh", "quality", "export", "report"};
+const std::vector<std::string> kRootElements = {"plugin", "geometry", "mesh", "quality", "export",
+                                                "report"};
+const char* const kRootOrder =
+    "<plugin>*, <geometry>, <mesh>?, <quality>*, <export>*, <report>*";
 const std::vector<std::string> kMetrics = {"scaled_jacobian", "jacobian",         "skew",
                                            "taper",           "aspect_frobenius", "edge_ratio",
                                            "shape"};
@@ -78,6 +81,18 @@ ReportSetting read_report(const Element& e) {
   return r;
 }
 
+// The library's path relative to the journal's directory; its existence is
+// checked when it is loaded (framework/scheme/plugin_loader.h).
+PluginSetting read_plugin(const Element& e, const std::string& base_dir) {
+  e.allow_attributes({"file"});
+  e.expect_empty();
+  PluginSetting p{e.required("file"), {}, e.where()};
+  const std::filesystem::path f(p.file);
+  p.path = f.is_absolute() || base_dir.empty() ? p.file
+                                                : (std::filesystem::path(base_dir) / f).lexically_normal().string();
+  return p;
+}
+
 void read_root(const Element& root, Job& job) {
   if (std::string(root.name()) != "cooperage")
     root.fail("the root element must be <cooperage version=\"1\">");
@@ -94,17 +109,24 @@ void read_root(const Element& root, Job& job) {
     const auto rank = std::find(kRootElements.begin(), kRootElements.end(), tag);
     if (rank == kRootElements.end())
       e.fail("unknown element in <cooperage>" + detail::suggestion(tag, kRootElements, "<", ">") +
-             "; allowed, in this order: <geometry>, <mesh>?, <quality>*, <export>*, <report>*");
+             "; allowed, in this order: " + kRootOrder);
     if ((tag == "geometry" || tag == "mesh") && seen.count(tag))
       e.fail("appears twice; the first is at line " + std::to_string(seen[tag]));
     if (!last.empty() && rank < std::find(kRootElements.begin(), kRootElements.end(), last))
       e.fail("must come before <" + last + "> (line " + std::to_string(seen[last]) +
-             "); the order is <geometry>, <mesh>?, <quality>*, <export>*, <report>*");
-    if (tag != "geometry" && !seen.count("geometry"))
-      e.fail("comes before <geometry>; a journal starts with <geometry>");
+             "); the order is " + kRootOrder);
+    if (tag != "geometry" && tag != "plugin" && !seen.count("geometry"))
+      e.fail("comes before <geometry>; a journal starts with <geometry> (after any <plugin>)");
     seen.emplace(tag, e.line());
     last = tag;
-    if (tag == "geometry") {
+    if (tag == "plugin") {
+      PluginSetting p = read_plugin(e, job.base_dir);
+      for (const auto& other : job.plugins)
+        if (other.path == p.path)
+          e.fail("plug-in \"" + p.file + "\" is already loaded at line " +
+                 std::to_string(other.where.line));
+      job.plugins.push_back(std::move(p));
+    } else if (tag == "geometry") {
       detail::read_geometry(e, job);
     } else if (tag == "mesh") {
       job.mesh = detail::read_mesh(e);

@@ -1,6 +1,7 @@
 #include "framework/pipeline/check_settings.h"
 
 #include "framework/core/error.h"
+#include "framework/io/journal_xml.h"
 
 namespace cooperage::pipeline {
 namespace {
@@ -47,6 +48,26 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
     check_id(p.where, "surface", p.surface, model.surfaces().size());
     check_id(p.where, "vertex", p.vertex, model.vertices().size());
   }
+}
+
+namespace {
+
+void check_scheme_name(const io::SourceLocation& where, int dim, const std::string& name,
+                       const scheme::Registry& registry) {
+  if (name == "auto" || !registry.origin(dim, name).empty()) return;
+  const std::vector<std::string> names = registry.names(dim);
+  const char* kind = dim == 3 ? "volume" : "surface";
+  throw MeshingError(ErrorCode::InvalidInput,
+                     at(where) + "no " + kind + " scheme \"" + name + "\" is registered" +
+                         io::detail::suggestion(name, names, "\"", "\"") + "; registered: " +
+                         io::detail::list(names) + " (plug-ins add more: --plugin, <plugin>)");
+}
+
+}  // namespace
+
+void check_scheme_names(const io::MeshSettings& settings, const scheme::Registry& registry) {
+  for (const auto& s : settings.surfaces) check_scheme_name(s.where, 2, s.scheme, registry);
+  for (const auto& v : settings.volumes) check_scheme_name(v.where, 3, v.scheme, registry);
 }
 
 }  // namespace cooperage::pipeline

@@ -5,11 +5,18 @@
 
 #include "framework/geometry/model.h"
 #include "framework/io/job.h"
+#include "framework/scheme/registry.h"
 
 namespace cooperage::pipeline {
 
 /// Throws MeshingError naming the journal line: InvalidInput for an id the
 /// model does not have, or for elements="wedge" / "mixed" with scheme="map".
 void check_settings(const geom::Model& model, const io::MeshSettings& settings);
+
+/// Every scheme pin (surface and volume scheme="...") names a scheme of its
+/// dimension in the registry (built in or from a plug-in). Throws
+/// MeshingError(InvalidInput) naming the journal line, the closest
+/// registered name if one is close, and every registered name.
+void check_scheme_names(const io::MeshSettings& settings, const scheme::Registry& registry);
 
 }  // namespace cooperage::pipeline

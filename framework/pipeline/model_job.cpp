@@ -65,6 +65,7 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
   if (ext == ".xml") {
     io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;
+    in.plugins = job.plugins;
     if (registry) {
       if (size) in.settings.size = size;
       job.mesh = in.settings;

@@ -49,6 +49,7 @@ struct PlanInput {
   geom::Model model;
   io::MeshSettings settings;
   decompose::Report decomposition;  ///< the cuts made (none without a registry)
+  std::vector<io::PluginSetting> plugins;  ///< a journal's <plugin> elements
 };
 
 /// Reads `file`, builds its model, applies `size` (overriding the

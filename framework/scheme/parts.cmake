@@ -1,3 +1,6 @@
 cooperage_framework_part(scheme SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/role.cpp
   ${CMAKE_CURRENT_LIST_DIR}/registry.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/vertex_angles.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/plugin_loader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vertex_angles.cpp
+  PRIVATE_DEPS ${CMAKE_DL_LIBS})

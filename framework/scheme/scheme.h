@@ -7,6 +7,7 @@
 #include "framework/intervals/interval_problem.h"
 #include "framework/mesh/mesh_db.h"
 #include "framework/scheme/applicability.h"
+#include "framework/scheme/role.h"
 
 #include <map>
 #include <string>
@@ -88,6 +89,8 @@ class SurfaceScheme {
  public:
   virtual ~SurfaceScheme() = default;
   virtual std::string_view name() const = 0;
+  /// The roles a volume scheme may give it (flags); None: free surfaces only.
+  virtual Role serves() const { return Role::None; }
   /// A priori: can this scheme mesh the surface? Never meshes.
   virtual Applicability applicable(const SurfaceView& view) const = 0;
   /// Adds the constraints this scheme needs on the surface's curve intervals.

@@ -12,8 +12,11 @@
 
 namespace cooperage::cooper {
 
-/// Hex mode: the best-scoring of map, submap, pave (ties in that order);
-/// wedge mode "tri"; mixed mode map / submap where they reach
+/// Asks the registry for the schemes serving the cap role of the element
+/// kind (scheme::Role), so plug-in schemes compete: hex mode the best-scoring
+/// quad-cap scheme (map, submap, pave; ties in registration order); wedge
+/// mode the best tri-cap scheme ("tri"); mixed mode the best mixed-cap one,
+/// an all-quad scheme (map, submap) only where it reaches
 /// kMixedMinQuadQuality, else "quad_dominant". "" with `why` when none applies.
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why, Elements elements = Elements::Hex);

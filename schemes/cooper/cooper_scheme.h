@@ -46,8 +46,8 @@ struct CooperOptions {
 
 class CooperScheme final : public scheme::VolumeScheme {
  public:
-  /// Keeps `registry` (it must outlive the scheme) to ask "submap", "map"
-  /// and "pave" for their applicable() on sides and caps.
+  /// Keeps `registry` (it must outlive the scheme) to ask the schemes that
+  /// serve sweep sides and caps (scheme::Role) for their applicable().
   explicit CooperScheme(const scheme::Registry& registry, CooperOptions options = {})
       : registry_(&registry), options_(std::move(options)) {}
 

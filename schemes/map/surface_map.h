@@ -12,6 +12,10 @@ namespace cooperage::map {
 class SurfaceMap final : public scheme::SurfaceScheme {
  public:
   std::string_view name() const override { return "map"; }
+  /// One grid: the volume map's faces, and caps of any sweep.
+  scheme::Role serves() const override {
+    return scheme::Role::MappedFace | scheme::Role::QuadCap | scheme::Role::MixedCap;
+  }
   /// One loop, 4 END and otherwise SIDE junctions; see analyse_map_surface().
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   /// Opposite logical sides get equal interval sums.

@@ -27,6 +27,7 @@ class PaveScheme : public scheme::SurfaceScheme {
  public:
   explicit PaveScheme(PaveOptions options = {}) : options_(std::move(options)) {}
   std::string_view name() const override { return "pave"; }
+  scheme::Role serves() const override { return scheme::Role::QuadCap; }
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   void constrain(const scheme::SurfaceView& view, intervals::IntervalProblem& problem) const override;
   scheme::EntityMesh mesh(const scheme::SurfaceView& view, const scheme::MeshParams& params) const override;

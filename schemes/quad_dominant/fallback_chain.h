@@ -35,6 +35,8 @@ class FallbackChain final : public scheme::SurfaceScheme {
                 std::unique_ptr<scheme::SurfaceScheme> quads,
                 std::unique_ptr<scheme::SurfaceScheme> triangles, double min_quality = 0.2);
   std::string_view name() const override { return primary_->name(); }
+  /// The primary's roles: the chain stands for it in the registry.
+  scheme::Role serves() const override { return primary_->serves(); }
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override {
     return primary_->applicable(view);
   }

@@ -23,6 +23,7 @@ class QuadDominantScheme final : public scheme::SurfaceScheme {
   QuadDominantScheme(std::unique_ptr<scheme::SurfaceScheme> quads, double min_quality)
       : quads_(std::move(quads)), min_quality_(min_quality) {}
   std::string_view name() const override { return "quad_dominant"; }
+  scheme::Role serves() const override { return scheme::Role::MixedCap; }
   /// Where the quad scheme applies, at a low score (0.1): chosen only when
   /// pinned or imposed by a mixed sweep, never by the selector over quads.
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;

@@ -29,6 +29,10 @@ class SurfaceSubmap final : public scheme::SurfaceScheme {
       : pins_(std::move(pins)), options_(options) {}
 
   std::string_view name() const override { return "submap"; }
+  /// Structured: cooper's sides, and caps of any sweep.
+  scheme::Role serves() const override {
+    return scheme::Role::SweepSide | scheme::Role::QuadCap | scheme::Role::MixedCap;
+  }
   /// From angles and topology alone (plan_submap()); says why a face is rejected.
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   /// Per loop and axis: + sums = - sums; per hole: it fits inside the outer loop.

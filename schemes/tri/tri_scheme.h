@@ -20,6 +20,7 @@ class TriScheme final : public scheme::SurfaceScheme {
  public:
   explicit TriScheme(mesh2d::RefineOptions options = {}) : options_(options) {}
   std::string_view name() const override { return "tri"; }
+  scheme::Role serves() const override { return scheme::Role::TriCap; }
   /// Any face with at least one loop (a closed face such as a full sphere
   /// has no boundary to triangulate). Low score: triangles, not quads.
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;

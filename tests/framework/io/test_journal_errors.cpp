@@ -257,8 +257,12 @@ TEST(JournalErrors, MeshQualityAndExportSemantics) {
                {"<curve>", "\"ratio\"", "\"first_size\""});
   expect_error(mesh("<curve id=\"1\"/>"), ErrorCode::InvalidInput, {"<curve>", "sets nothing"});
   expect_error(mesh("<curve id=\"0\" size=\"1\"/>"), ErrorCode::InvalidInput, {"<curve>", "\"id\""});
-  expect_error(mesh("<surface id=\"1\" scheme=\"cooper\"/>"), ErrorCode::InvalidInput,
-               {"<surface>", "\"scheme\"", "\"submap\"", "\"cooper\""});
+  // Scheme names are checked against the registry when the run starts
+  // (pipeline/check_settings_test.cpp); the reader checks their spelling.
+  expect_error(mesh("<surface id=\"1\" scheme=\"sub map\"/>"), ErrorCode::InvalidInput,
+               {"<surface>", "\"scheme\"", "a scheme name", "\"sub map\""});
+  expect_error(mesh("<volume id=\"1\" scheme=\"\"/>"), ErrorCode::InvalidInput,
+               {"<volume>", "\"scheme\""});
   expect_error(mesh("<volume id=\"1\" scheme=\"map\" sources=\"1\"/>"), ErrorCode::InvalidInput,
                {"<volume>", "\"sources\""});
   expect_error(mesh("<volume id=\"1\" sources=\"1 2\" targets=\"2\"/>"), ErrorCode::InvalidInput,

@@ -1,0 +1,54 @@
+#include "cooperage/cooperage.h"
+
+#include "framework/io/journal_reader.h"
+#include "framework/pipeline/model_job.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+namespace cooperage {
+namespace {
+
+Result run_one(const io::Job& job, int dim, const Options& options) {
+  scheme::Registry registry;
+  register_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{},
+                   run_plugins(options.plugins, job.plugins));
+  pipeline::RunResult run =
+      pipeline::run_job(job, registry, selector::mesh_options(dim, options.threads));
+  Result r;
+  r.model = std::move(run.model);
+  r.mesh = std::move(run.mesh.mesh);
+  r.quality = std::move(run.quality);
+  r.plan = std::move(run.mesh.plan);
+  r.warnings = std::move(run.mesh.warnings);
+  r.written = std::move(run.written);
+  r.stages = std::move(run.stages);
+  return r;
+}
+
+}  // namespace
+
+Result mesh_file(const std::string& path, double size, const Options& options) {
+  if (options.dim != 2 && options.dim != 3) {
+    throw MeshingError(ErrorCode::InvalidInput, "cooperage::mesh_file(): dim must be 2 or 3, got " +
+                                                    std::to_string(options.dim));
+  }
+  pipeline::ModelJobOptions job;
+  job.size = size;
+  job.imprint_merge = options.imprint_merge;
+  job.elements = options.elements;
+  job.exports = options.exports;
+  job.origin = "cooperage::mesh_file()";
+  job.elements_option = "Options::elements";
+  job.export_option = "Options::exports";
+  return run_one(pipeline::model_job(path, job), options.dim, options);
+}
+
+Result run_journal(const std::string& journal, const Options& options) {
+  io::Job job = io::read_journal(journal);
+  for (const std::string& e : options.exports) {
+    job.exports.push_back({e, {"cooperage::run_journal()", 0, "Options::exports"}});
+  }
+  return run_one(job, 3, options);
+}
+
+}  // namespace cooperage

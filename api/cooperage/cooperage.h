@@ -1,0 +1,65 @@
+// The one-call C++ API, installed as <cooperage/cooperage.h>:
+//
+//   #include <cooperage/cooperage.h>
+//   const cooperage::Result r = cooperage::mesh_file("part.step", 2.0);
+//   r.mesh.hex_count();  r.quality.blocks[0].find("scaled_jacobian")->min;
+//
+// mesh_file() does what `cooperage mesh` does (import, imprint and merge,
+// the selector's automatic schemes, interval assignment, meshing, quality)
+// and run_journal() what `cooperage run` does. (Not `cooperage::mesh()`:
+// that name is the namespace of the mesh types, cooperage::mesh::MeshDB.)
+// Everything underneath is installed too (framework/, schemes/, selector/
+// under the same prefix) for programs that drive the stages themselves
+// (framework/pipeline/mesher.h).
+#pragma once
+
+#include "framework/geometry/model.h"
+#include "framework/io/job.h"
+#include "framework/mesh/mesh_db.h"
+#include "framework/pipeline/mesher.h"
+#include "framework/pipeline/quality_report.h"
+#include "framework/pipeline/scheme_plan.h"
+
+#include <string>
+#include <vector>
+
+namespace cooperage {
+
+/// How mesh_file() and run_journal() mesh.
+struct Options {
+  int dim = 3;        ///< 3: volume mesh; 2: surface mesh only (mesh_file() only)
+  io::ElementKind elements = io::ElementKind::Hex;  ///< every volume's (mesh_file() only)
+  int threads = 0;    ///< 0: all cores; the mesh does not depend on it
+  bool imprint_merge = true;  ///< touching solids share nodes (mesh_file() only)
+  /// Mesh files to write (.exo .msh .vtu .inp), each atomically; none are
+  /// written when meshing fails. run_journal() adds them to the journal's.
+  std::vector<std::string> exports;
+  /// Plug-in libraries of schemes to load (framework/scheme/plugin.h), after
+  /// those of COOPERAGE_PLUGIN_PATH and before a journal's <plugin>s.
+  std::vector<std::string> plugins;
+};
+
+/// A meshed model and its quality report.
+struct Result {
+  geom::Model model;                        ///< the CAD model as meshed (ids as `cooperage info`)
+  mesh::MeshDB mesh;                        ///< nodes, per-entity elements
+  pipeline::QualityReport quality;          ///< per block: scaled Jacobian, checked metrics
+  pipeline::SchemePlan plan;                ///< the scheme of every volume and surface, and why
+  std::vector<pipeline::Warning> warnings;  ///< what schemes gave up, per entity
+  std::vector<std::string> written;         ///< files written
+  std::vector<pipeline::StageTime> stages;  ///< wall-clock time per stage
+};
+
+/// Meshes a CAD file (.step .stp .iges .igs .brep) at element size `size`
+/// (model units) with automatic schemes.
+/// @throws MeshingError naming the file or entity and the reason (bad file,
+///         size not positive, no applicable scheme, a failed scheme).
+Result mesh_file(const std::string& path, double size, const Options& options = {});
+
+/// Runs a journal (.xml; docs/journal.md): geometry, meshing, quality checks
+/// and exports. A failed check with action="fail" shows in
+/// Result::quality.failed() and stops the exports; it does not throw.
+/// @throws MeshingError as mesh_file() does, and naming the journal line.
+Result run_journal(const std::string& journal, const Options& options = {});
+
+}  // namespace cooperage
