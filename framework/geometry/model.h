@@ -1,5 +1,5 @@
 // B-rep model: topology with stable 1-based ids and evaluators, independent
-// of the CAD kernel that produced it (DESIGN.md, "Core types").
+// of the CAD kernel that produced it (docs/design.md; the seed brief, "Core types").
 #pragma once
 
 #include "framework/geometry/evaluators.h"

@@ -1,4 +1,4 @@
-// MeshDB: the mesh of a whole model, as plain arrays (DESIGN.md "Core types").
+// MeshDB: the mesh of a whole model, as plain arrays (docs/design.md; the seed brief "Core types").
 // A node on a shared vertex, curve or surface exists once; surface elements
 // are oriented with their surface's natural normal (outward for the
 // surface's first volume); volume elements use Exodus/VTK node order:

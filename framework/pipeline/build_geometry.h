@@ -1,5 +1,5 @@
 // Executes a journal's geometry operations on the CAD backend and returns the
-// model (first stage of the data flow in DESIGN.md).
+// model (first stage of the data flow in docs/design.md).
 #pragma once
 
 #include "framework/geometry/model.h"

@@ -1,4 +1,4 @@
-// From sizes and the scheme plan to the global interval problem (DESIGN.md
+// From sizes and the scheme plan to the global interval problem (docs/design.md
 // "Interval assignment"): one goal per curve, every planned scheme's
 // constraints.
 #pragma once

@@ -1,4 +1,4 @@
-// The meshing pipeline (DESIGN.md "Data flow"): plan schemes -> assign
+// The meshing pipeline (docs/design.md; the seed brief "Data flow"): plan schemes -> assign
 // intervals -> mesh curves -> surfaces -> volumes -> quality -> exports.
 // Every stage is a function of the previous stage's value.
 #pragma once

@@ -1,4 +1,4 @@
-// A 2D polygon quad mesher as an interface (DESIGN.md: schemes never include
+// A 2D polygon quad mesher as an interface (docs/design.md: schemes never include
 // each other). Cooper meshes its virtual and imprinted subcaps -- pieces of
 // caps that are not model surfaces, so no SurfaceView exists for them -- in
 // a plane through this interface (Blacker 1996, sec. 6.1: "each stack can

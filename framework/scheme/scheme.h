@@ -1,4 +1,4 @@
-// The scheme interfaces (DESIGN.md "Core types"): every surface and volume
+// The scheme interfaces (docs/design.md; the seed brief "Core types"): every surface and volume
 // scheme answers applicable() a priori (from topology and angles, never by
 // meshing), states its interval constraints, and meshes.
 #pragma once

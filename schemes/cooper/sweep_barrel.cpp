@@ -1,5 +1,5 @@
 // The one-barrel sweep with its safety net (Blacker 1996, sec. 6.2-6.3;
-// DESIGN.md "Inverted elements are never silent").
+// docs/design.md, "Inverted elements are never silent").
 #include "schemes/cooper/sweep_barrel.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The pave surface scheme: unstructured all-quad meshing of any face with
-// any number of loops (DESIGN.md "The schemes"; the 2D algorithm and its
+// any number of loops (docs/design.md; the seed brief "The schemes"; the 2D algorithm and its
 // deviations from classic paving are described in pave_2d.h).
 //
 // * applicable(): every face with at least one boundary loop. A priori the
