@@ -44,21 +44,10 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   for (const auto& l : p.loops) {
     for (int n : l) xy[n] = s.plane(b, end == 0 ? s.pos(n) : st.to_upper.apply(s.pos(n)));
   }
-  std::vector<std::vector<int>> loops = p.loops;
-  size_t outer = 0;
-  double best = -1;
-  for (size_t l = 0; l < loops.size(); ++l) {
-    const double a = std::abs(signed_area(loops[l], xy));
-    if (a > best) {
-      best = a;
-      outer = l;
-    }
-  }
-  std::swap(loops[0], loops[outer]);
+  const std::vector<std::vector<int>> loops = oriented_loops(p.loops, xy);
   std::vector<std::vector<Eigen::Vector2d>> loops2d;
   std::vector<int> boundary;
   for (size_t l = 0; l < loops.size(); ++l) {
-    if ((l == 0) != (signed_area(loops[l], xy) > 0)) std::reverse(loops[l].begin(), loops[l].end());
     loops2d.emplace_back();
     for (int n : loops[l]) {
       loops2d.back().push_back(xy.at(n));

@@ -14,25 +14,6 @@
 namespace cooperage::cooper::detail {
 namespace {
 
-// Outer loop (largest) first and counter-clockwise, holes clockwise.
-std::vector<std::vector<int>> oriented(std::vector<std::vector<int>> loops, const std::map<int, Vec2>& xy) {
-  size_t outer = 0;
-  double best = -1;
-  for (size_t l = 0; l < loops.size(); ++l) {
-    const double a = std::abs(signed_area(loops[l], xy));
-    if (a > best) {
-      best = a;
-      outer = l;
-    }
-  }
-  std::swap(loops[0], loops[outer]);
-  for (size_t l = 0; l < loops.size(); ++l) {
-    const double a = signed_area(loops[l], xy);
-    if ((l == 0) != (a > 0)) std::reverse(loops[l].begin(), loops[l].end());
-  }
-  return loops;
-}
-
 // One barrel's ends as value types, in its chart.
 BarrelEnds ends_of(const SweepState& s, size_t b) {
   BarrelEnds ends;
@@ -53,7 +34,7 @@ BarrelEnds ends_of(const SweepState& s, size_t b) {
     if (!p.alive) continue;
     const bool upper = p.upper_of == static_cast<int>(b);
     if (!upper && p.lower_of != static_cast<int>(b)) continue;
-    (upper ? ends.upper : ends.lower).push_back({p.id, oriented(p.loops, ends.xy)});
+    (upper ? ends.upper : ends.lower).push_back({p.id, oriented_loops(p.loops, ends.xy)});
   }
   ends.ribs = st.rib_pairs;
   return ends;

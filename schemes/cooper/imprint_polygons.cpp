@@ -15,6 +15,24 @@ double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy) 
   return 0.5 * a;
 }
 
+std::vector<std::vector<int>> oriented_loops(std::vector<std::vector<int>> loops,
+                                             const std::map<int, Vec2>& xy) {
+  size_t outer = 0;
+  double best = -1;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const double a = std::abs(signed_area(loops[l], xy));
+    if (a > best) {
+      best = a;
+      outer = l;
+    }
+  }
+  if (!loops.empty()) std::swap(loops[0], loops[outer]);
+  for (size_t l = 0; l < loops.size(); ++l) {
+    if ((l == 0) != (signed_area(loops[l], xy) > 0)) std::reverse(loops[l].begin(), loops[l].end());
+  }
+  return loops;
+}
+
 namespace detail {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }

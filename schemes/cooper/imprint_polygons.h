@@ -24,6 +24,11 @@ struct Subcap {
 /// Signed area of a loop (positive counter-clockwise).
 double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy);
 
+/// The loops with the largest (the outer loop) first and counter-clockwise,
+/// the others (holes) clockwise.
+std::vector<std::vector<int>> oriented_loops(std::vector<std::vector<int>> loops,
+                                             const std::map<int, Vec2>& xy);
+
 /// Splits closed loop `loop` (no repeated nodes) at its repeated or crossing
 /// points into n + 1 loops (sec. 5.5). Crossings between segments are first
 /// combined onto a node pair (the closer pair whose loops stay even when
