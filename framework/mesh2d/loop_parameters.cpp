@@ -1,4 +1,5 @@
 #include "framework/mesh2d/loop_parameters.h"
+#include "framework/mesh2d/polygon_area.h"
 
 #include "framework/core/error.h"
 
@@ -13,16 +14,6 @@ namespace {
 
 using Eigen::Vector2d;
 using geom::Vec3;
-
-double signed_area(const std::vector<Vector2d>& p) {
-  double a = 0.0;
-  for (size_t k = 0; k < p.size(); ++k) {
-    const Vector2d& x = p[k];
-    const Vector2d& y = p[(k + 1) % p.size()];
-    a += x.x() * y.y() - x.y() * y.x();
-  }
-  return 0.5 * a;
-}
 
 bool inside(const std::vector<Vector2d>& polygon, const Vector2d& q) {
   bool in = false;

@@ -1,6 +1,7 @@
 // invalid_loops() of surface_chart.h: segment contacts through a grid of
 // buckets, exact orientation tests (predicates.h).
 #include "framework/mesh2d/predicates.h"
+#include "framework/mesh2d/polygon_area.h"
 #include "framework/mesh2d/surface_chart.h"
 
 #include <Eigen/Geometry>
@@ -13,16 +14,6 @@ namespace cooperage::mesh2d {
 namespace {
 
 using Eigen::Vector2d;
-
-double signed_area(const std::vector<Vector2d>& p) {
-  double a = 0.0;
-  for (size_t k = 0; k < p.size(); ++k) {
-    const Vector2d& x = p[k];
-    const Vector2d& y = p[(k + 1) % p.size()];
-    a += x.x() * y.y() - x.y() * y.x();
-  }
-  return 0.5 * a;
-}
 
 /// c lies on the closed segment (a, b), given that a, b, c are collinear.
 bool on_segment(const Vector2d& a, const Vector2d& b, const Vector2d& c) {

@@ -1,4 +1,5 @@
 #include "framework/mesh2d/surface_chart.h"
+#include "framework/mesh2d/polygon_area.h"
 
 #include "framework/core/error.h"
 #include "framework/mesh2d/conformal_map.h"
@@ -22,16 +23,6 @@ using geom::Vec3;
 
 [[noreturn]] void fail(const std::string& message) {
   throw MeshingError(ErrorCode::MeshingFailed, message);
-}
-
-double signed_area(const std::vector<Vector2d>& p) {
-  double a = 0.0;
-  for (size_t k = 0; k < p.size(); ++k) {
-    const Vector2d& x = p[k];
-    const Vector2d& y = p[(k + 1) % p.size()];
-    a += x.x() * y.y() - x.y() * y.x();
-  }
-  return 0.5 * a;
 }
 
 double diagonal(const std::vector<std::vector<Vector2d>>& loops) {

@@ -1,4 +1,5 @@
 #include "framework/mesh2d/triangulate.h"
+#include "framework/mesh2d/polygon_area.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,16 +16,6 @@ namespace {
 
 [[noreturn]] void bad_input(const std::string& message) {
   throw MeshingError(ErrorCode::InvalidInput, "triangulate: " + message);
-}
-
-double signed_area(const std::vector<Eigen::Vector2d>& loop) {
-  double a = 0.0;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const auto& p = loop[i];
-    const auto& q = loop[(i + 1) % loop.size()];
-    a += p.x() * q.y() - p.y() * q.x();
-  }
-  return 0.5 * a;
 }
 
 }  // namespace
