@@ -7,6 +7,8 @@
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
+#include "journal_fixture.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -27,24 +29,7 @@ const char* kFig3a = R"(  <geometry>
   </geometry>
 )";
 
-class DecomposedGeometry : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cooperage-decomposed-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    register_builtin_schemes(registry_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  io::Job journal(const std::string& body) {
-    const fs::path file = dir_ / "job.xml";
-    std::ofstream(file) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
-    return io::read_journal(file.string());
-  }
-
-  fs::path dir_;
-  scheme::Registry registry_;
-};
+class DecomposedGeometry : public testing::JournalFixture {};
 
 TEST_F(DecomposedGeometry, AMeshableModelIsNotCut) {
   const io::Job job = journal(R"(  <geometry><brick name="b" origin="0 0 0" size="2 1 1"/></geometry>

@@ -12,6 +12,8 @@
 #include "selector/select_schemes.h"
 
 #include <Eigen/Geometry>
+#include "journal_fixture.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -26,20 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 using geom::Vec3;
 
-class Reliability : public ::testing::Test {
+class Reliability : public testing::JournalFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cooperage-reliability-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    register_builtin_schemes(registry_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  io::Job journal(const std::string& body) {
-    const fs::path file = dir_ / "job.xml";
-    std::ofstream(file) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
-    return io::read_journal(file.string());
-  }
   std::vector<std::string> files() const {
     std::vector<std::string> out;
     for (const auto& e : fs::directory_iterator(dir_))
@@ -57,9 +47,6 @@ class Reliability : public ::testing::Test {
     }
     return "";
   }
-
-  fs::path dir_;
-  scheme::Registry registry_;
 };
 
 // ---- element estimate ----------------------------------------------------------

@@ -7,6 +7,8 @@
 #include "selector/select_schemes.h"
 
 #include <exodusII.h>
+#include "journal_fixture.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -18,24 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RunJob : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("cooperage-run-" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    register_builtin_schemes(registry_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  io::Job journal(const std::string& body) {
-    const fs::path file = dir_ / "job.xml";
-    std::ofstream(file) << "<cooperage version=\"1\">\n" << body << "</cooperage>\n";
-    return io::read_journal(file.string());
-  }
-
-  fs::path dir_;
-  scheme::Registry registry_;
-};
+class RunJob : public testing::JournalFixture {};
 
 const char* kTwoBricks = R"(  <geometry>
     <brick name="a" origin="0 0 0" size="1 1 1"/>
