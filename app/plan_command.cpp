@@ -2,16 +2,22 @@
 
 #include "json_writer.h"
 
+#include "framework/core/text.h"
 #include "framework/decompose/report_text.h"
 #include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "selector/select_schemes.h"
 
+#include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace cooperage::app {
 namespace {
+
+constexpr int kExitRefused = 2;  // as `mesh` and `run` exit for a volume no scheme fits
+constexpr size_t kMaxRefusalLine = 300;  // the whole reason is in the plan above
 
 // The cooper plan of a volume the selection gave to cooper (Blacker 1996,
 // sec. 4: its barrel tree), or null.
@@ -22,9 +28,19 @@ std::shared_ptr<const cooper::VolumePlan> cooper_plan(const selector::Choice& c,
   return s ? s->plan(scheme::VolumeView{model, c.id, nullptr}) : nullptr;
 }
 
+// Every volume scheme's verdict on a volume the selection refused.
+std::vector<selector::Candidate> refused_candidates(int volume, const geom::Model& model,
+                                                    const scheme::Registry& registry) {
+  std::vector<selector::Candidate> out;
+  for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
+    out.push_back(selector::Candidate{std::string(s->name()), s->applicable(scheme::VolumeView{model, volume, nullptr})});
+  }
+  return out;
+}
+
 void write_text(const selector::Selection& sel, const decompose::Report& cuts,
-                bool intervals_checked, const geom::Model& model,
-                const scheme::Registry& registry, std::ostream& out) {
+                const std::string& decomposition_failed, bool intervals_checked,
+                const geom::Model& model, const scheme::Registry& registry, std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
@@ -40,8 +56,22 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
     out << "decomposition (" << cuts.tried << " cuts tried)\n";
     for (const auto& line : cut_lines) out << "  " << line << "\n";
   }
-  if (!sel.volumes.empty()) out << "volumes\n";
-  for (const auto& c : sel.volumes) entity(c);
+  if (!decomposition_failed.empty()) out << "decomposition failed: " << decomposition_failed << "\n";
+  if (!sel.volumes.empty() || !sel.refused.empty()) out << "volumes\n";
+  auto refused = sel.refused.begin();
+  auto print_refused_before = [&](int id) {  // refusals in id order among the choices
+    for (; refused != sel.refused.end() && refused->first < id; ++refused) {
+      out << "volume " << refused->first << ": refused  -- " << refused->second.message << "\n";
+      for (const auto& k : refused_candidates(refused->first, model, registry)) {
+        out << "    " << selector::describe(k) << "\n";
+      }
+    }
+  };
+  for (const auto& c : sel.volumes) {
+    print_refused_before(c.id);
+    entity(c);
+  }
+  print_refused_before(std::numeric_limits<int>::max());
   out << "surfaces\n";
   for (const auto& c : sel.surfaces) entity(c);
   for (const auto& r : sel.relaxations) out << "relaxed " << r << "\n";
@@ -154,8 +184,8 @@ void write_decomposition(const decompose::Report& cuts, JsonWriter& j) {
 }
 
 void write_json(const selector::Selection& sel, const decompose::Report& cuts,
-                bool intervals_checked, const geom::Model& model,
-                const scheme::Registry& registry, std::ostream& out) {
+                const std::string& decomposition_failed, bool intervals_checked,
+                const geom::Model& model, const scheme::Registry& registry, std::ostream& out) {
   JsonWriter j(out);
   auto entities = [&](const std::vector<selector::Choice>& list) {
     j.begin_array();
@@ -195,8 +225,34 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
   j.begin_object();
   j.key("decomposition");
   write_decomposition(cuts, j);
+  j.key("decomposition_failed");
+  j.value(decomposition_failed);
   j.key("volumes");
   entities(sel.volumes);
+  j.key("refused_volumes");
+  j.begin_array();
+  for (const auto& [id, r] : sel.refused) {
+    j.begin_object();
+    j.key("id");
+    j.value(id);
+    j.key("reason");
+    j.value(r.message);
+    j.key("candidates");
+    j.begin_array();
+    for (const auto& k : refused_candidates(id, model, registry)) {
+      j.begin_object();
+      j.key("scheme");
+      j.value(k.scheme);
+      j.key("ok");
+      j.value(k.applicability.ok);
+      j.key("why");
+      j.value(k.applicability.why);
+      j.end_object();
+    }
+    j.end_array();
+    j.end_object();
+  }
+  j.end_array();
   j.key("surfaces");
   entities(sel.surfaces);
   j.key("relaxations");
@@ -218,21 +274,42 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   // plug-ins take part in it (a journal's are known only once it is read).
   scheme::Registry defaults;
   register_schemes(defaults, BuiltinOptions{}, run_plugins(plugins, {}));
-  const pipeline::PlanInput input =
-      pipeline::plan_input(file, size, &defaults, selector::planner());
+  // A volume that no scheme fits and no cut helps is shown undecomposed,
+  // with every scheme's full reason: what `plan` is for.
+  pipeline::PlanInput input;
+  std::string decomposition_failed;
+  try {
+    input = pipeline::plan_input(file, size, &defaults, selector::planner());
+  } catch (const MeshingError& e) {
+    if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
+    decomposition_failed = "volume " + std::to_string(e.entity().id) + ": " + e.message();
+    input = pipeline::plan_input(file, size, nullptr, {});
+  }
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
   register_schemes(registry, builtin_options(settings), run_plugins(plugins, input.plugins));
   selector::SelectOptions options;
   options.check_intervals = settings.size.has_value();
-  const selector::Selection sel = selector::select_schemes(model, registry, settings, options);
-  if (json) {
-    write_json(sel, input.decomposition, options.check_intervals, model, registry, out);
-  } else {
-    write_text(sel, input.decomposition, options.check_intervals, model, registry, out);
+  // A volume no scheme fits is listed with every scheme's reason (what
+  // `plan` is for); any other planning error stays an error.
+  selector::Selection sel;
+  try {
+    sel = selector::select_schemes(model, registry, settings, options);
+  } catch (const MeshingError& e) {
+    if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
+    options.refuse_per_volume = true;
+    sel = selector::select_schemes(model, registry, settings, options);
   }
-  return 0;
+  if (json) {
+    write_json(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, out);
+  } else {
+    write_text(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, out);
+  }
+  for (const auto& [id, r] : sel.refused) {
+    std::cerr << "cooperage: error: volume " << id << ": " << clip(r.message, kMaxRefusalLine) << "\n";
+  }
+  return sel.refused.empty() ? 0 : kExitRefused;
 }
 
 }  // namespace cooperage::app

@@ -15,7 +15,8 @@ namespace cooperage::app {
 /// Plans the model of FILE (a journal, or a CAD file with automatic schemes).
 /// `size` overrides the journal's global size; without any size the interval
 /// feasibility check is skipped (and said so). `plugins` (--plugin) are
-/// loaded before the journal's. Returns the exit code.
+/// loaded before the journal's. Returns the exit code: 2 when a volume is
+/// refused (listed with every scheme's reason, and named on stderr), else 0.
 int run_plan(const std::string& file, std::optional<double> size, bool json,
              const std::vector<std::string>& plugins, std::ostream& out);
 

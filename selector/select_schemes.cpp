@@ -6,6 +6,7 @@
 #include "framework/pipeline/interval_setup.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -69,7 +70,28 @@ struct Role {
   std::string scheme;
   int volume = 0;
   std::string volume_scheme;
+  bool takes_existing = false;  ///< the volume takes whatever mesh the surface gets
 };
+
+// Whether `edges` (volume -> volumes it waits for) has a cycle.
+bool has_cycle(const std::map<int, std::set<int>>& edges) {
+  std::map<int, int> state;  // 1: on the path, 2: done
+  std::function<bool(int)> visit = [&](int v) {
+    state[v] = 1;
+    const auto it = edges.find(v);
+    if (it != edges.end()) {
+      for (int w : it->second) {
+        if (state[w] == 1 || (state[w] == 0 && visit(w))) return true;
+      }
+    }
+    state[v] = 2;
+    return false;
+  };
+  for (const auto& [v, targets] : edges) {
+    if (state[v] == 0 && visit(v)) return true;
+  }
+  return false;
+}
 
 class Selector {
  public:
@@ -90,6 +112,9 @@ class Selector {
     }
     for (const geom::Surface& s : model_.surfaces()) choose_surface(s.id);
     if (options_.check_intervals) relax_until_feasible();
+    for (const auto& [v, targets] : waits_for_) {
+      if (!targets.empty()) selection_.waits_for[v].assign(targets.begin(), targets.end());
+    }
     return selection_;
   }
 
@@ -113,11 +138,43 @@ class Selector {
     return map != nullptr && map->applicable(scheme::SurfaceView{model_, surface, nullptr}).ok;
   }
 
+  // The waits of `volume` taking `roles` (a volume that meshes a shared
+  // surface itself is meshed before the neighbour that takes its mesh).
+  std::map<int, std::set<int>> waits_with(int volume, const scheme::SurfaceRoles& roles) const {
+    std::map<int, std::set<int>> waits = waits_for_;
+    for (const auto& [surface, role] : roles) {
+      const auto it = roles_.find(surface);
+      if (it == roles_.end()) continue;
+      const bool mine = role == scheme::kMeshedByVolume;
+      const bool theirs = it->second.scheme == scheme::kMeshedByVolume;
+      if (theirs && !mine) waits[volume].insert(it->second.volume);
+      if (mine && !theirs) waits[it->second.volume].insert(volume);
+    }
+    return waits;
+  }
+
   // Why `roles` cannot be taken by `volume`, or "" when they fit.
   std::string role_conflict(int volume, const std::string& scheme_name,
-                            const scheme::SurfaceRoles& roles) const {
+                            const scheme::SurfaceRoles& roles, const std::set<int>& takes) const {
     for (const auto& [surface, role] : roles) {
       auto it = roles_.find(surface);
+      const bool mine = role == scheme::kMeshedByVolume;
+      const bool theirs = it != roles_.end() && it->second.scheme == scheme::kMeshedByVolume;
+      if (it != roles_.end() && (mine || theirs)) {
+        // One volume meshes the surface itself; the other must take that mesh.
+        const bool taken = mine ? !theirs && it->second.takes_existing : !mine && takes.count(surface) > 0;
+        if (!taken) {
+          return "surface " + std::to_string(surface) + " is meshed by " +
+                 (theirs ? "volume " + std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ")"
+                         : "volume " + std::to_string(volume) + " (" + scheme_name + ")") +
+                 " itself, and volume " +
+                 (theirs ? std::to_string(volume) + " (" + scheme_name + ") needs " + role
+                         : std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ") needs " +
+                               it->second.scheme) +
+                 " on it";
+        }
+        continue;
+      }
       if (it != roles_.end() && !compatible(surface, it->second.scheme, role)) {
         return "surface " + std::to_string(surface) + " needs " + role + " for volume " +
                std::to_string(volume) + " (" + scheme_name + ") but " + it->second.scheme +
@@ -175,20 +232,34 @@ class Selector {
     }
     std::string conflicts;
     for (const Candidate* c : order) {
-      const scheme::SurfaceRoles roles = registry_.volume_scheme(c->scheme)->roles(view);
-      const std::string conflict = role_conflict(id, c->scheme, roles);
+      const scheme::VolumeScheme* vs = registry_.volume_scheme(c->scheme);
+      const scheme::SurfaceRoles roles = vs->roles(view);
+      const std::vector<int> taken = vs->takes_existing_mesh(view);
+      const std::set<int> takes(taken.begin(), taken.end());
+      std::string conflict = role_conflict(id, c->scheme, roles, takes);
+      std::map<int, std::set<int>> waits = waits_with(id, roles);
+      if (conflict.empty() && has_cycle(waits)) {
+        conflict = "volume " + std::to_string(id) + " (" + c->scheme +
+                   ") and its neighbours would each wait for the other's mesh of a shared surface";
+      }
       if (!conflict.empty()) {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
         continue;
       }
+      waits_for_ = std::move(waits);
       for (const auto& [surface, role] : roles) {
         auto it = roles_.find(surface);
-        // map and submap on one mappable surface: mapped (compatible()).
-        if (it != roles_.end() && it->second.scheme != role) {
-          if (role == "map") it->second = {role, id, c->scheme};
+        if (it != roles_.end() && (role == scheme::kMeshedByVolume) != (it->second.scheme == scheme::kMeshedByVolume)) {
+          // The volume that meshes it itself keeps (or takes) the surface.
+          if (role == scheme::kMeshedByVolume) it->second = {role, id, c->scheme, false};
           continue;
         }
-        roles_[surface] = {role, id, c->scheme};
+        // map and submap on one mappable surface: mapped (compatible()).
+        if (it != roles_.end() && it->second.scheme != role) {
+          if (role == "map") it->second = {role, id, c->scheme, takes.count(surface) > 0 && it->second.takes_existing};
+          continue;
+        }
+        roles_[surface] = {role, id, c->scheme, takes.count(surface) > 0};
       }
       choice.scheme = c->scheme;
       choice.reason = choice.pinned ? "pinned at " + place(pin->where)
@@ -312,6 +383,7 @@ class Selector {
   const io::MeshSettings& settings_;
   SelectOptions options_;
   std::map<int, Role> roles_;
+  std::map<int, std::set<int>> waits_for_;  // volume -> volumes meshed before it
   Selection selection_;
 };
 
@@ -334,6 +406,7 @@ pipeline::SchemePlan Selection::plan() const {
   for (const Choice& c : volumes) plan.volumes[c.id] = entry(c);
   for (const Choice& c : surfaces) plan.surfaces[c.id] = entry(c);
   plan.refused_volumes = refused;
+  plan.waits_for = waits_for;
   return plan;
 }
 

@@ -39,6 +39,9 @@ struct Selection {
   std::vector<std::string> relaxations;
   /// With SelectOptions::refuse_per_volume: volumes without a scheme, and why.
   std::map<int, pipeline::Refusal> refused;
+  /// Volume -> the volumes meshed before it, whose mesh of a shared surface
+  /// it takes (SchemePlan::waits_for).
+  std::map<int, std::vector<int>> waits_for;
 
   /// The plan the pipeline runs; each entry's details are its candidates'
   /// verdicts (describe()).

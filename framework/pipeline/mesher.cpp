@@ -240,18 +240,49 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       commit_surface, surface_failed);
   lap("surfaces");
 
-  std::vector<int> volumes;
+  // Volumes in waves: a volume that takes a neighbour's mesh of a shared
+  // surface (plan.waits_for) is meshed after it, in parallel with the rest
+  // of its wave; commits stay in wave-then-id order (deterministic).
+  std::vector<int> pending;
   for (const auto& [id, entry] : result.plan.volumes)
-    if (!refusals.refused(id)) volumes.push_back(id);
-  run_stage(
-      "volumes", 3, volumes, result.plan.volumes, result, options,
-      [&](int id) {
-        const auto* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
-        return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
-      },
-      commit_volume, [&](int id, const MeshingError& e) {
-        refusals.refuse(id, e.code(), e.message(), e.hint());
-      });
+    if (!refusals.refused(id)) pending.push_back(id);
+  std::set<int> done;
+  while (!pending.empty()) {
+    std::vector<int> wave, later;
+    for (int id : pending) {
+      const auto w = result.plan.waits_for.find(id);
+      bool ready = true;
+      if (w != result.plan.waits_for.end()) {
+        for (int other : w->second) {
+          if (refusals.refused(other)) {
+            refusals.refuse(id, ErrorCode::MeshingFailed,
+                            "it takes the mesh of a shared surface from volume " + std::to_string(other) +
+                                ", which could not be meshed",
+                            "");
+            ready = false;
+            break;
+          }
+          ready = ready && done.count(other) > 0;
+        }
+      }
+      if (refusals.refused(id)) continue;
+      (ready ? wave : later).push_back(id);
+    }
+    if (wave.empty()) {  // the selector keeps the waits acyclic
+      throw MeshingError(ErrorCode::Internal, "volumes wait for each other's meshes");
+    }
+    run_stage(
+        "volumes", 3, wave, result.plan.volumes, result, options,
+        [&](int id) {
+          const auto* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
+          return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
+        },
+        commit_volume, [&](int id, const MeshingError& e) {
+          refusals.refuse(id, e.code(), e.message(), e.hint());
+        });
+    done.insert(wave.begin(), wave.end());
+    pending = std::move(later);
+  }
   lap("volumes");
 
   // Never hand back inverted elements silently.

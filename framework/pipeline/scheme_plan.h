@@ -30,6 +30,9 @@ struct SchemePlan {
   /// Volumes no scheme can mesh (a planner may refuse volumes one by one
   /// instead of failing the whole plan; the pipeline reports each).
   std::map<int, Refusal> refused_volumes;
+  /// Volume -> the volumes it waits for: they mesh a surface it shares and
+  /// takes as it finds it (VolumeScheme::takes_existing_mesh). Acyclic.
+  std::map<int, std::vector<int>> waits_for;
 };
 
 }  // namespace cooperage::pipeline

@@ -112,6 +112,13 @@ class VolumeScheme {
   virtual void constrain(const VolumeView& view, intervals::IntervalProblem& problem) const = 0;
   /// The surface schemes this volume scheme imposes, e.g. {side: submap}.
   virtual SurfaceRoles roles(const VolumeView& view) const = 0;
+  /// Surfaces among roles() whose mesh the scheme takes as it finds it: any
+  /// valid mesh with the agreed curve intervals (cooper's uncut source caps).
+  /// A neighbouring volume scheme that meshes such a surface itself (role
+  /// kMeshedByVolume, e.g. the other volume's sweep ends on it) is then
+  /// meshed first, and this volume reads its mesh (docs/design.md, "Volumes
+  /// that wait for a neighbour").
+  virtual std::vector<int> takes_existing_mesh(const VolumeView& /*view*/) const { return {}; }
   /// Meshes the volume; its surfaces are meshed in view.mesh. Throws MeshingError.
   virtual EntityMesh mesh(const VolumeView& view, const MeshParams& params) const = 0;
   /// Whether the scheme can make wedges (journal `elements="wedge"` or

@@ -112,14 +112,10 @@ CapRoles cap_roles(const VolumeFacts& facts, const SweepOrder& order, const Barr
       out.scheme[c] = s;
       continue;
     }
-    const FaceFact& f = *facts.face(c);
-    if (f.other_volumes > 0) {
-      out.why = "cap " + std::to_string(c) + " is shared with another volume, so it must be meshed by its surface "
-                "scheme, but " + (order.upper.at(c) ? cut ? std::string("other caps are imprinted on it")
-                                                               : "no surface scheme meshes it (" + why + ")"
-                                                    : std::string("the sweep ends on it"));
-      return out;
-    }
+    // A cap shared with another volume is meshed here too (the sweep ends on
+    // it, or other caps are imprinted on it): the selector then meshes this
+    // volume first and hands the cap's mesh to the neighbour, if that one
+    // takes it as it finds it (scheme::VolumeScheme::takes_existing_mesh).
     out.by_volume.push_back(c);
     if (order.upper.at(c)) out.needs_polygon_mesher = true;
   }

@@ -119,6 +119,16 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   return roles;
 }
 
+// cite: Blacker 1996, sec. 6.1 (a stack is meshed from "an existing
+// mesh"): a cap meshed beforehand is swept as it is, whoever meshed it.
+std::vector<int> CooperScheme::takes_existing_mesh(const scheme::VolumeView& view) const {
+  const auto p = plan(view);
+  std::vector<int> out;
+  if (!p->ok) return out;
+  for (const auto& [cap, scheme] : p->roles.scheme) out.push_back(cap);
+  return out;
+}
+
 // cite: Blacker 1996, sec. 4-6 (barrels, subcaps, cap stacks, projection,
 // elements); the one-barrel sweep is the same path with one barrel.
 scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view, const scheme::MeshParams& /*params*/) const {

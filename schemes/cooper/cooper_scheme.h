@@ -62,6 +62,7 @@ class CooperScheme final : public scheme::VolumeScheme {
   /// Sides -> "submap"; caps meshed beforehand -> their scheme; the rest ->
   /// scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
+  std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override;
   /// sweep_volume() on the plan. Throws MeshingError naming the volume.
   scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::MeshParams& params) const override;
 

@@ -258,6 +258,16 @@ TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
   const auto r = run_command(kCli + " plan " + job);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no hex scheme applies"), std::string::npos) << r.err;
+  // The plan itself is printed, with every volume scheme's whole reason.
+  EXPECT_NE(r.out.find("volume 1: refused"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("    - cooper: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("    - map: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("surfaces\n"), std::string::npos) << r.out;
+  const auto j = run_command(kCli + " plan --json " + job + " | /usr/bin/python3 -c \"import json,sys; "
+                             "d=json.load(sys.stdin); print(len(d['volumes']), "
+                             "[c['scheme'] for c in d['refused_volumes'][0]['candidates']])\"");
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  EXPECT_EQ(j.out, "0 ['map', 'cooper']\n");
 }
 
 TEST_F(RunCommand, OpenShellIsRejectedWithTheFileAndNoOutput) {
