@@ -22,6 +22,7 @@ another code than 0/1/2, more than 60 s, more than 3 error lines or an
 error line over 500 characters, a file left behind (after a failure: any
 new file; after success: anything but the exports), a sanitizer report on
 stderr, and exit 0 with an export that fails the independent checks below.
+Runs are capped at 2 M elements (--max-elements; see MAX_ELEMENTS).
 Independent checks (this file's own readers: meshio for .vtu/.msh/.inp, a
 netCDF classic reader written here for .exo): every hex/wedge positive at
 all corners, no element face shared by more than two elements, the boundary
@@ -52,6 +53,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 REAL_CAD = os.environ.get("COOPERAGE_REAL_CAD", os.path.join(ROOT, "..", "shared", "real-cad"))
 TIME_LIMIT = 60.0
+# A mutated size can ask for a legitimate 40 M-element run (a brick 20,000
+# long at size 0.25), which takes minutes and is no hang; the campaign caps
+# runs at 2 M elements (--max-elements), so that every run of a correct
+# program ends well inside TIME_LIMIT and a refusal above the cap is tested.
+MAX_ELEMENTS = "2e6"
 
 # ---------------------------------------------------------------------------
 # independent readers and checks
@@ -369,7 +375,9 @@ def run(cmd, cwd, env):
         timed_out = True
     seconds = time.monotonic() - t0
     return {"rc": proc.returncode, "seconds": round(seconds, 3), "timed_out": timed_out,
-            "out": out.decode("utf-8", "replace"), "err": err.decode("utf-8", "replace")}
+            # stdout as the file system decodes names (an export named with
+            # a Latin-1 byte is listed by os.listdir the same way)
+            "out": out.decode("utf-8", "surrogateescape"), "err": err.decode("utf-8", "replace")}
 
 
 def classify(r):
@@ -409,7 +417,7 @@ def case_journal(binary, text, tmp, env):
     path = os.path.join(tmp, "job.xml")
     open(path, "w", encoding="latin1").write(text)
     before = set(os.listdir(tmp))
-    r = run([binary, "run", "-q", path], tmp, env)
+    r = run([binary, "run", "-q", "--max-elements", MAX_ELEMENTS, path], tmp, env)
     bad = classify(r)
     after = set(os.listdir(tmp))
     new = sorted(after - before)
@@ -459,7 +467,8 @@ def case_cad(binary, data, ext, tmp, env):
             size = float(np.linalg.norm(hi - lo)) / 8 or 1.0
         except (ValueError, KeyError):
             pass
-        m = run([binary, "mesh", path, "--size", "%.6g" % size, "-o", "out.vtu", "-q"], tmp, env)
+        m = run([binary, "mesh", path, "--size", "%.6g" % size, "-o", "out.vtu", "-q",
+                 "--max-elements", MAX_ELEMENTS], tmp, env)
         runs.append(m)
         bad += classify(m)
         new = sorted(set(os.listdir(tmp)) - before)
