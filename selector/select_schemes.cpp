@@ -355,8 +355,8 @@ class Selector {
   void relax_until_feasible() {
     for (int round = 0;; ++round) {
       try {
-        intervals::solve(pipeline::build_interval_problem(model_, registry_, selection_.plan(),
-                                                          settings_));
+        selection_.intervals = intervals::solve(
+            pipeline::build_interval_problem(model_, registry_, selection_.plan(), settings_));
         return;
       } catch (const intervals::IntervalConflict& e) {
         Choice* c = round < options_.max_relaxations ? relaxable(e.curves()) : nullptr;
@@ -407,6 +407,7 @@ pipeline::SchemePlan Selection::plan() const {
   for (const Choice& c : surfaces) plan.surfaces[c.id] = entry(c);
   plan.refused_volumes = refused;
   plan.waits_for = waits_for;
+  plan.intervals = intervals;
   return plan;
 }
 

@@ -6,6 +6,7 @@
 #include "framework/scheme/applicability.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct Selection {
   /// Volume -> the volumes meshed before it, whose mesh of a shared surface
   /// it takes (SchemePlan::waits_for).
   std::map<int, std::vector<int>> waits_for;
+  /// The feasible interval assignment found for the final choices (with
+  /// SelectOptions::check_intervals), carried into SchemePlan::intervals.
+  std::optional<intervals::IntervalSolution> intervals;
 
   /// The plan the pipeline runs; each entry's details are its candidates'
   /// verdicts (describe()).

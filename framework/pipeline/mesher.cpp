@@ -193,8 +193,10 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   result.plan = options.planner(model, registry, settings, dim);
   lap("plan");
   report(options, "intervals", 0, 1);
-  result.intervals =
-      intervals::solve(build_interval_problem(model, registry, result.plan, settings));
+  // The planner solved this very problem when it checked feasibility.
+  result.intervals = result.plan.intervals
+                         ? *result.plan.intervals
+                         : intervals::solve(build_interval_problem(model, registry, result.plan, settings));
   {
     std::map<int, double> counts;
     for (const auto& [curve, n] : result.intervals.intervals) counts[curve] = n;

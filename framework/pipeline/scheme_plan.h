@@ -2,8 +2,10 @@
 #pragma once
 
 #include "framework/core/error.h"
+#include "framework/intervals/solve.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,10 @@ struct SchemePlan {
   /// Volume -> the volumes it waits for: they mesh a surface it shares and
   /// takes as it finds it (VolumeScheme::takes_existing_mesh). Acyclic.
   std::map<int, std::vector<int>> waits_for;
+  /// The interval assignment the planner found feasible for this plan and
+  /// its settings, when it solved one; the mesher uses it instead of solving
+  /// the same problem again (on a 137-face part, 70 s each).
+  std::optional<intervals::IntervalSolution> intervals;
 };
 
 }  // namespace cooperage::pipeline
