@@ -50,6 +50,21 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
   }
 }
 
+void check_groups(const geom::Model& model, const io::GroupSettings& groups) {
+  const size_t n_vol = model.volumes().size(), n_surf = model.surfaces().size();
+  for (const auto& b : groups.blocks) {
+    for (int v : b.volumes) check_id(b.where, "volume", v, n_vol);
+    for (int s : b.surfaces) check_id(b.where, "surface", s, n_surf);
+  }
+  for (const auto& s : groups.side_sets)
+    for (int id : s.surfaces) check_id(s.where, "surface", id, n_surf);
+  for (const auto& n : groups.node_sets) {
+    for (int id : n.surfaces) check_id(n.where, "surface", id, n_surf);
+    for (int id : n.curves) check_id(n.where, "curve", id, model.curves().size());
+    for (int id : n.vertices) check_id(n.where, "vertex", id, model.vertices().size());
+  }
+}
+
 namespace {
 
 void check_scheme_name(const io::SourceLocation& where, int dim, const std::string& name,
