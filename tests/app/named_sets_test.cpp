@@ -98,6 +98,24 @@ TEST_F(NamedSets, AnUnknownIdNamesTheJournalLineAndWritesNothing) {
   EXPECT_FALSE(fs::exists(path("bad.exo")));
 }
 
+TEST_F(NamedSets, AJournalWithGroupsIsNotDecomposedBehindItsBack) {
+  // Groups name the model's ids; cutting a volume would renumber them.
+  std::ifstream in(kSource + "/examples/fig3a_auto.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  const std::string mesh = "<mesh size=\"0.25\" decompose=\"auto\"/>";
+  ASSERT_NE(xml.find(mesh), std::string::npos);
+  xml.replace(xml.find(mesh), mesh.size(), mesh + "\n  <block id=\"1\" volumes=\"1\"/>");
+  std::ofstream(path("fig3a.xml")) << xml;
+  const auto r = run_command(kCli + " run -q " + path("fig3a.xml"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("automatic decomposition would renumber the entities that <block> at"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(path("fig3a_auto.exo")));
+}
+
 class SurfaceOutput : public testing::TempDirTest {};
 
 TEST_F(SurfaceOutput, MeshDim2OfThePartReadsBackWithMeshioInEverySurfaceFormat) {
