@@ -40,7 +40,19 @@ Result mesh_file(const std::string& path, double size, const Options& options) {
   job.origin = "cooperage::mesh_file()";
   job.elements_option = "Options::elements";
   job.export_option = "Options::exports";
-  return run_one(pipeline::model_job(path, job), options.dim, options);
+  io::Job built = pipeline::model_job(path, job);
+  built.groups = options.groups;
+  const io::SourceLocation where{"cooperage::mesh_file()", 0, "Options::groups"};
+  auto named = [&](auto& groups, const char* prefix) {
+    for (auto& g : groups) {
+      if (g.name.empty()) g.name = prefix + std::to_string(g.id);
+      g.where = where;
+    }
+  };
+  named(built.groups.blocks, "block_");
+  named(built.groups.side_sets, "sideset_");
+  named(built.groups.node_sets, "nodeset_");
+  return run_one(built, options.dim, options);
 }
 
 Result run_journal(const std::string& journal, const Options& options) {

@@ -222,8 +222,9 @@ int main(int argc, char** argv) {
   mesh->add_option("--size", mesh_size, "Element size, in the model's length unit")->required();
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
-  mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu or .inp")->required();
-  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended) or .msh (Gmsh 4.1 binary)");
+  mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu .inp, or a surface format .obj .off .stl .ply (a 3D mesh "
+                   "gives its boundary)")->required();
+  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended), .msh (Gmsh 4.1 binary), .stl or .ply");
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
   mesh->add_option("--elements", mesh_elements,
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "

@@ -13,8 +13,8 @@ packages=(
   libocct-modeling-algorithms-dev libocct-data-exchange-dev
   libeigen3-dev libtbb-dev libtinyxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libexodusii-dev libnetcdf-dev coinor-libcbc-dev libcli11-dev
-  libxml2-utils python3-meshio python3-gmsh
+  libexodusii-dev libnetcdf-dev coinor-libcbc-dev libcli11-dev libopenmesh-dev
+  libxml2-utils python3-meshio python3-gmsh python3-netcdf4
   pybind11-dev python3-pybind11 python3-numpy python3-pytest chromium
 )
 

@@ -31,12 +31,19 @@ struct Options {
   io::ElementKind elements = io::ElementKind::Hex;  ///< every volume's (mesh_file() only)
   int threads = 0;    ///< 0: all cores; the mesh does not depend on it
   bool imprint_merge = true;  ///< touching solids share nodes (mesh_file() only)
-  /// Mesh files to write (.exo .msh .vtu .inp), each atomically; none are
-  /// written when meshing fails. run_journal() adds them to the journal's.
+  /// Mesh files to write (.exo .msh .vtu .inp .obj .off .stl .ply), each
+  /// atomically; none are written when meshing fails. run_journal() adds
+  /// them to the journal's.
   std::vector<std::string> exports;
   /// Plug-in libraries of schemes to load (framework/scheme/plugin.h), after
   /// those of COOPERAGE_PLUGIN_PATH and before a journal's <plugin>s.
   std::vector<std::string> plugins;
+  /// Named element blocks, side sets and node sets for the exports, as a
+  /// journal's <block>, <sideset>, <nodeset> (docs/journal.md): ids, names
+  /// and entity ids (as `cooperage info` prints them) are checked the same
+  /// way; an empty name gets the default ("block_<id>", ...). mesh_file()
+  /// only: a journal names its own.
+  io::GroupSettings groups;
 };
 
 /// A meshed model and its quality report.

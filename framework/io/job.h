@@ -175,6 +175,49 @@ struct PluginSetting {
   SourceLocation where;
 };
 
+// ---- element blocks, side sets and node sets (what solvers see) ----------
+
+/// <block id name volumes|surfaces>: an element block (Exodus), physical
+/// group (Gmsh), *ELSET (Abaqus). `volumes` for a volume mesh, `surfaces`
+/// for a surface-only mesh (--dim 2); exactly one of them is given.
+struct BlockSetting {
+  int id = 0;
+  std::string name;  ///< "" when not given: written as "block_<id>"
+  std::vector<int> volumes;
+  std::vector<int> surfaces;
+  SourceLocation where;
+};
+
+/// <sideset id name surfaces>: the faces of the volume elements on these
+/// surfaces (Exodus side set, Gmsh physical surface group, Abaqus *SURFACE).
+struct SideSetSetting {
+  int id = 0;
+  std::string name;  ///< "" when not given: written as "sideset_<id>"
+  std::vector<int> surfaces;
+  SourceLocation where;
+};
+
+/// <nodeset id name surfaces curves vertices>: the nodes on these entities
+/// (Exodus node set, Abaqus *NSET); at least one of the three is given.
+struct NodeSetSetting {
+  int id = 0;
+  std::string name;  ///< "" when not given: written as "nodeset_<id>"
+  std::vector<int> surfaces;
+  std::vector<int> curves;
+  std::vector<int> vertices;
+  SourceLocation where;
+};
+
+/// The groups a journal names. An empty list keeps the default of its kind:
+/// a block per volume (per surface in a surface mesh) and element kind, a
+/// side set and a node set per meshed surface.
+struct GroupSettings {
+  std::vector<BlockSetting> blocks;
+  std::vector<SideSetSetting> side_sets;
+  std::vector<NodeSetSetting> node_sets;
+  bool empty() const { return blocks.empty() && side_sets.empty() && node_sets.empty(); }
+};
+
 /// A whole journal.
 struct Job {
   std::string file;                      ///< the journal path ("" when built in code)
@@ -183,6 +226,7 @@ struct Job {
   std::vector<GeometryStep> geometry;
   bool imprint_merge = true;             ///< fragment touching solids into a conformal model
   std::optional<MeshSettings> mesh;
+  GroupSettings groups;                  ///< <block>, <sideset>, <nodeset>
   std::vector<QualityCheck> quality;
   std::vector<ExportSetting> exports;
   std::vector<ReportSetting> reports;

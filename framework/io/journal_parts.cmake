@@ -4,5 +4,6 @@ cooperage_framework_part(io_journal
     ${CMAKE_CURRENT_LIST_DIR}/journal_reader.cpp
     ${CMAKE_CURRENT_LIST_DIR}/journal_geometry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/journal_mesh.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/journal_groups.cpp
     ${CMAKE_CURRENT_LIST_DIR}/journal_xml.cpp
   PRIVATE_DEPS tinyxml2::tinyxml2)

@@ -1,6 +1,6 @@
 // The journal reader: the document, the <cooperage> root and its sections in
-// order (<plugin>*, <geometry>, <mesh>?, <quality>*, <export>*, <report>*). The sections live in
-// journal_geometry.cpp and journal_mesh.cpp; attribute parsing in journal_xml.cpp.
+// order (<plugin>*, <geometry>, <mesh>?, <block|sideset|nodeset>*, <quality>*, <export>*,
+// <report>*). The sections live in journal_geometry.cpp, journal_mesh.cpp and journal_groups.cpp; attribute parsing in journal_xml.cpp.
 #include "framework/io/journal_reader.h"
 
 #include "framework/core/error.h"
@@ -22,14 +22,27 @@ namespace {
 
 using detail::Element;
 
-const std::vector<std::string> kRootElements = {"plugin", "geometry", "mesh", "quality", "export",
-                                                "report"};
-const char* const kRootOrder =
-    "<plugin>*, <geometry>, <mesh>?, <quality>*, <export>*, <report>*";
+const std::vector<std::string> kRootElements = {"plugin", "geometry", "mesh",   "block", "sideset",
+                                                "nodeset", "quality", "export", "report"};
+const char* const kRootOrder = "<plugin>*, <geometry>, <mesh>?, <block>/<sideset>/<nodeset>* (in "
+                               "any order), <quality>*, <export>*, <report>*";
+
+bool is_group(const std::string& tag) {
+  return tag == "block" || tag == "sideset" || tag == "nodeset";
+}
+
+// Position in the order of sections; the three groups share one.
+int rank_of(const std::string& tag) {
+  const std::string key = is_group(tag) ? "block" : tag;
+  return static_cast<int>(std::find(kRootElements.begin(), kRootElements.end(), key) -
+                          kRootElements.begin());
+}
 const std::vector<std::string> kMetrics = {"scaled_jacobian", "jacobian",         "skew",
                                            "taper",           "aspect_frobenius", "edge_ratio",
                                            "shape"};
-const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".inp"};
+const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".inp",
+                                                    ".obj", ".off", ".stl", ".ply"};
+const std::vector<std::string> kBinaryExtensions = {".vtu", ".msh", ".stl", ".ply"};
 const std::vector<std::string> kReportExtensions = {".html", ".htm"};
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -64,9 +77,11 @@ ExportSetting read_export(const Element& e) {
                           detail::list(kExportExtensions) + " (the extension picks the format), got \"" +
                           clip_path(x.file) + "\"");
   x.binary = e.choice("encoding", {"ascii", "binary"}).value_or(0) == 1;
-  if (x.binary && !ends_with(x.file, ".vtu") && !ends_with(x.file, ".msh"))
-    e.fail_at("encoding", "encoding=\"binary\" is for .vtu and .msh files (Exodus is always "
-                          "binary, Abaqus .inp always text), got \"" + clip_path(x.file) + "\"");
+  if (x.binary && std::none_of(kBinaryExtensions.begin(), kBinaryExtensions.end(),
+                               [&](const std::string& ext) { return ends_with(x.file, ext); }))
+    e.fail_at("encoding", "encoding=\"binary\" is for .vtu, .msh, .stl and .ply files (Exodus is "
+                          "always binary; Abaqus .inp, .obj and .off always text), got \"" +
+                              clip_path(x.file) + "\"");
   return x;
 }
 
@@ -112,7 +127,7 @@ void read_root(const Element& root, Job& job) {
              "; allowed, in this order: " + kRootOrder);
     if ((tag == "geometry" || tag == "mesh") && seen.count(tag))
       e.fail("appears twice; the first is at line " + std::to_string(seen[tag]));
-    if (!last.empty() && rank < std::find(kRootElements.begin(), kRootElements.end(), last))
+    if (!last.empty() && rank_of(tag) < rank_of(last))
       e.fail("must come before <" + last + "> (line " + std::to_string(seen[last]) +
              "); the order is " + kRootOrder);
     if (tag != "geometry" && tag != "plugin" && !seen.count("geometry"))
@@ -128,6 +143,8 @@ void read_root(const Element& root, Job& job) {
       job.plugins.push_back(std::move(p));
     } else if (tag == "geometry") {
       detail::read_geometry(e, job);
+    } else if (is_group(tag)) {
+      detail::read_group(e, job.groups);
     } else if (tag == "mesh") {
       job.mesh = detail::read_mesh(e);
     } else if (tag == "quality") {

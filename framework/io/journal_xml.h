@@ -102,5 +102,7 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
 void read_geometry(const Element& geometry, Job& job);
 /// Reads <mesh> and its settings.
 MeshSettings read_mesh(const Element& mesh);
+/// Reads one <block>, <sideset> or <nodeset> into `groups` (journal_groups.cpp).
+void read_group(const Element& group, GroupSettings& groups);
 
 }  // namespace cooperage::io::detail

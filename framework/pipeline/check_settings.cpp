@@ -3,6 +3,10 @@
 #include "framework/core/error.h"
 #include "framework/io/journal_xml.h"
 
+#include <algorithm>
+#include <cctype>
+#include <map>
+
 namespace cooperage::pipeline {
 namespace {
 
@@ -47,6 +51,88 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
   for (const auto& p : settings.vertex_types) {
     check_id(p.where, "surface", p.surface, model.surfaces().size());
     check_id(p.where, "vertex", p.vertex, model.vertices().size());
+  }
+}
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+[[noreturn]] void group_error(const io::SourceLocation& where, const std::string& message) {
+  throw MeshingError(ErrorCode::InvalidInput,
+                     (where.line > 0 ? at(where) : where.file + ": " + where.element + ": ") +
+                         message);
+}
+
+// What the journal reader checks per element (journal_groups.cpp), for
+// groups built in code (cooperage::Options::groups): ids and names unique
+// per kind, names the formats keep, an entity in one block.
+template <class Setting>
+void check_kind(const std::vector<Setting>& all, const char* kind) {
+  for (size_t i = 0; i < all.size(); ++i) {
+    const Setting& g = all[i];
+    if (g.id < 1) group_error(g.where, std::string(kind) + " id " + std::to_string(g.id) + " is not positive");
+    const bool name_ok = !g.name.empty() && g.name.size() <= 32 &&
+                         std::isalpha(static_cast<unsigned char>(g.name[0])) &&
+                         std::all_of(g.name.begin(), g.name.end(), [](char c) {
+                           return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                         });
+    if (!name_ok)
+      group_error(g.where, std::string(kind) + " " + std::to_string(g.id) + ": the name \"" +
+                               g.name.substr(0, 40) + "\" must be a letter, then letters, digits "
+                               "or '_' (at most 32 characters)");
+    for (size_t j = 0; j < i; ++j) {
+      if (all[j].id == g.id)
+        group_error(g.where, std::string(kind) + " id " + std::to_string(g.id) + " is used twice");
+      if (lower(all[j].name) == lower(g.name))
+        group_error(g.where, std::string(kind) + " name \"" + g.name + "\" is used twice");
+    }
+  }
+}
+
+}  // namespace
+
+void check_groups(const geom::Model& model, const io::GroupSettings& groups) {
+  check_kind(groups.blocks, "block");
+  check_kind(groups.side_sets, "side set");
+  check_kind(groups.node_sets, "node set");
+  std::map<std::pair<int, int>, int> block_of;  // (dim, id) -> block
+  for (const auto& b : groups.blocks) {
+    if (b.volumes.empty() == b.surfaces.empty())
+      group_error(b.where, "block " + std::to_string(b.id) +
+                               " needs exactly one of volumes (a volume mesh) and surfaces (a "
+                               "surface mesh)");
+    for (int dim : {3, 2}) {
+      for (int id : dim == 3 ? b.volumes : b.surfaces) {
+        auto [it, fresh] = block_of.emplace(std::make_pair(dim, id), b.id);
+        if (!fresh)
+          group_error(b.where, std::string(dim == 3 ? "volume " : "surface ") +
+                                   std::to_string(id) + " is in blocks " +
+                                   std::to_string(it->second) + " and " + std::to_string(b.id) +
+                                   "; an element belongs to one block");
+      }
+    }
+  }
+  for (const auto& s : groups.side_sets)
+    if (s.surfaces.empty())
+      group_error(s.where, "side set " + std::to_string(s.id) + " has no surfaces");
+  for (const auto& n : groups.node_sets)
+    if (n.surfaces.empty() && n.curves.empty() && n.vertices.empty())
+      group_error(n.where, "node set " + std::to_string(n.id) + " has no surfaces, curves or vertices");
+  const size_t n_vol = model.volumes().size(), n_surf = model.surfaces().size();
+  for (const auto& b : groups.blocks) {
+    for (int v : b.volumes) check_id(b.where, "volume", v, n_vol);
+    for (int s : b.surfaces) check_id(b.where, "surface", s, n_surf);
+  }
+  for (const auto& s : groups.side_sets)
+    for (int id : s.surfaces) check_id(s.where, "surface", id, n_surf);
+  for (const auto& n : groups.node_sets) {
+    for (int id : n.surfaces) check_id(n.where, "surface", id, n_surf);
+    for (int id : n.curves) check_id(n.where, "curve", id, model.curves().size());
+    for (int id : n.vertices) check_id(n.where, "vertex", id, model.vertices().size());
   }
 }
 

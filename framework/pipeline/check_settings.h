@@ -13,6 +13,13 @@ namespace cooperage::pipeline {
 /// model does not have, or for elements="wedge" / "mixed" with scheme="map".
 void check_settings(const geom::Model& model, const io::MeshSettings& settings);
 
+/// The journal's <block>, <sideset> and <nodeset> (or groups built in code,
+/// cooperage::Options::groups) are well formed (ids and names unique per
+/// kind, names of a letter then letters, digits, '_', at most 32
+/// characters, an entity in one block, no empty group) and their ids exist
+/// in the model. Throws MeshingError(InvalidInput) naming the journal line.
+void check_groups(const geom::Model& model, const io::GroupSettings& groups);
+
 /// Every scheme pin (surface and volume scheme="...") names a scheme of its
 /// dimension in the registry (built in or from a plug-in). Throws
 /// MeshingError(InvalidInput) naming the journal line, the closest

@@ -28,6 +28,17 @@ std::string entity_setting(const io::MeshSettings& s) {
   return {};
 }
 
+// The first <block>/<sideset>/<nodeset> of the job, as "<block> at job.xml:12", or "".
+std::string group_setting(const io::GroupSettings& g) {
+  const auto at = [](const char* tag, const io::SourceLocation& where) {
+    return std::string("<") + tag + "> at " + place(where);
+  };
+  if (!g.blocks.empty()) return at("block", g.blocks.front().where);
+  if (!g.side_sets.empty()) return at("sideset", g.side_sets.front().where);
+  if (!g.node_sets.empty()) return at("nodeset", g.node_sets.front().where);
+  return {};
+}
+
 bool scheme_pinned(const io::MeshSettings& s, int volume) {
   for (const auto& v : s.volumes) {
     if (v.id == volume && v.scheme != "auto") return true;
@@ -64,7 +75,9 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   for (int v : todo) {
     if (scheme_pinned(settings, v)) return out;  // the planner refuses the pin, naming it
   }
-  if (const std::string setting = entity_setting(settings); !setting.empty()) {
+  std::string setting = entity_setting(settings);
+  if (setting.empty()) setting = group_setting(job.groups);
+  if (!setting.empty()) {
     throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(todo.front()),
                        "no hex scheme applies, and automatic decomposition would renumber the "
                        "entities that " + setting + " refers to by id; cut the volume with "

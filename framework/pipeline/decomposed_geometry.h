@@ -21,7 +21,8 @@ struct DecomposedGeometry {
 /// build_geometry(job), then the decomposition when `dim` is 3 and
 /// job.mesh->decompose is Auto. A cut piece is checked with `planner` (its
 /// shared faces' schemes agree, its intervals are feasible).
-/// Entity ids in the journal's settings refer to the model before any cut,
+/// Entity ids in the journal's settings (and its blocks, side sets and node
+/// sets) refer to the model before any cut,
 /// so a job that sets entities by id is not decomposed: a volume no scheme
 /// applies to is then refused naming the setting (unless the volume's own
 /// scheme is pinned, when the planner's refusal of the pin stands).

@@ -423,6 +423,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     DecomposedGeometry g = build_decomposed_geometry(job, registry, options.planner, options.dim);
     result.model = std::move(g.model);
     result.decomposition = std::move(g.decomposition);
+    check_groups(result.model, job.groups);
     result.stages.push_back({"geometry", g.geometry_seconds});
     if (!result.decomposition.volumes.empty())
       result.stages.push_back({"decompose", seconds_since(stage_start) - g.geometry_seconds});
@@ -450,6 +451,8 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     report(options, "export " + clip_path(e.file), 0, 1);
     io::ExportOptions export_options;
     export_options.binary = e.binary;
+    export_options.groups = job.groups;
+    export_options.skip_empty_groups = options.allow_partial;
     try {
       batch.stage(resolve_path(job.base_dir, e.file), result.mesh.mesh, result.model, export_options);
     } catch (const MeshingError& err) {

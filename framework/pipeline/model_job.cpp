@@ -43,11 +43,11 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   }
   for (const std::string& e : options.exports) {
     const std::string ext = std::filesystem::path(e).extension().string();
-    if (options.binary && ext != ".vtu" && ext != ".msh") {
+    if (options.binary && ext != ".vtu" && ext != ".msh" && ext != ".stl" && ext != ".ply") {
       throw MeshingError(ErrorCode::InvalidInput,
                          options.origin + ": " + options.binary_option +
-                             " is for .vtu and .msh outputs (Exodus is always binary), not '" + e +
-                             "'");
+                             " is for .vtu, .msh, .stl and .ply outputs (Exodus is always binary), "
+                             "not '" + e + "'");
     }
     job.exports.push_back({e, {options.origin, 0, options.export_option}, options.binary});
   }

@@ -20,7 +20,7 @@ struct ModelJobOptions {
   bool imprint_merge = true;                        ///< fragment touching solids
   io::ElementKind elements = io::ElementKind::Hex;  ///< for every volume
   std::vector<std::string> exports;                 ///< mesh files to write
-  bool binary = false;                              ///< binary .vtu/.msh exports
+  bool binary = false;                              ///< binary .vtu/.msh/.stl/.ply exports
   std::vector<std::string> reports;                 ///< HTML reports to write
   /// Where the settings came from, for error messages: "command line",
   /// "cooperage.mesh()"; each setting's element names its option.
@@ -38,7 +38,7 @@ struct ModelJobOptions {
 /// Wedge and mixed elements need the volume ids, so the model is read once
 /// here for them.
 /// @throws MeshingError(InvalidInput) for a size that is not positive, or
-///         binary asked of an export that is not .vtu or .msh; the
+///         binary asked of an export that is not .vtu, .msh, .stl or .ply; the
 ///         errors of pipeline::load_any() for wedge/mixed.
 io::Job model_job(const std::string& model, const ModelJobOptions& options);
 

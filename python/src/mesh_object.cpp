@@ -150,11 +150,14 @@ Exodus). Arrays stay valid after the Mesh object is gone.)doc")
           "write",
           [](const MeshObject& self, const std::filesystem::path& path) {
             py::gil_scoped_release release;
-            io::write_mesh(path.string(), self.run.mesh.mesh, self.run.model);
+            io::ExportOptions options;
+            options.groups = self.groups;
+            io::write_mesh(path.string(), self.run.mesh.mesh, self.run.model, options);
           },
           py::arg("path"),
           "Writes the mesh; the extension picks the format: .exo/.e/.g Exodus II, .msh Gmsh 4.1, "
-          ".vtu VTK, .inp Abaqus. Atomic: a failure leaves no file.")
+          ".vtu VTK, .inp Abaqus. A journal's <block>, <sideset> and <nodeset> are kept (names "
+          "included). Atomic: a failure leaves no file.")
       .def(
           "report",
           [](const MeshObject& self, const std::filesystem::path& path) {

@@ -17,6 +17,7 @@ namespace cooperage::python {
 struct MeshObject {
   pipeline::RunResult run;
   std::string title;                ///< what was meshed: the CAD or journal file
+  io::GroupSettings groups;         ///< the journal's blocks, side sets, node sets (write())
   std::optional<CellArrays> cells;  ///< built on first use
 };
 

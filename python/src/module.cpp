@@ -48,6 +48,7 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
   register_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{},
                    job.plugins);
   result->run = pipeline::run_job(job, registry, selector::mesh_options(dim, threads));
+  result->groups = job.groups;
   return result;
 }
 

@@ -121,7 +121,7 @@ def test_quality_per_cell_type(journal):
 
 def test_write_every_format_and_the_report(journal, tmp_path):
     mesh = cooperage.run(journal(BRICK))
-    for ext in ("exo", "msh", "vtu", "inp"):
+    for ext in ("exo", "msh", "vtu", "inp", "obj", "off", "stl", "ply"):
         path = tmp_path / f"brick.{ext}"
         mesh.write(path)
         assert path.stat().st_size > 0
@@ -129,9 +129,19 @@ def test_write_every_format_and_the_report(journal, tmp_path):
     html = (tmp_path / "brick.html").read_text()
     assert "<canvas class=\"mesh\"" in html and "<b>48</b> hexes" in html
     with pytest.raises(cooperage.InputError):
-        mesh.write(tmp_path / "brick.stl")
-    assert not (tmp_path / "brick.stl").exists()
+        mesh.write(tmp_path / "brick.step")
+    assert not (tmp_path / "brick.step").exists()
     assert sorted(p.name for p in tmp_path.iterdir() if ".tmp-" in p.name) == []
+
+
+def test_write_keeps_the_journals_blocks_and_sets(journal, tmp_path):
+    meshio = pytest.importorskip("meshio")
+    mesh = cooperage.run(journal(BRICK + '<block id="7" name="steel" volumes="1"/>\n'
+                                 '<nodeset id="3" name="base" vertices="1"/>\n'))
+    mesh.write(tmp_path / "b.inp")
+    m = meshio.read(tmp_path / "b.inp")
+    assert sum(len(c) for c in m.cell_sets["steel"]) == len(mesh.cells["hexahedron"]) == 48
+    assert list(m.point_sets) == ["base"] and len(m.point_sets["base"]) == 1
 
 
 def test_run_result_plan_stages_and_written_files(journal, tmp_path):

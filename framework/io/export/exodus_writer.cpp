@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "framework/io/export/export_common.h"
+#include "framework/io/export/mesh_groups.h"
 
 #include <exodusII.h>
 #include "framework/io/exodus_lazy.h"  // the library is loaded on first use
@@ -9,18 +10,21 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace cooperage::io {
 namespace {
 
-// An element block: its 0-based connectivity rows stay in the MeshDB and are
-// written 1-based in chunks (a whole 1-based copy was 32 bytes per hex).
+// An element block: its 0-based connectivity rows stay in the MeshDB (one
+// run of rows per entity of the block) and are written 1-based in chunks (a
+// whole 1-based copy was 32 bytes per hex).
 struct Block {
   int id = 0;
   const char* type = "";
   int nodes_per = 0;
-  const int* rows = nullptr;  // count * nodes_per ints, 0-based
+  std::vector<std::pair<const int*, size_t>> runs;  // rows, count; 0-based
   size_t count = 0;
   std::string name;
 };
@@ -54,10 +58,12 @@ int block_offset(int max_id) {
 }
 
 template <size_t N>
-Block make_block(int id, const char* type, const std::vector<std::array<int, N>>& elems,
-                 std::string name) {
+void add_run(Block& b, const std::vector<std::array<int, N>>& elems) {
   static_assert(sizeof(std::array<int, N>) == N * sizeof(int), "rows are contiguous ints");
-  return Block{id, type, static_cast<int>(N), elems.front().data(), elems.size(), std::move(name)};
+  if (elems.empty()) return;
+  b.nodes_per = static_cast<int>(N);
+  b.runs.emplace_back(elems.front().data(), elems.size());
+  b.count += elems.size();
 }
 
 class ExodusFile {
@@ -111,13 +117,17 @@ void put_connectivity(const ExodusFile& f, const Block& b, size_t index) {
   f.check(nc_inq_varid(f.id(), name.c_str(), &var) == NC_NOERR ? 0 : -1, "find connectivity");
   const size_t per = static_cast<size_t>(b.nodes_per);
   std::vector<int> buf(std::min(b.count, kChunk) * per);
-  for (size_t first = 0; first < b.count; first += kChunk) {
-    const size_t n = std::min(kChunk, b.count - first);
-    const int* src = b.rows + first * per;
-    for (size_t k = 0; k < n * per; ++k) buf[k] = src[k] + 1;
-    const size_t start[2] = {first, 0}, count[2] = {n, per};
-    f.check(nc_put_vara_int(f.id(), var, start, count, buf.data()) == NC_NOERR ? 0 : -1,
-            "put connectivity");
+  size_t written = 0;
+  for (const auto& [rows, count] : b.runs) {
+    for (size_t first = 0; first < count; first += kChunk) {
+      const size_t n = std::min(kChunk, count - first);
+      const int* src = rows + first * per;
+      for (size_t k = 0; k < n * per; ++k) buf[k] = src[k] + 1;
+      const size_t start[2] = {written, 0}, extent[2] = {n, per};
+      f.check(nc_put_vara_int(f.id(), var, start, extent, buf.data()) == NC_NOERR ? 0 : -1,
+              "put connectivity");
+      written += n;
+    }
   }
 }
 
@@ -146,56 +156,55 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
   detail::validate_mesh(db, model);
   const bool volume_mode = detail::has_volume_elements(db);
 
+  const detail::MeshGroups groups = detail::mesh_groups(db, model, options);
+
   // ---- element blocks ------------------------------------------------------
+  // A group's elements of the first kind (hex / quad) form a block with the
+  // group's id; those of the second (wedge / tri) one with the id, or, when
+  // the group has both, id + W named "<name>_wedge" / "<name>_tri".
   std::vector<Block> blocks;
-  std::map<int, int> hex_start, wedge_start;  // volume id -> first global element (1-based)
+  std::map<std::pair<int, bool>, int> start;  // (entity, second kind) -> first element (1-based)
   int next_elem = 1;
-  if (volume_mode) {
-    const int w = block_offset(static_cast<int>(model.volumes().size()));
-    for (const auto& [vid, v] : db.volumes()) {
-      const std::string label = detail::volume_label(model, vid);
-      if (!v.hexes.empty()) {
-        hex_start[vid] = next_elem;
-        next_elem += static_cast<int>(v.hexes.size());
-        blocks.push_back(make_block(vid, "HEX8", v.hexes, label));
-      }
-      if (!v.wedges.empty()) {
-        const bool both = !v.hexes.empty();
-        wedge_start[vid] = next_elem;
-        next_elem += static_cast<int>(v.wedges.size());
-        blocks.push_back(make_block(both ? vid + w : vid, "WEDGE6", v.wedges,
-                                    both ? label + "_wedge" : label));
-      }
+  int max_id = 0;
+  for (const auto& g : groups.blocks) max_id = std::max(max_id, g.id);
+  const int w = block_offset(max_id);
+  for (const auto& g : groups.blocks) {
+    Block first{g.id, volume_mode ? "HEX8" : "QUAD4", 0, {}, 0, g.name};
+    Block second{g.id, volume_mode ? "WEDGE" : "TRI3", 0, {}, 0, g.name};
+    for (int id : g.entities) {
+      start[{id, false}] = next_elem + static_cast<int>(first.count);
+      if (volume_mode) add_run(first, db.volume(id).hexes);
+      else add_run(first, db.surface(id).quads);
     }
-  } else {
-    const int w = block_offset(static_cast<int>(model.surfaces().size()));
-    for (const auto& [sid, s] : db.surfaces()) {
-      const std::string label = "surface_" + std::to_string(sid);
-      if (!s.quads.empty()) {
-        next_elem += static_cast<int>(s.quads.size());
-        blocks.push_back(make_block(sid, "QUAD4", s.quads, label));
-      }
-      if (!s.tris.empty()) {
-        const bool both = !s.quads.empty();
-        next_elem += static_cast<int>(s.tris.size());
-        blocks.push_back(make_block(both ? sid + w : sid, "TRI3", s.tris,
-                                    both ? label + "_tri" : label));
-      }
+    next_elem += static_cast<int>(first.count);
+    for (int id : g.entities) {
+      start[{id, true}] = next_elem + static_cast<int>(second.count);
+      if (volume_mode) add_run(second, db.volume(id).wedges);
+      else add_run(second, db.surface(id).tris);
     }
+    next_elem += static_cast<int>(second.count);
+    if (first.count > 0 && second.count > 0) {
+      second.id = g.id + w;
+      second.name = g.name + (volume_mode ? "_wedge" : "_tri");
+    }
+    if (first.count > 0) blocks.push_back(std::move(first));
+    if (second.count > 0) blocks.push_back(std::move(second));
   }
   const int n_elems = next_elem - 1;
 
   // ---- side sets (volume meshes) ---------------------------------------------
   std::vector<Set> side_sets;
-  if (volume_mode) {
+  if (volume_mode && !groups.side_sets.empty()) {
     const auto faces = detail::surface_faces(db, model, detail::exodus_hex_sides(),
                                              detail::exodus_wedge_sides());
-    for (const auto& [sid, hits] : faces) {
-      const int vid = model.surface(sid).volumes.front();
-      Set s{sid, {}, {}, "surface_" + std::to_string(sid)};
-      for (const auto& h : hits) {
-        s.entries.push_back((h.wedge ? wedge_start.at(vid) : hex_start.at(vid)) + h.element);
-        s.sides.push_back(h.side + 1);
+    for (const auto& g : groups.side_sets) {
+      Set s{g.id, {}, {}, g.name};
+      for (int sid : g.surfaces) {
+        const int vid = model.surface(sid).volumes.front();
+        for (const auto& h : faces.at(sid)) {
+          s.entries.push_back(start.at({vid, h.wedge}) + h.element);
+          s.sides.push_back(h.side + 1);
+        }
       }
       side_sets.push_back(std::move(s));
     }
@@ -203,9 +212,8 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
 
   // ---- node sets ---------------------------------------------------------------
   std::vector<Set> node_sets;
-  for (const auto& [sid, s] : db.surfaces()) {
-    if (s.size() == 0) continue;
-    Set ns{sid, detail::surface_node_set(s), {}, "surface_" + std::to_string(sid)};
+  for (const auto& g : groups.node_sets) {
+    Set ns{g.id, g.nodes, {}, g.name};
     for (int& n : ns.entries) ++n;
     node_sets.push_back(std::move(ns));
   }

@@ -1,6 +1,8 @@
 // Options shared by the mesh exporters (write_mesh.h).
 #pragma once
 
+#include "framework/io/job.h"
+
 #include <string>
 
 namespace cooperage::io {
@@ -21,6 +23,12 @@ struct ExportOptions {
   /// netCDF. Classic is the default: as fast once the header has room for
   /// every definition (bench/RESULTS.md, issue 20) and read by every tool.
   bool exodus_netcdf4 = false;
+  /// The journal's <block>, <sideset>, <nodeset> (.exo, .msh, .inp; see
+  /// mesh_groups.h). Each empty list keeps its default.
+  GroupSettings groups;
+  /// A named group none of whose entities has elements is an error, except
+  /// with this (--allow-partial: its volumes were refused), when it is left out.
+  bool skip_empty_groups = false;
 };
 
 }  // namespace cooperage::io

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "framework/io/export/export_common.h"
+#include "framework/io/export/mesh_groups.h"
 #include "framework/io/export/stream_buffer.h"
 
 #include <map>
@@ -65,10 +66,42 @@ void write_box(MshOut& out, const BoundingBox& b) {
   out.d(lo.x()).d(lo.y()).d(lo.z()).d(hi.x()).d(hi.y()).d(hi.z());
 }
 
-// numPhysicalTags then the tag (the entity's own id) when it has elements.
-void write_physical(MshOut& out, bool has, int tag) {
-  out.z(has ? 1 : 0);
-  if (has) out.i(tag);
+// numPhysicalTags then the tags.
+void write_physical(MshOut& out, const std::vector<int>& tags) {
+  out.z(tags.size());
+  for (int t : tags) out.i(t);
+}
+
+/// Physical groups: "dim tag \"name\"" lines, and each entity's tags.
+struct Physicals {
+  std::vector<std::string> names;
+  std::map<EntityKey, std::vector<int>> tags;
+  void add(int dim, int tag, const std::string& name, const std::vector<int>& entities) {
+    names.push_back(std::to_string(dim) + " " + std::to_string(tag) + " \"" + name + "\"");
+    for (int e : entities) tags[{dim, e}].push_back(tag);
+  }
+  const std::vector<int>& of(int dim, int id) const {
+    static const std::vector<int> none;
+    auto it = tags.find({dim, id});
+    return it == tags.end() ? none : it->second;
+  }
+};
+
+// Blocks and side sets as physical groups (mesh_groups.h): blocks of
+// dimension 3 (2 in a surface-only mesh), side sets of dimension 2. Without
+// named side sets, a volume mesh has a group per surface with elements.
+Physicals physicals(const mesh::MeshDB& db, const detail::MeshGroups& groups) {
+  Physicals p;
+  const int block_dim = groups.volume_mesh ? 3 : 2;
+  for (const auto& b : groups.blocks) p.add(block_dim, b.id, b.name, b.entities);
+  if (!groups.volume_mesh) return p;
+  if (groups.named_side_sets) {
+    for (const auto& s : groups.side_sets) p.add(2, s.id, s.name, s.surfaces);
+  } else {
+    for (const auto& [sid, s] : db.surfaces())
+      if (s.size() > 0) p.add(2, sid, "surface_" + std::to_string(sid), {sid});
+  }
+  return p;
 }
 
 template <size_t N>
@@ -117,7 +150,8 @@ std::vector<EntityKey> node_entities(const mesh::MeshDB& db, const geom::Model& 
   return key;
 }
 
-void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
+void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model,
+                const detail::MeshGroups& named) {
   out.line("$MeshFormat");
   if (out.binary()) {
     out.text() << "4.1 1 " << static_cast<int>(sizeof(size_t)) << '\n';
@@ -128,20 +162,10 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
   out.line("$EndMeshFormat");
 
   // ---- physical names (text in both encodings) ----------------------------
-  std::vector<std::string> physical;
-  for (const auto& [vid, v] : db.volumes()) {
-    if (v.size() > 0) {
-      physical.push_back("3 " + std::to_string(vid) + " \"" + detail::volume_label(model, vid) + "\"");
-    }
-  }
-  for (const auto& [sid, s] : db.surfaces()) {
-    if (s.size() > 0) {
-      physical.push_back("2 " + std::to_string(sid) + " \"surface_" + std::to_string(sid) + "\"");
-    }
-  }
+  const Physicals physical = physicals(db, named);
   out.line("$PhysicalNames");
-  out.line(std::to_string(physical.size()));
-  for (const auto& p : physical) out.line(p);
+  out.line(std::to_string(physical.names.size()));
+  for (const auto& p : physical.names) out.line(p);
   out.line("$EndPhysicalNames");
 
   // ---- entities --------------------------------------------------------------
@@ -182,7 +206,7 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
     }
     out.i(s.id);
     write_box(out, b);
-    write_physical(out, m.size() > 0, s.id);
+    write_physical(out, physical.of(2, s.id));
     out.z(bounding.size());
     for (int c : bounding) out.i(c);
     out.eol();
@@ -199,7 +223,7 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
     }
     out.i(v.id);
     write_box(out, b);
-    write_physical(out, m.size() > 0, v.id);
+    write_physical(out, physical.of(3, v.id));
     out.z(bounding.size());
     for (int s : bounding) out.i(s);
     out.eol();
@@ -229,12 +253,18 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
   out.line("$EndNodes");
 
   // ---- elements ------------------------------------------------------------------
+  // Only the elements of entities in a physical group: Gmsh writes no others
+  // when groups exist, and meshio refuses a file with some elements outside
+  // every group. (By default every entity with elements is in one.)
+  const auto in_group = [&](int dim, int id) { return !physical.of(dim, id).empty(); };
   size_t blocks = 0, total = 0;
   for (const auto& [vid, v] : db.volumes()) {
+    if (!in_group(3, vid)) continue;
     blocks += !v.hexes.empty() + !v.wedges.empty();
     total += v.size();
   }
   for (const auto& [sid, s] : db.surfaces()) {
+    if (!in_group(2, sid)) continue;
     blocks += !s.quads.empty() + !s.tris.empty();
     total += s.size();
   }
@@ -243,7 +273,7 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
   out.eol();
   size_t tag = 1;
   auto block = [&](int dim, int id, int type, const auto& elems) {
-    if (elems.empty()) return;
+    if (elems.empty() || !in_group(dim, id)) return;
     out.i(dim).i(id).i(type).z(elems.size());
     out.eol();
     for (const auto& e : elems) {
@@ -268,10 +298,11 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model) {
 void write_msh(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
                const ExportOptions& options) {
   detail::validate_mesh(db, model);
+  const detail::MeshGroups groups = detail::mesh_groups(db, model, options);
   detail::write_text_atomically(path, [&](std::ostream& os) {
     StreamBuffer buffer(os);
     MshOut out(buffer, options.binary);
-    write_body(out, db, model);
+    write_body(out, db, model, groups);
   });
 }
 

@@ -5,6 +5,7 @@
 #include "framework/io/export/exodus_writer.h"
 #include "framework/io/export/inp_writer.h"
 #include "framework/io/export/msh_writer.h"
+#include "framework/io/export/surface_writer.h"
 #include "framework/io/export/vtu_writer.h"
 
 #include <algorithm>
@@ -58,7 +59,8 @@ void remove_dir_tree(const std::string& dir) noexcept {
 
 bool known_mesh_extension(const std::string& path) {
   const std::string ext = extension_of(path);
-  return ext == "exo" || ext == "e" || ext == "g" || ext == "msh" || ext == "vtu" || ext == "inp";
+  return ext == "exo" || ext == "e" || ext == "g" || ext == "msh" || ext == "vtu" || ext == "inp" ||
+         is_surface_format(ext);
 }
 
 void write_mesh(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
@@ -68,11 +70,12 @@ void write_mesh(const std::string& path, const mesh::MeshDB& db, const geom::Mod
   if (ext == "msh") return write_msh(path, db, model, options);
   if (ext == "vtu") return write_vtu(path, db, model, options);
   if (ext == "inp") return write_inp(path, db, model, options);
+  if (is_surface_format(ext)) return write_surface_mesh(path, db, model, options);
   throw MeshingError(ErrorCode::InvalidInput,
                      "cannot export '" + clip_path(path) + "': unknown extension '" +
                          (ext.empty() ? std::string() : "." + clip(ext, 16)) +
                          "' (allowed: .exo, .e, .g (Exodus II), .msh (Gmsh 4.1), "
-                         ".vtu (VTK), .inp (Abaqus))");
+                         ".vtu (VTK), .inp (Abaqus), .obj, .off, .stl, .ply (surfaces))");
 }
 
 void check_export_target(const std::string& path) {
@@ -80,7 +83,7 @@ void check_export_target(const std::string& path) {
   if (!known_mesh_extension(path))
     throw MeshingError(ErrorCode::InvalidInput,
                        "\"" + clip_path(path) + "\" has no mesh file extension (allowed: .exo, "
-                       ".e, .g, .msh, .vtu, .inp)");
+                       ".e, .g, .msh, .vtu, .inp, .obj, .off, .stl, .ply)");
   const std::string name = fs::path(path).filename().string();
   if (name.size() > NAME_MAX || path.size() >= PATH_MAX)
     throw MeshingError(ErrorCode::InvalidInput,

@@ -14,7 +14,8 @@ namespace cooperage::io {
 /// Writes `db` to `path`, choosing the format by the (case-insensitive)
 /// extension: .exo/.e/.g Exodus II (exodus_writer.h), .msh Gmsh 4.1 ASCII
 /// (msh_writer.h), .vtu VTK XML unstructured grid (vtu_writer.h), .inp Abaqus
-/// (inp_writer.h).
+/// (inp_writer.h), .obj .off .stl .ply surface meshes through OpenMesh
+/// (surface_writer.h: a volume mesh gives its boundary).
 ///
 /// Every writer validates the mesh first (node indices in range, meshed ids
 /// in the model; MeshingError(InvalidInput) otherwise), writes a temporary
@@ -32,7 +33,8 @@ namespace cooperage::io {
 void write_mesh(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
                 const ExportOptions& options = {});
 
-/// True when write_mesh knows the extension of `path` (.exo .e .g .msh .vtu .inp).
+/// True when write_mesh knows the extension of `path` (.exo .e .g .msh .vtu .inp
+/// .obj .off .stl .ply).
 bool known_mesh_extension(const std::string& path);
 
 /// Checks, before any meshing, that `path` can be written: a known

@@ -277,8 +277,8 @@ TEST(JournalErrors, MeshQualityAndExportSemantics) {
                {"<quality>", "\"metric\"", "\"scaled_jacobian\""});
   expect_error(journal(kBrick, "<quality metric=\"skew\" min=\"0.8\" max=\"0.2\"/>"),
                ErrorCode::InvalidInput, {"<quality>", "greater"});
-  expect_error(journal(kBrick, "<export file=\"out.stl\"/>"), ErrorCode::InvalidInput,
-               {"job.xml:5: <export>:", "out.stl", ".exo, .msh, .vtu, .inp"});
+  expect_error(journal(kBrick, "<export file=\"out.step\"/>"), ErrorCode::InvalidInput,
+               {"job.xml:5: <export>:", "out.step", ".exo, .msh, .vtu, .inp, .obj, .off, .stl, .ply"});
 }
 
 TEST(JournalErrors, ReportFileAndOrder) {

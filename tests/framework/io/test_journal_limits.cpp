@@ -69,7 +69,7 @@ TEST(JournalLimits, NoErrorEchoesMoreThanALineOfInput) {
            journal("<brick name=\"b\" size=\"1 1 1\" " + big + "=\"1\"/>"),  // attribute name
            journal("<brick name=\"b\" size=\"" + big + "\"/>"),           // attribute value
            journal("<brick name=\"b\" size=\"1 1 1\">" + big + "</brick>"),  // text
-           journal(R"(<brick name="b" size="1 1 1"/>)", "<export file=\"" + big + ".stl\"/>"),
+           journal(R"(<brick name="b" size="1 1 1"/>)", "<export file=\"" + big + ".step\"/>"),
            "<cooperage version=\"" + big + "\"/>",
            "<" + big + ">",
        }) {

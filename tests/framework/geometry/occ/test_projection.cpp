@@ -28,7 +28,7 @@ double brute_distance(const geom::SurfaceGeometry& g, const Vec3& p) {
   Vec2 step((u.y() - u.x()) / n, (v.y() - v.x()) / n);
   for (int it = 0; it < 60; ++it) {
     bool moved = false;
-    for (const Vec2 d : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)}) {
+    for (const Vec2& d : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)}) {
       Vec2 q = at + d.cwiseProduct(step);
       q.x() = std::clamp(q.x(), u.x(), u.y());
       q.y() = std::clamp(q.y(), v.x(), v.y());
@@ -102,7 +102,7 @@ TEST(OccProjection, WarmStartAgreesWithTheGlobalSearch) {
       const auto global = s.geometry->project(p);
       // A good hint (the answer nudged), a poor one (the box centre), a
       // useless one (a far corner) and a non-finite one.
-      for (const Vec2 hint : {Vec2(global.uv + 0.01 * Vec2(u.y() - u.x(), v.y() - v.x())),
+      for (const Vec2& hint : {Vec2(global.uv + 0.01 * Vec2(u.y() - u.x(), v.y() - v.x())),
                               Vec2(0.5 * (u.x() + u.y()), 0.5 * (v.x() + v.y())),
                               Vec2(u.y(), v.y()),
                               Vec2(std::nan(""), 0.0)}) {

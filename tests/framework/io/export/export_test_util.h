@@ -48,13 +48,15 @@ inline bool have_meshio() {
   return std::system(cmd.c_str()) == 0;
 }
 
-/// Runs readback.py on `file`; returns its output lines split in words.
-/// Fails the test (and returns empty) when the script fails.
+/// Runs `script` (readback.py, or groups_readback.py) of this folder on
+/// `file`; returns its output lines split in words. Fails the test (and
+/// returns empty) when the script fails.
 inline std::vector<std::vector<std::string>> readback(const std::string& file,
-                                                      const std::string& extra = "") {
+                                                      const std::string& extra = "",
+                                                      const std::string& script = "readback.py") {
   const std::string out = file + ".readback.txt";
   const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) + " " + COOPERAGE_SOURCE_DIR +
-                          "/tests/framework/io/export/readback.py '" + file + "' " + extra +
+                          "/tests/framework/io/export/" + script + " '" + file + "' " + extra +
                           " > '" + out + "' 2>&1";
   const int rc = std::system(cmd.c_str());
   std::vector<std::vector<std::string>> lines;
@@ -87,6 +89,13 @@ inline std::vector<std::string> value(const std::vector<std::vector<std::string>
   }
   ADD_FAILURE() << "read-back has no " << key;
   return {};
+}
+
+/// True when Debian's python also has netCDF4 (meshio's Exodus reader needs it).
+inline bool have_netcdf4() {
+  const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) +
+                          " -c 'import netCDF4' > /dev/null 2>&1";
+  return std::system(cmd.c_str()) == 0;
 }
 
 #define COOPERAGE_REQUIRE_MESHIO()                                                        \

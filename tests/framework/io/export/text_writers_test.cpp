@@ -156,7 +156,7 @@ TEST_P(MshEncoding, ReadsBackWithMeshioAndGmsh) {
 }
 
 INSTANTIATE_TEST_SUITE_P(MshWriter, MshEncoding, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "binary" : "ascii"; });
+                         [](const auto& p) { return p.param ? "binary" : "ascii"; });
 
 TEST(MshWriter, BinaryHeaderAndSize) {
   const TestMesh t = two_blocks();
@@ -224,7 +224,7 @@ TEST_P(VtuEncoding, ReadsBackWithMeshio) {
 }
 
 INSTANTIATE_TEST_SUITE_P(VtuWriter, VtuEncoding, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "binary" : "ascii"; });
+                         [](const auto& p) { return p.param ? "binary" : "ascii"; });
 
 TEST_P(VtuEncoding, SurfacesOnRequestAndForSurfaceMeshes) {
   COOPERAGE_REQUIRE_MESHIO();

@@ -50,14 +50,14 @@ TEST(WriteMesh, DispatchesOnExtension) {
 TEST(WriteMesh, UnknownExtensionListsAllowedOnes) {
   const TestMesh t = one_block();
   const std::string dir = scratch_dir();
-  for (const std::string name : {"/mesh.stl", "/mesh", "/dir.d/mesh"}) {
+  for (const std::string name : {"/mesh.step", "/mesh", "/dir.d/mesh"}) {
     try {
       io::write_mesh(dir + name, t.db, t.model);
       ADD_FAILURE() << "no error for " << name;
     } catch (const MeshingError& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
       const std::string m = e.what();
-      for (const char* ext : {".exo", ".e", ".g", ".msh", ".vtu", ".inp"})
+      for (const char* ext : {".exo", ".e", ".g", ".msh", ".vtu", ".inp", ".obj", ".off", ".stl", ".ply"})
         EXPECT_NE(m.find(ext), std::string::npos) << m;
     }
   }
