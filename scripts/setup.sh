@@ -31,5 +31,5 @@ if [ "${COOPERAGE_SKIP_APT:-0}" != 1 ] && [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE="${CMAKE_BUILD_TYPE:-Release}"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE="${CMAKE_BUILD_TYPE:-Release}" -DCOOPERAGE_WERROR=ON
 cmake --build "$build" -j2
