@@ -46,6 +46,11 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
         << "  -- " << c.reason << "\n";
     for (const auto& k : c.candidates) out << "    " << selector::describe(k) << "\n";
+    if (const auto w = sel.waits_for.find(c.id); c.dim == 3 && w != sel.waits_for.end()) {
+      out << "    meshed after volume";
+      for (int v : w->second) out << " " << v;
+      out << " (takes its mesh of a shared surface)\n";
+    }
     if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
       std::istringstream lines(cooper::describe_plan(*p));
       for (std::string line; std::getline(lines, line);) out << "    " << line << "\n";
@@ -199,6 +204,10 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
       j.value(c.reason);
       j.key("pinned");
       j.value(c.pinned);
+      if (const auto w = sel.waits_for.find(c.id); c.dim == 3 && w != sel.waits_for.end()) {
+        j.key("meshed_after");
+        j.value(w->second);
+      }
       if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
         j.key("barrel_tree");
         write_barrel_tree(j, *p);

@@ -271,6 +271,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       if (refusals.refused(id)) continue;
       (ready ? wave : later).push_back(id);
     }
+    if (wave.empty() && later.empty()) break;  // the rest was refused: its makers failed
     if (wave.empty()) {  // the selector keeps the waits acyclic
       throw MeshingError(ErrorCode::Internal, "volumes wait for each other's meshes");
     }

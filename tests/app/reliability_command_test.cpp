@@ -100,6 +100,32 @@ TEST_F(ReliabilityCommand, AnAssemblyPrintsEveryVerdictAndAShortError) {
   EXPECT_TRUE(files().empty());
 }
 
+// Campaign case 1810 (2026-12-02): four touching bricks, where the foot
+// takes the block's mesh of their shared face (it waits for the block). The
+// block failed in meshing, the foot was refused for it, and the mesher then
+// stopped with an internal error (exit 3) because nothing was left to mesh.
+TEST_F(ReliabilityCommand, AVolumeWaitingForAFailedNeighbourIsRefusedNotAnInternalError) {
+  const char* body = R"(  <geometry>
+    <brick name="block" origin="0 0 0" size="6 4 2"/>
+    <brick name="boss1" origin="1 1 2" size="1.5 1.5 1"/>
+    <brick name="boss2" origin="0 0.25 2" size="1 0.75 0.5"/>
+    <brick name="foot" origin="3.5 1.5 -1" size="1.5 1.5 1"/>
+  </geometry>
+  <mesh size="0.25"/>
+  <export file="out.vtu"/>
+)";
+  const auto r = run_command(kCli + " run -q " + journal("touching.xml", body));
+  EXPECT_NE(r.exit_code, 3) << r.err;
+  if (r.exit_code == 0) {  // once the block meshes, everything must
+    EXPECT_EQ(files(), std::vector<std::string>{"out.vtu"});
+    return;
+  }
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.out.find("volume 4: refused: it takes the mesh of a shared surface from volume 1"), std::string::npos)
+      << r.out;
+  EXPECT_TRUE(files().empty());
+}
+
 TEST_F(ReliabilityCommand, AllowPartialWritesWhatMeshedAndExitsOne) {
   const auto r = run_command(kCli + " run -q --allow-partial " + journal("asm.xml", kAssembly));
   EXPECT_EQ(r.exit_code, 1) << r.err << r.out;
