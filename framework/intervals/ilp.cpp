@@ -136,7 +136,7 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
   const std::string seconds = std::to_string(options.max_seconds);
   const char* argv[] = {"cooperage", "-log", "0", "-slog", "0", "-threads", "0",
                         "-randomSeed", seed.c_str(), "-randomCbcSeed", seed.c_str(),
-                        "-seconds", seconds.c_str(), "-ratioGap", "0", "-allowableGap", "1e-9",
+                        "-seconds", seconds.c_str(), "-ratioGap", "0.01", "-allowableGap", "1e-9",
                         "-increment", "1e-7", "-solve", "-quit"};
   const auto started = std::chrono::steady_clock::now();
   CbcMain1(static_cast<int>(sizeof(argv) / sizeof(argv[0])), argv, model, nullptr, data);
@@ -147,7 +147,7 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
     result.status = IlpStatus::Infeasible;
     return result;
   }
-  model.branchAndBound();
+  // (CbcMain1 "-solve" has run the branch and bound)
   const double* best = model.bestSolution();
   if (!best) {
     // CbcMain1 reports infeasibility found in preprocessing as "stopped on
