@@ -163,6 +163,11 @@ class Selector {
       if (it != roles_.end() && (mine || theirs)) {
         // One volume meshes the surface itself; the other must take that mesh.
         const bool taken = mine ? !theirs && it->second.takes_existing : !mine && takes.count(surface) > 0;
+        if (mine && theirs) {
+          return "surface " + std::to_string(surface) + " would be meshed by both volume " +
+                 std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ") and volume " +
+                 std::to_string(volume) + " (" + scheme_name + "), each sweep ending on it or imprinting it";
+        }
         if (!taken) {
           return "surface " + std::to_string(surface) + " is meshed by " +
                  (theirs ? "volume " + std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ")"
