@@ -188,6 +188,25 @@ void write_decomposition(const decompose::Report& cuts, JsonWriter& j) {
   j.end_object();
 }
 
+// Every scheme's verdict: {scheme, ok, score, why} each.
+void write_candidates(JsonWriter& j, const std::vector<selector::Candidate>& candidates) {
+  j.key("candidates");
+  j.begin_array();
+  for (const auto& k : candidates) {
+    j.begin_object();
+    j.key("scheme");
+    j.value(k.scheme);
+    j.key("ok");
+    j.value(k.applicability.ok);
+    j.key("score");
+    j.value(k.applicability.score);
+    j.key("why");
+    j.value(k.applicability.why);
+    j.end_object();
+  }
+  j.end_array();
+}
+
 void write_json(const selector::Selection& sel, const decompose::Report& cuts,
                 const std::string& decomposition_failed, bool intervals_checked,
                 const geom::Model& model, const scheme::Registry& registry, std::ostream& out) {
@@ -212,21 +231,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
         j.key("barrel_tree");
         write_barrel_tree(j, *p);
       }
-      j.key("candidates");
-      j.begin_array();
-      for (const auto& k : c.candidates) {
-        j.begin_object();
-        j.key("scheme");
-        j.value(k.scheme);
-        j.key("ok");
-        j.value(k.applicability.ok);
-        j.key("score");
-        j.value(k.applicability.score);
-        j.key("why");
-        j.value(k.applicability.why);
-        j.end_object();
-      }
-      j.end_array();
+      write_candidates(j, c.candidates);
       j.end_object();
     }
     j.end_array();
@@ -246,19 +251,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
     j.value(id);
     j.key("reason");
     j.value(r.message);
-    j.key("candidates");
-    j.begin_array();
-    for (const auto& k : refused_candidates(id, model, registry)) {
-      j.begin_object();
-      j.key("scheme");
-      j.value(k.scheme);
-      j.key("ok");
-      j.value(k.applicability.ok);
-      j.key("why");
-      j.value(k.applicability.why);
-      j.end_object();
-    }
-    j.end_array();
+    write_candidates(j, refused_candidates(id, model, registry));
     j.end_object();
   }
   j.end_array();
