@@ -95,7 +95,6 @@ MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int 
 
 struct EdgeGap {
   Vec3 gap = Vec3::Zero();  ///< from the edge midpoint to the surface or curve
-  bool on_curve = false;    ///< a boundary edge along a model curve
 };
 
 std::uint64_t edge_key(int a, int b) {
@@ -156,7 +155,6 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
     const int curve = uses[key] == 1 ? curve_of_edge(model, db, s, a, b, mid) : 0;
     if (curve > 0) {
       const geom::Curve& c = model.curve(curve);
-      g.on_curve = true;
       if (c.geometry->type() != geom::CurveType::Line) {
         const Vec3 q = c.geometry->point(c.geometry->closest_parameter(mid));
         if (q.allFinite()) g.gap = q - mid;
