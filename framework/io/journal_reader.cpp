@@ -6,10 +6,12 @@
 #include "framework/core/error.h"
 #include "framework/core/text.h"
 #include "framework/io/journal_xml.h"
+#include "framework/quality/metric.h"
 
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -49,6 +51,12 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 QualityCheck read_quality(const Element& e) {
   e.allow_attributes({"metric", "min", "max", "action"});
   e.expect_empty();
@@ -62,6 +70,15 @@ QualityCheck read_quality(const Element& e) {
   if (q.min && q.max && *q.min > *q.max)
     e.fail("\"min\" (" + clip(*e.text("min")) + ") is greater than \"max\" (" +
            clip(*e.text("max")) + ")");
+  // A threshold no element can meet fails every run whatever the mesh: a
+  // typing slip (e.g. min="65536" for the scaled Jacobian), refused here.
+  const quality::Range can = quality::attainable_range(*quality::metric_from_string(q.metric));
+  if (q.min && *q.min > can.hi)
+    e.fail_at("min", "\"min\" (" + clip(*e.text("min")) + ") is above every value " + q.metric +
+                         " can take (at most " + shortest(can.hi) + ")");
+  if (q.max && *q.max < can.lo)
+    e.fail_at("max", "\"max\" (" + clip(*e.text("max")) + ") is below every value " + q.metric +
+                         " can take (at least " + shortest(can.lo) + ")");
   if (e.choice("action", {"warn", "fail"}).value_or(0) == 1) q.action = QualityCheck::Action::Fail;
   q.where = e.where();
   return q;

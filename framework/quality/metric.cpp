@@ -140,4 +140,14 @@ std::optional<Range> natural_range(Metric metric) {
   }
 }
 
+Range attainable_range(Metric metric) {
+  switch (metric) {
+    case Metric::Taper: return Range{0.0, kInf};
+    case Metric::AspectFrobenius:
+    case Metric::EdgeRatio: return Range{1.0, kInf};
+    case Metric::Jacobian: return Range{-kInf, kInf};
+    default: return *natural_range(metric);
+  }
+}
+
 }  // namespace cooperage::quality

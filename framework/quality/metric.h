@@ -79,4 +79,10 @@ std::optional<Range> acceptable_range(Metric metric, ElementType type);
 /// for unbounded metrics, whose histogram spans the data's finite min..max.
 std::optional<Range> natural_range(Metric metric);
 
+/// Every value `metric` can take on any element (degenerate elements aside):
+/// scaled Jacobian [-1, 1]; skew, shape, relative size [0, 1]; taper
+/// [0, inf); aspect Frobenius and edge ratio [1, inf); Jacobian unbounded.
+/// A quality threshold outside it can never be met (or never be missed).
+Range attainable_range(Metric metric);
+
 }  // namespace cooperage::quality

@@ -277,6 +277,13 @@ TEST(JournalErrors, MeshQualityAndExportSemantics) {
                {"<quality>", "\"metric\"", "\"scaled_jacobian\""});
   expect_error(journal(kBrick, "<quality metric=\"skew\" min=\"0.8\" max=\"0.2\"/>"),
                ErrorCode::InvalidInput, {"<quality>", "greater"});
+  // Thresholds no element can meet (campaign case 5926: min="65536").
+  expect_error(journal(kBrick, "<quality metric=\"scaled_jacobian\" min=\"65536\"/>"),
+               ErrorCode::InvalidInput, {"<quality>", "\"min\" (65536)", "at most 1"});
+  expect_error(journal(kBrick, "<quality metric=\"edge_ratio\" max=\"0.5\"/>"),
+               ErrorCode::InvalidInput, {"<quality>", "\"max\" (0.5)", "at least 1"});
+  expect_error(journal(kBrick, "<quality metric=\"skew\" max=\"-0.1\"/>"),
+               ErrorCode::InvalidInput, {"<quality>", "at least 0"});
   expect_error(journal(kBrick, "<export file=\"out.step\"/>"), ErrorCode::InvalidInput,
                {"job.xml:5: <export>:", "out.step", ".exo, .msh, .vtu, .inp, .obj, .off, .stl, .ply"});
 }
