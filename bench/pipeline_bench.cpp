@@ -51,3 +51,29 @@ void BM_CooperBrick(benchmark::State& state) { run_brick(state, "cooper"); }
 BENCHMARK(BM_CooperBrick)->Arg(20)->Arg(46)->Arg(100)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// Campaign case 3468 (docs/reliability.md): a 1 x L x 1 brick with a unit
+// brick against one end, size 0.25, so the long brick is swept by cooper
+// with 4 x 4L-quad caps and 4L x 4 sides. Submap's lattice walk and the
+// sweep's residual interpolation were quadratic in L (L = 10,000: 84 s);
+// hexes per second must not fall as L grows.
+void BM_LongBrickWithNeighbour(benchmark::State& state) {
+  const double length = static_cast<double>(state.range(0));
+  occ::Workbench bench;
+  bench.brick("long", {0, 0, 0}, {1, length, 1});
+  bench.brick("short", {1, 0, 0}, {2, 1, 1});  // build_model imprints and merges
+  const geom::Model model = bench.build_model();
+  io::MeshSettings settings;
+  settings.size = 0.25;
+  const pipeline::MeshOptions options = selector::mesh_options(3, 1);
+  size_t hexes = 0;
+  for (auto _ : state) {
+    const auto r = pipeline::mesh_model(model, settings, bench::builtin_registry(), options);
+    hexes = r.mesh.hex_count();
+  }
+  state.counters["hexes"] = static_cast<double>(hexes);
+  state.counters["hexes_per_s"] =
+      benchmark::Counter(static_cast<double>(hexes), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["peak_MB"] = static_cast<double>(bench::peak_memory_bytes()) / 1e6;
+}
+BENCHMARK(BM_LongBrickWithNeighbour)->Arg(500)->Arg(2000)->Arg(8000)->Unit(benchmark::kMillisecond);
