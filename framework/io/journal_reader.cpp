@@ -11,6 +11,7 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,8 +48,12 @@ const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".in
 const std::vector<std::string> kBinaryExtensions = {".vtu", ".msh", ".stl", ".ply"};
 const std::vector<std::string> kReportExtensions = {".html", ".htm"};
 
+/// A file name ending in the extension `tail` (lower case), in any case:
+/// "X.EXO" is an Exodus file, as the writers and the CAD import agree.
 bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+  if (s.size() <= tail.size()) return false;
+  return std::equal(tail.begin(), tail.end(), s.end() - static_cast<long>(tail.size()),
+                    [](char t, char c) { return t == std::tolower(static_cast<unsigned char>(c)); });
 }
 
 std::string shortest(double v) {

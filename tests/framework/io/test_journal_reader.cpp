@@ -242,6 +242,7 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_FALSE(job.exports[0].binary);
   EXPECT_FALSE(job.exports[1].binary);  // default ascii
   EXPECT_TRUE(job.exports[2].binary);   // encoding="binary"
+  EXPECT_EQ(job.exports[2].file, "result.VTU");  // extensions in any case
 }
 
 TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
