@@ -52,7 +52,18 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
   selector::Selection selection;
   {
     py::gil_scoped_release release;
-    const pipeline::PlanInput input = pipeline::plan_input(file.string(), size);
+    // Volumes no scheme fits are cut as cooperage.mesh() and `cooperage
+    // plan` cut them; when no cut helps, the undecomposed model is planned
+    // and select_schemes() names the refused volume.
+    scheme::Registry defaults;
+    register_schemes(defaults, BuiltinOptions{}, {});
+    pipeline::PlanInput input;
+    try {
+      input = pipeline::plan_input(file.string(), size, &defaults, selector::planner());
+    } catch (const MeshingError& e) {
+      if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
+      input = pipeline::plan_input(file.string(), size);
+    }
     scheme::Registry registry;
     register_schemes(registry, builtin_options(input.settings), input.plugins);
     selector::SelectOptions options;

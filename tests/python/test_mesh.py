@@ -162,8 +162,11 @@ def test_run_result_plan_stages_and_written_files(journal, tmp_path):
 
 def test_plan_matches_plan_json(journal, cli, source_dir):
     part = os.path.join(source_dir, "examples", "part.step")
-    for model, size in ((journal(BRICK), None), (part, 2)):
-        plan = cooperage.plan(model, size=size)
+    # fig3a_auto needs a cut: plan() decomposes as `cooperage plan` does.
+    fig3a = os.path.join(source_dir, "examples", "fig3a_auto.xml")
+    plans = {}
+    for model, size in ((journal(BRICK), None), (fig3a, None), (part, 2)):
+        plan = plans[model] = cooperage.plan(model, size=size)
         args = ["plan", model, "--json"] + (["--size", size] if size else [])
         ours = json.loads(cli(*args).stdout)
         theirs = [("volume", c) for c in ours["volumes"]] + [("surface", c) for c in ours["surfaces"]]
@@ -176,6 +179,8 @@ def test_plan_matches_plan_json(journal, cli, source_dir):
                 [(k["scheme"], k["ok"], k["why"]) for k in c["candidates"]]
             chosen = [k["score"] for k in c["candidates"] if k["scheme"] == c["scheme"]]
             assert row["score"] == (chosen[0] if chosen else None)
+    assert len([r for r in plans[fig3a] if r["dim"] == 3]) >= 2, "fig3a is planned as its pieces"
+    plan = plans[part]
     assert len(plan) == 2 + 10 and [r["scheme"] for r in plan[:2]] == ["cooper", "cooper"]
     assert any(r["scheme"] == "(volume)" and r["score"] is None for r in plan), \
         "a surface its volume meshes has no score of its own"
