@@ -114,7 +114,7 @@ TEST_F(RunCommand, ProgressGoesToStderrWithoutQuiet) {
 TEST_F(RunCommand, FailingQualityCheckExitsOneAndWritesNothing) {
   const std::string job = journal("bad_quality.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5"/>
-  <quality metric="skew" max="-1" action="fail"/>
+  <quality metric="jacobian" min="1" action="fail"/>
   <export file="out.exo"/>
 )");
   const auto r = run_command(kCli + " run -q " + job);

@@ -60,7 +60,7 @@ TEST_F(RunJob, TwoMergedBricksExodusHasTwoBlocksAndOneSideSetPerSurface) {
 
 TEST_F(RunJob, FailingQualityCheckSkipsExports) {
   io::Job job = journal(std::string(kTwoBricks) +
-                        "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"fail\"/>\n"
+                        "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
                         "  <export file=\"out.vtu\"/>\n");
   const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_TRUE(r.quality.failed());
@@ -70,7 +70,7 @@ TEST_F(RunJob, FailingQualityCheckSkipsExports) {
 
 TEST_F(RunJob, WarningCheckCountsButWrites) {
   io::Job job = journal(std::string(kTwoBricks) +
-                        "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"warn\"/>\n"
+                        "  <quality metric=\"jacobian\" min=\"1\" action=\"warn\"/>\n"  // each hex: 1/64
                         "  <export file=\"out.vtu\"/>\n");
   const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_FALSE(r.quality.failed());

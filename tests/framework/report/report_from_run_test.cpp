@@ -98,13 +98,13 @@ TEST_F(RunReport, StagesOfTheRunAddUpAndFollowTheDataFlow) {
 
 TEST_F(RunReport, FailingCheckSkipsExportsButWritesTheReport) {
   const auto r = run(std::string(kTwoBricks) +
-                     "  <quality metric=\"scaled_jacobian\" min=\"1.5\" action=\"fail\"/>\n"
+                     "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
                      "  <export file=\"out.exo\"/>\n  <report file=\"why.html\"/>\n");
   EXPECT_TRUE(r.exports_skipped);
   EXPECT_FALSE(fs::exists(dir_ / "out.exo"));
   ASSERT_TRUE(fs::exists(dir_ / "why.html"));
   const std::string html = slurp(dir_ / "why.html");
-  EXPECT_NE(html.find("quality check scaled_jacobian &gt;= 1.5: 128 elements outside, FAILED"),
+  EXPECT_NE(html.find("quality check jacobian &gt;= 1: 128 elements outside, FAILED"),
             std::string::npos);
   EXPECT_NE(html.find("exports skipped"), std::string::npos);
 }
