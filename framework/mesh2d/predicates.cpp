@@ -7,10 +7,6 @@
 namespace cooperage::mesh2d {
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;  // 2^-53
-// Shewchuk's first-stage error bounds (sec. 4.3 of the paper).
-constexpr double kCcwErrBound = (3.0 + 16.0 * kEps) * kEps;
-constexpr double kIccErrBound = (10.0 + 96.0 * kEps) * kEps;
 
 // Exact a + b = x + y (Knuth's two-sum).
 inline void two_sum(double a, double b, double& x, double& y) {
@@ -110,12 +106,9 @@ double incircle_exact(const Point2& a, const Point2& b, const Point2& c, const P
 
 }  // namespace
 
-double orient2d(const Point2& a, const Point2& b, const Point2& c) {
-  const double detleft = (a.x() - c.x()) * (b.y() - c.y());
-  const double detright = (a.y() - c.y()) * (b.x() - c.x());
-  const double det = detleft - detright;
-  const double detsum = std::abs(detleft) + std::abs(detright);
-  if (std::abs(det) > kCcwErrBound * detsum) return det;
+namespace detail {
+
+double orient2d_ambiguous(const Point2& a, const Point2& b, const Point2& c, double det) {
   const double s = orient2d_exact(a, b, c);
   if (s == 0.0) return 0.0;
   // Keep the exact sign; report a magnitude no larger than the bound.
@@ -123,31 +116,14 @@ double orient2d(const Point2& a, const Point2& b, const Point2& c) {
   return s > 0.0 ? mag : -mag;
 }
 
-double incircle_fast(const Point2& a, const Point2& b, const Point2& c, const Point2& d,
-                     double& permanent) {
-  const double adx = a.x() - d.x(), ady = a.y() - d.y();
-  const double bdx = b.x() - d.x(), bdy = b.y() - d.y();
-  const double cdx = c.x() - d.x(), cdy = c.y() - d.y();
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double alift = adx * adx + ady * ady;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double clift = cdx * cdx + cdy * cdy;
-  permanent = (std::abs(bdxcdy) + std::abs(cdxbdy)) * alift +
-              (std::abs(cdxady) + std::abs(adxcdy)) * blift +
-              (std::abs(adxbdy) + std::abs(bdxady)) * clift;
-  return alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-}
-
-double incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  double permanent = 0.0;
-  const double det = incircle_fast(a, b, c, d, permanent);
-  if (std::abs(det) > kIccErrBound * permanent) return det;
+double incircle_ambiguous(const Point2& a, const Point2& b, const Point2& c, const Point2& d,
+                          double det) {
   const double s = incircle_exact(a, b, c, d);
   if (s == 0.0) return 0.0;
   const double mag = std::max(std::abs(det), std::numeric_limits<double>::denorm_min());
   return s > 0.0 ? mag : -mag;
 }
+
+}  // namespace detail
 
 }  // namespace cooperage::mesh2d

@@ -5,6 +5,8 @@
 // interface).
 #pragma once
 
+#include "framework/mesh2d/predicates.h"
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -22,18 +24,14 @@ namespace cooperage::pave::detail::cdt {
 
 using V2 = Eigen::Vector2d;
 
-inline double orient(const V2& a, const V2& b, const V2& c) {
-  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-}
+// The predicates are framework/mesh2d's (exact signs, Shewchuk's adaptive
+// arithmetic): pave's own plain-double versions gave wrong signs on nearly
+// collinear fronts (issue 16 item 2, "one robust 2D layer").
+inline double orient(const V2& a, const V2& b, const V2& c) { return mesh2d::orient2d(a, b, c); }
 
 /// > 0 when d lies inside the circumcircle of the counter-clockwise a, b, c.
 inline double incircle(const V2& a, const V2& b, const V2& c, const V2& d) {
-  const double adx = a.x() - d.x(), ady = a.y() - d.y();
-  const double bdx = b.x() - d.x(), bdy = b.y() - d.y();
-  const double cdx = c.x() - d.x(), cdy = c.y() - d.y();
-  return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-         (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return mesh2d::incircle(a, b, c, d);
 }
 
 /// Offset from a to the circumcentre of the counter-clockwise a, b, c; false
