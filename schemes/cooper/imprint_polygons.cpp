@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <unordered_map>
+#include <utility>
 
 namespace cooperage::cooper {
 
@@ -105,18 +108,78 @@ std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, 
   return {left, right};
 }
 
-// Splits a loop at its first repeated node; returns false when none.
+// Splits a loop at its first repeated node (the smallest i whose node comes
+// again, at the smallest such j); returns false when none. Linear: long
+// subcap loops (a boss 7,500 elements long) made the pairwise scan stall.
 bool split_at_repeat(const Loop& loop, Loop& a, Loop& b) {
-  for (size_t i = 0; i < loop.size(); ++i) {
-    for (size_t j = i + 1; j < loop.size(); ++j) {
-      if (loop[i] != loop[j]) continue;
-      a.assign(loop.begin() + static_cast<long>(i), loop.begin() + static_cast<long>(j));
-      b.assign(loop.begin() + static_cast<long>(j), loop.end());
-      b.insert(b.end(), loop.begin(), loop.begin() + static_cast<long>(i));
-      return true;
+  std::unordered_map<int, size_t> first;
+  first.reserve(loop.size());
+  size_t best_i = loop.size(), best_j = loop.size();
+  for (size_t j = 0; j < loop.size(); ++j) {
+    const auto [it, added] = first.emplace(loop[j], j);
+    if (!added && it->second < best_i) {
+      best_i = it->second;
+      best_j = j;
     }
   }
-  return false;
+  if (best_i == loop.size()) return false;
+  a.assign(loop.begin() + static_cast<long>(best_i), loop.begin() + static_cast<long>(best_j));
+  b.assign(loop.begin() + static_cast<long>(best_j), loop.end());
+  b.insert(b.end(), loop.begin(), loop.begin() + static_cast<long>(best_i));
+  return true;
+}
+
+// The first pair of crossing segments (i, k), i < k, in the order of a
+// nested scan over i then k (segments sharing a node excluded), or none.
+// Segments are binned in a uniform grid of about four cells per segment,
+// so a loop of n segments costs O(n), not O(n^2).
+std::optional<std::pair<size_t, size_t>> first_crossing(const Loop& loop,
+                                                        const std::map<int, Vec2>& xy) {
+  const size_t n = loop.size();
+  if (n < 4) return std::nullopt;
+  std::vector<Vec2> p(n);
+  Vec2 lo = xy.at(loop[0]), hi = lo;
+  for (size_t i = 0; i < n; ++i) {
+    p[i] = xy.at(loop[i]);
+    lo = lo.cwiseMin(p[i]);
+    hi = hi.cwiseMax(p[i]);
+  }
+  const Vec2 extent = (hi - lo).cwiseMax(Vec2::Constant(1e-300));
+  // Cells: about 4n in all, shaped like the loop's box.
+  const double cells = 4.0 * static_cast<double>(n);
+  const double aspect = extent.x() / extent.y();
+  const int nx = static_cast<int>(std::clamp(std::sqrt(cells * aspect), 1.0, cells));
+  const int ny = static_cast<int>(std::clamp(cells / nx, 1.0, cells));
+  auto cell_x = [&](double x) {
+    return std::clamp(static_cast<int>((x - lo.x()) / extent.x() * nx), 0, nx - 1);
+  };
+  auto cell_y = [&](double y) {
+    return std::clamp(static_cast<int>((y - lo.y()) / extent.y() * ny), 0, ny - 1);
+  };
+  std::vector<std::vector<size_t>> grid(static_cast<size_t>(nx) * static_cast<size_t>(ny));
+  auto for_cells = [&](size_t i, auto&& visit) {
+    const Vec2& a = p[i];
+    const Vec2& b = p[(i + 1) % n];
+    for (int cx = cell_x(std::min(a.x(), b.x())); cx <= cell_x(std::max(a.x(), b.x())); ++cx) {
+      for (int cy = cell_y(std::min(a.y(), b.y())); cy <= cell_y(std::max(a.y(), b.y())); ++cy) {
+        visit(grid[static_cast<size_t>(cx) * static_cast<size_t>(ny) + static_cast<size_t>(cy)]);
+      }
+    }
+  };
+  for (size_t k = 0; k < n; ++k) for_cells(k, [&](std::vector<size_t>& c) { c.push_back(k); });
+  for (size_t i = 0; i < n; ++i) {
+    size_t best = n;
+    for_cells(i, [&](const std::vector<size_t>& c) {
+      for (size_t k : c) {
+        if (k < i + 2 || k >= best || (k + 1) % n == i) continue;
+        const int a0 = loop[i], a1 = loop[(i + 1) % n], b0 = loop[k], b1 = loop[(k + 1) % n];
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+        if (segment_hit(p[i], p[(i + 1) % n], p[k], p[(k + 1) % n])) best = k;
+      }
+    });
+    if (best < n) return std::make_pair(i, best);
+  }
+  return std::nullopt;
 }
 
 }  // namespace detail
@@ -130,41 +193,33 @@ std::vector<Loop> split_self_intersections(const Loop& input, const std::map<int
   Loop loop = input;
   // Combine proper crossings onto node pairs.
   for (int guard = 0; guard < 1000; ++guard) {
+    const auto hit = detail::first_crossing(loop, xy);
+    if (!hit) break;
     const size_t n = loop.size();
-    bool changed = false;
-    for (size_t i = 0; i < n && !changed; ++i) {
-      for (size_t k = i + 2; k < n && !changed; ++k) {
-        if ((k + 1) % n == i) continue;
-        const int a0 = loop[i], a1 = loop[(i + 1) % n], b0 = loop[k], b1 = loop[(k + 1) % n];
-        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
-        if (!detail::segment_hit(xy.at(a0), xy.at(a1), xy.at(b0), xy.at(b1))) continue;
-        // Candidate pairs (one node of each segment), closest first, even loops preferred.
-        struct Cand { size_t p, q; double d; };
-        std::vector<Cand> cands;
-        for (size_t p : {i, (i + 1) % n}) {
-          for (size_t q : {k, (k + 1) % n}) cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
+    const auto [i, k] = *hit;
+    // Candidate pairs (one node of each segment), closest first, even loops preferred.
+    struct Cand { size_t p, q; double d; };
+    std::vector<Cand> cands;
+    for (size_t p : {i, (i + 1) % n}) {
+      for (size_t q : {k, (k + 1) % n}) cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
+    }
+    std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) { return x.d < y.d; });
+    const Cand* pick = &cands.front();
+    if (even_parity) {
+      for (const Cand& c : cands) {
+        const size_t lo = std::min(c.p, c.q), hi = std::max(c.p, c.q);
+        if ((hi - lo) % 2 == 0) {
+          pick = &c;
+          break;
         }
-        std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) { return x.d < y.d; });
-        const Cand* pick = &cands.front();
-        if (even_parity) {
-          for (const Cand& c : cands) {
-            const size_t lo = std::min(c.p, c.q), hi = std::max(c.p, c.q);
-            if ((hi - lo) % 2 == 0) {
-              pick = &c;
-              break;
-            }
-          }
-        }
-        const int keep = std::min(loop[pick->p], loop[pick->q]);
-        const int drop = std::max(loop[pick->p], loop[pick->q]);
-        if (combined) combined->push_back({drop, keep});
-        for (int& v : loop) {
-          if (v == drop) v = keep;
-        }
-        changed = true;
       }
     }
-    if (!changed) break;
+    const int keep = std::min(loop[pick->p], loop[pick->q]);
+    const int drop = std::max(loop[pick->p], loop[pick->q]);
+    if (combined) combined->push_back({drop, keep});
+    for (int& v : loop) {
+      if (v == drop) v = keep;
+    }
   }
   // Split at repeated nodes (touching points), recursively.
   std::vector<Loop> out;
