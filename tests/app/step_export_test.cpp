@@ -111,7 +111,8 @@ TEST_F(StepExport, MustMeshPartsMeshFromTheirStepFiles) {
     const std::string step = path(name + ".step");
     wb.write(step);
     double solid = 0;
-    for (const auto& v : wb.build_model().volumes()) solid += v.volume;
+    const geom::Model model = wb.build_model();
+    for (const auto& v : model.volumes()) solid += v.volume;
     const auto it = size_of.find(name);
     const double size = it == size_of.end() ? 0.4 : it->second;
     const std::string out = path(name + ".exo");
@@ -136,7 +137,8 @@ TEST_F(StepExport, RunImportsTheStepFileOfAPart) {
     build(wb);
     wb.write(path(name + ".step"));
     double solid = 0;
-    for (const auto& v : wb.build_model().volumes()) solid += v.volume;
+    const geom::Model model = wb.build_model();
+    for (const auto& v : model.volumes()) solid += v.volume;
     {
       std::ofstream j(path(name + ".xml"));
       j << "<cooperage version=\"1\">\n  <geometry>\n    <import name=\"part\" file=\"" << name << ".step\"/>\n"
