@@ -7,6 +7,7 @@
 // subcap's own boundary (whose images are known through the ribs)
 // interpolated inside, then onto the real cap.
 #include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/pinched_loops.h"
 #include "schemes/cooper/residual_field.h"
 #include "schemes/cooper/smooth_cap.h"
 #include "schemes/cooper/sweep_state.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <deque>
 #include <numeric>
+#include <set>
 
 #include <Eigen/Geometry>
 
@@ -44,19 +46,12 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   for (const auto& l : p.loops) {
     for (int n : l) xy[n] = s.plane(b, end == 0 ? s.pos(n) : st.to_upper.apply(s.pos(n)));
   }
-  const std::vector<std::vector<int>> loops = oriented_loops(p.loops, xy);
-  std::vector<std::vector<Eigen::Vector2d>> loops2d;
-  std::vector<int> boundary;
-  for (size_t l = 0; l < loops.size(); ++l) {
-    loops2d.emplace_back();
-    for (int n : loops[l]) {
-      loops2d.back().push_back(xy.at(n));
-      boundary.push_back(n);
-    }
-  }
+  // Loops touching at a node (features meeting at a corner) pass it twice.
+  const UnpinchedLoops loops = unpinch_loops(oriented_loops(p.loops, xy), xy);
+  const std::vector<int>& boundary = loops.nodes;
   scheme::QuadMesh2D m;
   try {
-    m = s.mesher->mesh(loops2d);
+    m = s.mesher->mesh(loops.points);
   } catch (const std::exception& e) {
     fail(s.vid, "meshing a subcap of " + (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
                     " in " + s.barrel_name(b) + ": " + e.what());
@@ -85,6 +80,13 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   }
   for (const auto& t : m.tris) {
     p.tris.push_back({node[static_cast<size_t>(t[0])], node[static_cast<size_t>(t[1])], node[static_cast<size_t>(t[2])]});
+  }
+  if (loops.pinches > 0) {
+    // Both passes of a touching node are one node again: no element may hold it twice.
+    auto repeats = [](const auto& e) { return std::set<int>(e.begin(), e.end()).size() != e.size(); };
+    const bool bad = std::any_of(p.quads.begin(), p.quads.end(), repeats) ||
+                     std::any_of(p.tris.begin(), p.tris.end(), repeats);
+    if (bad) fail(s.vid, "a subcap in " + s.barrel_name(b) + " touches itself at a node, and its mesh joins the two sides there");
   }
   p.meshed = true;
 }
@@ -161,10 +163,12 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   const AffineMap& map = down ? st.to_lower : st.to_upper;
   std::vector<int> ring;
   std::vector<Vec3> residual;
+  std::set<int> seen;  // a node where loops touch is on the ring once
   for (const auto& l : from.loops) {
     for (int n : l) {
       const auto it = across.find(n);
       if (it == across.end()) fail(s.vid, s.barrel_name(b) + ": a subcap boundary node has no rib across the barrel");
+      if (!seen.insert(n).second) continue;
       ring.push_back(n);
       residual.push_back(s.pos(it->second) - map.apply(s.pos(n)));
     }

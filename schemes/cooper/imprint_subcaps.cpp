@@ -306,6 +306,7 @@ bool Imprinter::try_gaps() {
         continue;
       }
       const size_t n = outer.size();
+      ribbed = gap_anchors(e, outer, ribbed);
       for (size_t g = 0; g < ribbed.size(); ++g) {
         const size_t k0 = ribbed[g];
         const size_t k1 = ribbed[(g + 1) % ribbed.size()];
@@ -313,8 +314,7 @@ bool Imprinter::try_gaps() {
         for (size_t k = (k0 + 1) % n; k != k1; k = (k + 1) % n) gap.push_back(outer[k]);
         const int x = *partner(e, outer[k0]);
         const int y = *partner(e, outer[k1]);
-        if (gap.empty() && (x == y || opposing_edge(e, x, y))) continue;
-        if (gap.empty() && ribbed.size() == 1) continue;
+        if (skipped_gap(e, gap, x, y, ribbed.size())) continue;
         const long before = version_;
         if (gap_step(e, s, outer[k0], gap, outer[k1]) && version_ != before) return true;
       }
@@ -322,6 +322,51 @@ bool Imprinter::try_gaps() {
     }
   }
   return false;
+}
+
+bool Imprinter::skipped_gap(int e, const Loop& gap, int x, int y, size_t anchors) {
+  if (!gap.empty()) return false;
+  return x == y || opposing_edge(e, x, y) || anchors == 1;
+}
+
+bool Imprinter::on_hole_only(int o, int node) {
+  bool hole = false;
+  for (const Subcap& b : caps(o)) {
+    if (matched(b.id)) continue;
+    if (index_in(b.loops.front(), node) >= 0) return false;
+    for (size_t h = 1; h < b.loops.size(); ++h) hole = hole || index_in(b.loops[h], node) >= 0;
+  }
+  return hole;
+}
+
+// sec. 5.2 where a feature touches a hole at one point (two bosses meeting
+// at a corner: the top's remainder has an outer loop and a hole through one
+// vertex). A ribbed node whose partner lies only on a hole of the opposing
+// end, between two nodes whose partners do not, ends no gap: the gaps on
+// either side form one path from the opposing outer loop through the hole's
+// node back to it, which splits the opposing subcap (a path from an outer
+// loop to a hole alone would not).
+std::vector<size_t> Imprinter::gap_anchors(int e, const Loop& outer, const std::vector<size_t>& ribbed) {
+  const size_t m = ribbed.size(), n = outer.size();
+  if (m < 3) return ribbed;
+  std::vector<char> hole_only(m);
+  for (size_t g = 0; g < m; ++g) hole_only[g] = on_hole_only(1 - e, *partner(e, outer[ribbed[g]]));
+  auto gap_between = [&](size_t g0, size_t g1) {
+    Loop gap;
+    for (size_t k = (ribbed[g0] + 1) % n; k != ribbed[g1]; k = (k + 1) % n) gap.push_back(outer[k]);
+    return gap;
+  };
+  std::vector<size_t> out;
+  for (size_t g = 0; g < m; ++g) {
+    const size_t prev = (g + m - 1) % m, next = (g + 1) % m;
+    const int x = *partner(e, outer[ribbed[prev]]), v = *partner(e, outer[ribbed[g]]),
+              y = *partner(e, outer[ribbed[next]]);
+    const bool through = hole_only[g] && !hole_only[prev] && !hole_only[next] &&
+                         !skipped_gap(e, gap_between(prev, g), x, v, m) &&
+                         !skipped_gap(e, gap_between(g, next), v, y, m);
+    if (!through) out.push_back(ribbed[g]);
+  }
+  return out.size() >= 2 ? out : ribbed;
 }
 
 bool Imprinter::opposing_edge(int e, int x, int y) {
@@ -435,6 +480,16 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     return true;
   }
   if (path.empty() && adjacent(outer, x, y)) return false;
+  if (x == y && !path.empty()) {
+    // a touches b's boundary at one node (a boss meeting the notch of
+    // another at a corner): a's image is a hole of b through that node.
+    Loop inside{x};
+    inside.insert(inside.end(), path.begin(), path.end());
+    if (signed_area(inside, xy()) < 0) std::reverse(inside.begin(), inside.end());
+    subtract_inside(1 - e, bi, inside);
+    r_.steps.push_back(ImprintStep::Subtract);
+    return true;
+  }
   if (index_in(outer, x) < 0 || index_in(outer, y) < 0) return split_hole(1 - e, bi, x, path, y);
   auto [left, right] = split_loop(outer, x, path, y);
   replace(1 - e, bi, {left, right});

@@ -59,6 +59,12 @@ class Imprinter {
   // with the nodes between them unribbed (or none, when the partners are not
   // adjacent on an opposing subcap).
   bool try_gaps();
+  // An empty gap whose ends are linked already, or the only one: nothing to do.
+  bool skipped_gap(int e, const Loop& gap, int x, int y, size_t anchors);
+  // A node of an unmatched subcap's hole of end o, on no unmatched outer loop.
+  bool on_hole_only(int o, int node);
+  // The ribbed positions of `outer` (end e) that end gaps.
+  std::vector<size_t> gap_anchors(int e, const Loop& outer, const std::vector<size_t>& ribbed);
   bool opposing_edge(int e, int x, int y);
   bool crosses_opposing(int e, const Loop& la);
 

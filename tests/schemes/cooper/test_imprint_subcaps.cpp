@@ -295,5 +295,39 @@ TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
   EXPECT_EQ(negative, 1);
 }
 
+// Two features meeting at a corner (issue 15, the campaign's case 1810): a
+// notch on the exterior at (0,1)-(1,2) and a boss base at (1,2)-(2,3) touch
+// at (1,2), so the upper remainder's outer loop and hole share that node.
+// Either the gap around the notch runs from the exterior through the
+// hole's node back to the exterior (one path that splits the lower cap), or
+// the boss base touches the notch's image at one node and becomes a hole
+// through it (sec. 5.2); both orders of the subcaps give the partition.
+TEST(ImprintSubcaps, FeaturesTouchingAtACornerSplitTheOpposingCap) {
+  const std::vector<Vec2> notched = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 2}, {1, 2}, {1, 1}, {0, 1}};
+  const std::vector<std::vector<std::vector<Vec2>>> upper = {
+      {notched, hole(1, 2, 2, 3)},  // the remainder
+      {rect(0, 1, 1, 2)},           // the notch, on the exterior
+      {rect(1, 2, 2, 3)}};          // the boss base, touching it
+  for (const std::vector<int>& order : {std::vector<int>{0, 1, 2}, std::vector<int>{2, 1, 0}}) {
+    SCOPED_TRACE(order.front());
+    Hand h;
+    h.exterior(rect(0, 0, 4, 4));
+    for (int k : order) h.subcap(0, k + 1, upper[static_cast<size_t>(k)]);
+    h.subcap(1, 4, {rect(0, 0, 4, 4)});
+    const ImprintResult r = imprint_subcaps(h.ends);
+    expect_partition(r, 16);
+    ASSERT_EQ(r.ends.lower.size(), 3u);
+    // One lower subcap has an outer loop and a hole through one node.
+    int touching = 0;
+    for (const Subcap& s : r.ends.lower) {
+      if (s.loops.size() != 2) continue;
+      std::set<int> outer(s.loops[0].begin(), s.loops[0].end());
+      for (int v : s.loops[1]) touching += static_cast<int>(outer.count(v));
+    }
+    EXPECT_EQ(touching, 1);
+    EXPECT_GE(count(r, ImprintStep::Subtract), 2u);
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
