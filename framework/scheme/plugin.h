@@ -19,7 +19,7 @@
 /// scheme interfaces (scheme.h), Registry and the types they pass. Bumped
 /// whenever any of them changes layout or meaning; a plug-in built for
 /// another version is refused with a message, never called.
-#define COOPERAGE_PLUGIN_ABI_VERSION 2
+#define COOPERAGE_PLUGIN_ABI_VERSION 3
 
 #define COOPERAGE_PLUGIN_EXPORT __attribute__((visibility("default")))
 
