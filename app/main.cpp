@@ -91,7 +91,7 @@ void print_error(const MeshingError& e) {
 
 int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   scheme::Registry registry;
-  register_schemes(registry, job.mesh ? builtin_options(*job.mesh) : BuiltinOptions{},
+  register_schemes(registry,
                    run_plugins(limits.plugins, job.plugins));
   app::Progress progress(!limits.quiet);
   pipeline::MeshOptions options;
@@ -143,7 +143,7 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
 // `cooperage schemes`: the registry of a run without a journal.
 int run_schemes(const std::vector<std::string>& plugins, bool json) {
   scheme::Registry registry;
-  register_schemes(registry, {}, run_plugins(plugins, {}));
+  register_schemes(registry, run_plugins(plugins, {}));
   if (json) {
     app::write_schemes_json(registry, std::cout);
   } else {
@@ -157,7 +157,7 @@ int run_schemes(const std::vector<std::string>& plugins, bool json) {
 void check_plugins(const std::vector<std::string>& plugins) {
   if (plugins.empty()) return;
   scheme::Registry registry;
-  register_schemes(registry, {}, run_plugins(plugins, {}), false);
+  register_schemes(registry, run_plugins(plugins, {}), false);
 }
 
 }  // namespace

@@ -21,26 +21,33 @@ constexpr size_t kMaxRefusalLine = 300;  // the whole reason is in the plan abov
 
 // The cooper plan of a volume the selection gave to cooper (Blacker 1996,
 // sec. 4: its barrel tree), or null.
-std::shared_ptr<const cooper::VolumePlan> cooper_plan(const selector::Choice& c, const geom::Model& model,
-                                                      const scheme::Registry& registry) {
+// The selector keeps the plan cooper's applicable() returned (no second
+// analysis).
+const cooper::VolumePlan* cooper_plan(const selector::Choice& c) {
   if (c.dim != 3 || c.scheme != "cooper") return nullptr;
-  const auto* s = dynamic_cast<const cooper::CooperScheme*>(registry.volume_scheme("cooper"));
-  return s ? s->plan(scheme::VolumeView{model, c.id, nullptr}) : nullptr;
+  for (const selector::Candidate& k : c.candidates) {
+    if (k.scheme != c.scheme) continue;
+    const auto* p = dynamic_cast<const cooper::CooperPlan*>(k.applicability.plan.get());
+    return p ? &p->plan : nullptr;
+  }
+  return nullptr;
 }
 
 // Every volume scheme's verdict on a volume the selection refused.
 std::vector<selector::Candidate> refused_candidates(int volume, const geom::Model& model,
-                                                    const scheme::Registry& registry) {
+                                                    const scheme::Registry& registry,
+                                                    const scheme::Settings& job) {
   std::vector<selector::Candidate> out;
   for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
-    out.push_back(selector::Candidate{std::string(s->name()), s->applicable(scheme::VolumeView{model, volume, nullptr})});
+    out.push_back(selector::Candidate{std::string(s->name()), s->applicable(scheme::VolumeView{model, volume, nullptr, &job})});
   }
   return out;
 }
 
 void write_text(const selector::Selection& sel, const decompose::Report& cuts,
                 const std::string& decomposition_failed, bool intervals_checked,
-                const geom::Model& model, const scheme::Registry& registry, std::ostream& out) {
+                const geom::Model& model, const scheme::Registry& registry, const scheme::Settings& job,
+                std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
@@ -51,7 +58,7 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
       for (int v : w->second) out << " " << v;
       out << " (takes its mesh of a shared surface)\n";
     }
-    if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
+    if (const auto p = cooper_plan(c); p && p->ok) {
       std::istringstream lines(cooper::describe_plan(*p));
       for (std::string line; std::getline(lines, line);) out << "    " << line << "\n";
     }
@@ -67,7 +74,7 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
   auto print_refused_before = [&](int id) {  // refusals in id order among the choices
     for (; refused != sel.refused.end() && refused->first < id; ++refused) {
       out << "volume " << refused->first << ": refused  -- " << refused->second.message << "\n";
-      for (const auto& k : refused_candidates(refused->first, model, registry)) {
+      for (const auto& k : refused_candidates(refused->first, model, registry, job)) {
         out << "    " << selector::describe(k) << "\n";
       }
     }
@@ -209,7 +216,8 @@ void write_candidates(JsonWriter& j, const std::vector<selector::Candidate>& can
 
 void write_json(const selector::Selection& sel, const decompose::Report& cuts,
                 const std::string& decomposition_failed, bool intervals_checked,
-                const geom::Model& model, const scheme::Registry& registry, std::ostream& out) {
+                const geom::Model& model, const scheme::Registry& registry, const scheme::Settings& job,
+                std::ostream& out) {
   JsonWriter j(out);
   auto entities = [&](const std::vector<selector::Choice>& list) {
     j.begin_array();
@@ -227,7 +235,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
         j.key("meshed_after");
         j.value(w->second);
       }
-      if (const auto p = cooper_plan(c, model, registry); p && p->ok) {
+      if (const auto p = cooper_plan(c); p && p->ok) {
         j.key("barrel_tree");
         write_barrel_tree(j, *p);
       }
@@ -251,7 +259,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
     j.value(id);
     j.key("reason");
     j.value(r.message);
-    write_candidates(j, refused_candidates(id, model, registry));
+    write_candidates(j, refused_candidates(id, model, registry, job));
     j.end_object();
   }
   j.end_array();
@@ -271,11 +279,10 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
 
 int run_plan(const std::string& file, std::optional<double> size, bool json,
              const std::vector<std::string>& plugins, std::ostream& out) {
-  // Decomposition only happens for jobs without per-entity settings, for
-  // which the default scheme options are the job's own; the command line's
-  // plug-ins take part in it (a journal's are known only once it is read).
+  // The decomposition's registry: the command line's plug-ins take part in
+  // it (a journal's are known only once it is read).
   scheme::Registry defaults;
-  register_schemes(defaults, BuiltinOptions{}, run_plugins(plugins, {}));
+  register_schemes(defaults, run_plugins(plugins, {}));
   // A volume that no scheme fits and no cut helps is shown undecomposed,
   // with every scheme's full reason: what `plan` is for.
   pipeline::PlanInput input;
@@ -290,7 +297,8 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   scheme::Registry registry;
-  register_schemes(registry, builtin_options(settings), run_plugins(plugins, input.plugins));
+  register_schemes(registry, run_plugins(plugins, input.plugins));
+  const scheme::Settings job = scheme::Settings::of(settings);
   selector::SelectOptions options;
   options.check_intervals = settings.size.has_value();
   // A volume no scheme fits is listed with every scheme's reason (what
@@ -304,9 +312,9 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
     sel = selector::select_schemes(model, registry, settings, options);
   }
   if (json) {
-    write_json(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, out);
+    write_json(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, job, out);
   } else {
-    write_text(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, out);
+    write_text(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, job, out);
   }
   for (const auto& [id, r] : sel.refused) {
     std::cerr << "cooperage: error: volume " << id << ": " << clip(r.message, kMaxRefusalLine) << "\n";

@@ -121,9 +121,9 @@ void run_elements(benchmark::State& state, const char* example,
     v.elements = *kind;
     settings.volumes = {v};
   }
-  // The element kind reaches cooper through the registration options.
+  // The element kind reaches cooper through the job's settings (scheme::Settings).
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_builtin_schemes(registry);
   const pipeline::MeshOptions options = selector::mesh_options(3, 1);
   size_t wedges = 0, hexes = 0;
   double min_sj = 1;

@@ -62,17 +62,13 @@ class QuadDominant2D final : public scheme::PolygonMesher {
 
 }  // namespace
 
-BuiltinOptions builtin_options(const io::MeshSettings& settings) {
-  return {settings.vertex_types, settings.volumes};
-}
-
-void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options) {
+void register_builtin_schemes(scheme::Registry& registry) {
   // map, submap and pave fall back (pave, quad-dominant, triangles) when the
   // surface mesh is the product (--dim 2); as the roles of a volume scheme
   // they are themselves alone.
   using quad_dominant::FallbackChain;
   registry.add(std::make_unique<FallbackChain>(map::make_surface_map(), pave::make_pave(), tri::make_tri()));
-  registry.add(std::make_unique<FallbackChain>(submap::make_submap(options.vertex_types), pave::make_pave(),
+  registry.add(std::make_unique<FallbackChain>(submap::make_submap(), pave::make_pave(),
                                                tri::make_tri()));
   registry.add(std::make_unique<FallbackChain>(pave::make_pave(), nullptr, tri::make_tri()));
   registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
@@ -84,14 +80,6 @@ void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& 
   cooper_options.polygon_mesher = std::make_shared<Pave2D>();
   cooper_options.triangle_mesher = std::make_shared<Triangles2D>();
   cooper_options.quad_dominant_mesher = std::make_shared<QuadDominant2D>();
-  for (const io::VolumeSetting& v : options.volumes) {
-    if (!v.sources.empty() || !v.targets.empty() || v.direction) {
-      const std::string where = v.where.file.empty() ? std::string() : v.where.file + ":" + std::to_string(v.where.line);
-      cooper_options.hints[v.id] = {v.sources, v.targets, v.direction, where};
-    }
-    if (v.elements == io::ElementKind::Wedge) cooper_options.elements[v.id] = cooper::Elements::Wedge;
-    if (v.elements == io::ElementKind::Mixed) cooper_options.elements[v.id] = cooper::Elements::Mixed;
-  }
   registry.add(cooper::make_cooper(registry, std::move(cooper_options)));
 }
 
@@ -103,9 +91,9 @@ std::vector<io::PluginSetting> run_plugins(const std::vector<std::string>& comma
   return out;
 }
 
-void register_schemes(scheme::Registry& registry, const BuiltinOptions& options,
-                      const std::vector<io::PluginSetting>& plugins, bool plugin_path) {
-  register_builtin_schemes(registry, options);
+void register_schemes(scheme::Registry& registry, const std::vector<io::PluginSetting>& plugins,
+                      bool plugin_path) {
+  register_builtin_schemes(registry);
   if (plugin_path) scheme::load_plugin_path(registry);
   for (const io::PluginSetting& p : plugins) {
     const std::string where = p.where.line > 0

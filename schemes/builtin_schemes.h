@@ -9,23 +9,14 @@
 
 namespace cooperage {
 
-/// What the built-in schemes take from a job.
-struct BuiltinOptions {
-  /// Hard vertex classifications for submap (journal <vertex_type>).
-  std::vector<io::VertexTypeSetting> vertex_types;
-  /// Volume settings: cooper takes their sweep hints (sources, targets,
-  /// direction) and element kinds (elements="wedge" / "mixed").
-  std::vector<io::VolumeSetting> volumes;
-};
-
-/// The options a journal's mesh settings give.
-BuiltinOptions builtin_options(const io::MeshSettings& settings);
-
 /// Surface schemes, most preferred first: map, submap, pave, tri (triangles,
 /// only when pinned or a cooper role), quad_dominant (pave's quads with the
 /// poor ones split into triangles, likewise). Volume schemes: map, then cooper (which asks the registry for
 /// submap/map/pave/tri/quad_dominant by name, so the registry must outlive it).
-void register_builtin_schemes(scheme::Registry& registry, const BuiltinOptions& options = {});
+/// The schemes keep no per-job state (a job's vertex types, sweep hints and
+/// element kinds reach them as scheme::Settings), so one registry serves
+/// any number of jobs.
+void register_builtin_schemes(scheme::Registry& registry);
 
 /// The plug-ins of a run, in load order: the command line's (`--plugin`,
 /// relative to the working directory), then the journal's <plugin>
@@ -37,7 +28,7 @@ std::vector<io::PluginSetting> run_plugins(const std::vector<std::string>& comma
 /// COOPERAGE_PLUGIN_PATH variable (when `plugin_path`), then `plugins` in
 /// order (framework/scheme/plugin_loader.h). Throws MeshingError naming the
 /// library (and where it was given) when one cannot be loaded.
-void register_schemes(scheme::Registry& registry, const BuiltinOptions& options,
-                      const std::vector<io::PluginSetting>& plugins, bool plugin_path = true);
+void register_schemes(scheme::Registry& registry, const std::vector<io::PluginSetting>& plugins,
+                      bool plugin_path = true);
 
 }  // namespace cooperage

@@ -97,7 +97,11 @@ class Selector {
  public:
   Selector(const geom::Model& model, const scheme::Registry& registry,
            const io::MeshSettings& settings, const SelectOptions& options)
-      : model_(model), registry_(registry), settings_(settings), options_(options) {}
+      : model_(model),
+        registry_(registry),
+        settings_(settings),
+        job_(scheme::Settings::of(settings, options.dim)),
+        options_(options) {}
 
   Selection run() {
     if (options_.dim == 3) {
@@ -135,7 +139,7 @@ class Selector {
     const bool pair = (a == "map" && b == "submap") || (a == "submap" && b == "map");
     if (!pair) return false;
     const scheme::SurfaceScheme* map = registry_.surface_scheme("map");
-    return map != nullptr && map->applicable(scheme::SurfaceView{model_, surface, nullptr}).ok;
+    return map != nullptr && map->applicable(scheme::SurfaceView{model_, surface, nullptr, &job_}).ok;
   }
 
   // The waits of `volume` taking `roles` (a volume that meshes a shared
@@ -196,7 +200,7 @@ class Selector {
   }
 
   void choose_volume(int id) {
-    const scheme::VolumeView view{model_, id, nullptr};
+    const scheme::VolumeView view{model_, id, nullptr, &job_};
     const auto* pin = find_setting(settings_.volumes, id);
     // elements="wedge" / "mixed": only schemes that make wedges are candidates.
     const bool wedge = pin && pin->elements != io::ElementKind::Hex;
@@ -238,8 +242,11 @@ class Selector {
     std::string conflicts;
     for (const Candidate* c : order) {
       const scheme::VolumeScheme* vs = registry_.volume_scheme(c->scheme);
-      const scheme::SurfaceRoles roles = vs->roles(view);
-      const std::vector<int> taken = vs->takes_existing_mesh(view);
+      // The scheme's own plan from its applicable(), handed back.
+      scheme::VolumeView planned = view;
+      planned.plan = c->applicability.plan.get();
+      const scheme::SurfaceRoles roles = vs->roles(planned);
+      const std::vector<int> taken = vs->takes_existing_mesh(planned);
       const std::set<int> takes(taken.begin(), taken.end());
       std::string conflict = role_conflict(id, c->scheme, roles, takes);
       std::map<int, std::set<int>> waits = waits_with(id, roles);
@@ -278,7 +285,7 @@ class Selector {
   }
 
   void choose_surface(int id) {
-    const scheme::SurfaceView view{model_, id, nullptr};
+    const scheme::SurfaceView view{model_, id, nullptr, &job_};
     Choice choice{2, id, {}, {}, {}, false, false};
     const io::SurfaceSetting* pin = surface_pin(id);
     auto role = roles_.find(id);
@@ -386,6 +393,7 @@ class Selector {
   const geom::Model& model_;
   const scheme::Registry& registry_;
   const io::MeshSettings& settings_;
+  const scheme::Settings job_;  ///< what every scheme is asked with
   SelectOptions options_;
   std::map<int, Role> roles_;
   std::map<int, std::set<int>> waits_for_;  // volume -> volumes meshed before it
@@ -403,8 +411,11 @@ std::string describe(const Candidate& c) {
 
 pipeline::SchemePlan Selection::plan() const {
   const auto entry = [](const Choice& c) {
-    pipeline::PlanEntry e{c.scheme, c.reason, {}};
-    for (const Candidate& k : c.candidates) e.details.push_back(describe(k));
+    pipeline::PlanEntry e{c.scheme, c.reason, {}, nullptr};
+    for (const Candidate& k : c.candidates) {
+      e.details.push_back(describe(k));
+      if (k.scheme == c.scheme) e.data = k.applicability.plan;  // carried to constrain() and mesh()
+    }
     return e;
   };
   pipeline::SchemePlan plan;

@@ -86,6 +86,26 @@ std::vector<int> side_chain(const mesh::MeshDB& db, int surface_id,
   return chain;
 }
 
+// The plan applicable() returns: cooperage keeps it with the selector's
+// choice and hands it back in view.plan to constrain() and mesh(), so the
+// corners are found once per run and the scheme itself keeps no state.
+struct TriPlan final : scheme::PlanData {
+  int surface_id = 0;
+  Sides sides;
+};
+
+// The plan the view carries, else one made now (a caller without a plan).
+std::shared_ptr<const TriPlan> plan_of(const scheme::SurfaceView& view) {
+  if (const auto* carried = scheme::carried_plan<TriPlan>(view);
+      carried && carried->surface_id == view.surface_id) {
+    return {std::shared_ptr<const TriPlan>(), carried};  // the caller keeps it
+  }
+  auto p = std::make_shared<TriPlan>();
+  p->surface_id = view.surface_id;
+  p->sides = three_sides(view.model, view.surface_id);
+  return p;
+}
+
 class TriPrimitive final : public scheme::SurfaceScheme {
  public:
   std::string_view name() const override { return "triprimitive"; }
@@ -96,16 +116,19 @@ class TriPrimitive final : public scheme::SurfaceScheme {
   }
 
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override {
-    const Sides sides = three_sides(view.model, view.surface_id);
+    std::shared_ptr<const TriPlan> plan = plan_of(view);
+    const Sides& sides = plan->sides;
     if (!sides.why.empty()) return scheme::Applicability::no(sides.why);
     return scheme::Applicability::yes(
-        sides.score, "surface " + std::to_string(view.surface_id) +
-                         ": three corners, three patches meeting at the centre");
+        sides.score,
+        "surface " + std::to_string(view.surface_id) + ": three corners, three patches meeting at the centre",
+        std::move(plan));
   }
 
   void constrain(const scheme::SurfaceView& view,
                  intervals::IntervalProblem& problem) const override {
-    const Sides sides = three_sides(view.model, view.surface_id);
+    const std::shared_ptr<const TriPlan> plan = plan_of(view);
+    const Sides& sides = plan->sides;
     if (!sides.why.empty()) return;
     const auto& loop = view.surface().loops[0].uses;
     const std::string tag = "surface " + std::to_string(view.surface_id) + " (triprimitive)";
@@ -126,12 +149,13 @@ class TriPrimitive final : public scheme::SurfaceScheme {
   }
 
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& /*params*/) const override {
+                          const scheme::Settings& /*params*/) const override {
     const int sid = view.surface_id;
     auto fail = [sid](const std::string& message) {
       throw MeshingError(ErrorCode::MeshingFailed, EntityRef::surface(sid), message);
     };
-    const Sides sides = three_sides(view.model, sid);
+    const std::shared_ptr<const TriPlan> plan = plan_of(view);
+    const Sides& sides = plan->sides;
     if (!sides.why.empty()) fail(sides.why);
     if (!view.mesh) fail("triprimitive needs the meshed curves");
     const mesh::MeshDB& db = *view.mesh;

@@ -17,10 +17,11 @@ constexpr int kSearchFaceCuts = 2000;
 
 }  // namespace
 
-std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry) {
+std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry,
+                                    const scheme::Settings* settings) {
   std::vector<int> out;
   for (const geom::Volume& v : model.volumes()) {
-    if (!best_scheme(model, v.id, registry).ok) out.push_back(v.id);
+    if (!best_scheme(model, v.id, registry, settings).ok) out.push_back(v.id);
   }
   return out;
 }

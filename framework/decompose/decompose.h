@@ -73,7 +73,9 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
                      const scheme::Registry& registry, const ModelCheck& check,
                      const DecomposeOptions& options);
 
-/// The volumes of `model` to which no volume scheme applies, ascending.
-std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry);
+/// The volumes of `model` to which no volume scheme applies for the job's
+/// `settings` (null: defaults), ascending.
+std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry,
+                                    const scheme::Settings* settings = nullptr);
 
 }  // namespace cooperage::decompose

@@ -2,9 +2,10 @@
 
 namespace cooperage::decompose {
 
-PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry) {
+PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry,
+                         const scheme::Settings* settings) {
   PieceVerdict out;
-  const scheme::VolumeView view{model, volume, nullptr};
+  const scheme::VolumeView view{model, volume, nullptr, settings};
   for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
     const scheme::Applicability a = s->applicable(view);
     if (a.ok) {

@@ -18,7 +18,10 @@ struct PieceVerdict {
   std::string why;
 };
 
-/// The applicable volume scheme with the best score (ties: registry order).
-PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry);
+/// The applicable volume scheme with the best score (ties: registry order),
+/// for the job's `settings` (null: defaults, as for the pieces of a cut,
+/// which no per-entity setting names).
+PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry,
+                         const scheme::Settings* settings = nullptr);
 
 }  // namespace cooperage::decompose

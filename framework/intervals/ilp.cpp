@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <string>
 
 #include <coin/CbcModel.hpp>
@@ -130,6 +131,13 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
   // CBC's standard driver: preprocessing, cuts and heuristics as the cbc
   // executable runs them, silenced, single-threaded, fixed seeds.
   if (!mip_start.empty()) model.setMIPStart(mip_start);
+  // CBC's driver reads its arguments through process-wide state
+  // (CbcOrClpRead_mode and friends in CbcSolver.cpp), so two jobs solving at
+  // the same time in one process (two threads on one registry, Python with
+  // the GIL released) gave each other's problems wrong answers. One solve at
+  // a time; a run's own components are solved one after another anyway.
+  static std::mutex cbc_driver;
+  const std::lock_guard<std::mutex> lock(cbc_driver);
   CbcSolverUsefulData data;
   CbcMain0(model, data);
   const std::string seed = std::to_string(options.random_seed);

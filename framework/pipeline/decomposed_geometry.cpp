@@ -70,7 +70,8 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   if (dim != 3 || !job.mesh || job.mesh->decompose == io::Decompose::Off) return out;
   const io::MeshSettings& settings = *job.mesh;
 
-  const std::vector<int> todo = decompose::unmeshable_volumes(out.model, registry);
+  const scheme::Settings job_settings = scheme::Settings::of(settings);
+  const std::vector<int> todo = decompose::unmeshable_volumes(out.model, registry, &job_settings);
   if (todo.empty()) return out;
   for (int v : todo) {
     if (scheme_pinned(settings, v)) return out;  // the planner refuses the pin, naming it

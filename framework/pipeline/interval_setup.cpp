@@ -94,12 +94,16 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
       problem.add_curve(curve.id, goal, to_firmness(f), std::nullopt, least);
     }
   }
+  // Each scheme gets back the plan its applicable() made (PlanEntry::data).
+  const scheme::Settings job = scheme::Settings::of(settings);
   for (const auto& [id, entry] : plan.surfaces) {
     if (entry.scheme == scheme::kMeshedByVolume) continue;  // its volume scheme constrains it
-    registry.surface_scheme(entry.scheme)->constrain(scheme::SurfaceView{model, id, nullptr}, problem);
+    registry.surface_scheme(entry.scheme)
+        ->constrain(scheme::SurfaceView{model, id, nullptr, &job, entry.data.get()}, problem);
   }
   for (const auto& [id, entry] : plan.volumes) {
-    registry.volume_scheme(entry.scheme)->constrain(scheme::VolumeView{model, id, nullptr}, problem);
+    registry.volume_scheme(entry.scheme)
+        ->constrain(scheme::VolumeView{model, id, nullptr, &job, entry.data.get()}, problem);
   }
   return problem;
 }

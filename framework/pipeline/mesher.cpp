@@ -207,9 +207,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
   lap("curves");
 
-  scheme::MeshParams params;
-  params.size = settings.size.value_or(1.0);
-  params.allow_fallback = options.dim == 2;
+  // The one settings object every scheme reads (view.job and mesh()'s
+  // argument); each gets back the plan its applicable() made (PlanEntry::data).
+  const scheme::Settings params = scheme::Settings::of(settings, options.dim);
 
   // Verdict entities: volumes in 3D, surfaces in 2D.
   Refusals refusals;
@@ -237,8 +237,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   run_stage(
       "surfaces", 2, surfaces, result.plan.surfaces, result, options,
       [&](int id) {
-        const auto* s = registry.surface_scheme(result.plan.surfaces.at(id).scheme);
-        return s->mesh(scheme::SurfaceView{model, id, &result.mesh}, params);
+        const PlanEntry& entry = result.plan.surfaces.at(id);
+        const auto* s = registry.surface_scheme(entry.scheme);
+        return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &params, entry.data.get()}, params);
       },
       commit_surface, surface_failed);
   lap("surfaces");
@@ -278,8 +279,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     run_stage(
         "volumes", 3, wave, result.plan.volumes, result, options,
         [&](int id) {
-          const auto* s = registry.volume_scheme(result.plan.volumes.at(id).scheme);
-          return s->mesh(scheme::VolumeView{model, id, &result.mesh}, params);
+          const PlanEntry& entry = result.plan.volumes.at(id);
+          const auto* s = registry.volume_scheme(entry.scheme);
+          return s->mesh(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()}, params);
         },
         commit_volume, [&](int id, const MeshingError& e) {
           refusals.refuse(id, e.code(), e.message(), e.hint());

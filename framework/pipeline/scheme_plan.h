@@ -3,6 +3,7 @@
 
 #include "framework/core/error.h"
 #include "framework/intervals/solve.h"
+#include "framework/scheme/applicability.h"
 
 #include <map>
 #include <optional>
@@ -17,6 +18,11 @@ struct PlanEntry {
   /// The planner's further notes for a person, one line each: every
   /// scheme's verdict, a volume scheme's structure (shown by reports).
   std::vector<std::string> details;
+  /// What the chosen scheme's applicable() returned as its plan (or null):
+  /// the pipeline hands it back to constrain(), roles() and mesh() through
+  /// the views, so the scheme analyses the entity once per run. Shared and
+  /// immutable: copies of the plan share it.
+  std::shared_ptr<const scheme::PlanData> data;
 };
 
 /// Why the planner found no scheme for an entity.

@@ -16,10 +16,12 @@
 #include "framework/scheme/registry.h"
 
 /// The version of the interface between cooperage and its plug-ins: the
-/// scheme interfaces (scheme.h), Registry and the types they pass. Bumped
+/// scheme interfaces (scheme.h), Registry and the types they pass (the
+/// views, Settings with the journal's io::MeshSettings, PlanData). Bumped
 /// whenever any of them changes layout or meaning; a plug-in built for
-/// another version is refused with a message, never called.
-#define COOPERAGE_PLUGIN_ABI_VERSION 2
+/// another version is refused with a message, never called. 3: Settings
+/// and the scheme's own plan reach it through the views (docs/plugins.md).
+#define COOPERAGE_PLUGIN_ABI_VERSION 3
 
 #define COOPERAGE_PLUGIN_EXPORT __attribute__((visibility("default")))
 

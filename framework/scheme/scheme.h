@@ -1,6 +1,9 @@
 // The scheme interfaces (docs/design.md; the seed brief "Core types"): every surface and volume
 // scheme answers applicable() a priori (from topology and angles, never by
-// meshing), states its interval constraints, and meshes.
+// meshing), states its interval constraints, and meshes. A scheme is
+// registered once and holds no per-job state: the job reaches it as
+// Settings (settings.h) and its own analysis of an entity as the plan its
+// applicable() returned (applicability.h), both through the views.
 #pragma once
 
 #include "framework/geometry/model.h"
@@ -8,6 +11,7 @@
 #include "framework/mesh/mesh_db.h"
 #include "framework/scheme/applicability.h"
 #include "framework/scheme/role.h"
+#include "framework/scheme/settings.h"
 
 #include <map>
 #include <string>
@@ -16,35 +20,46 @@
 
 namespace cooperage::scheme {
 
-/// Settings a scheme may read while meshing.
-struct MeshParams {
-  double size = 1.0;  ///< target element size [model units]
-  /// The surface mesh is the product (`--dim 2`), not the input of a volume
-  /// scheme: a surface scheme that cannot reach its quality may fall back
-  /// to another one, to quad-dominant or to triangles, saying so in
-  /// EntityMesh::warnings, instead of failing. A volume scheme needs the
-  /// surface meshes it imposed, so the pipeline leaves this off in 3D.
-  bool allow_fallback = false;
-};
+/// The settings of a job as mesh() used to take them; the one settings
+/// type is Settings (settings.h). Kept so plug-in sources still compile.
+using MeshParams = Settings;
 
 /// A surface as a scheme sees it. `mesh` holds the meshed curves of its loops
-/// during mesh(); it is null during applicable() and constrain().
+/// during mesh(); it is null during applicable() and constrain(). `job` is
+/// the run's Settings (null: defaults, settings()); `plan` is what this
+/// scheme's applicable() returned for the same surface and settings, as the
+/// selector kept it (null when the caller has none: a scheme then computes
+/// its plan again; carried_plan()).
 struct SurfaceView {
   const geom::Model& model;
   int surface_id = 0;
   const mesh::MeshDB* mesh = nullptr;
+  const Settings* job = nullptr;
+  const PlanData* plan = nullptr;
 
   const geom::Surface& surface() const { return model.surface(surface_id); }
+  const Settings& settings() const { return job ? *job : Settings::none(); }
 };
 
-/// A volume as a scheme sees it; `mesh` holds its meshed surfaces during mesh().
+/// A volume as a scheme sees it; `mesh` holds its meshed surfaces during
+/// mesh(); `job` and `plan` as in SurfaceView.
 struct VolumeView {
   const geom::Model& model;
   int volume_id = 0;
   const mesh::MeshDB* mesh = nullptr;
+  const Settings* job = nullptr;
+  const PlanData* plan = nullptr;
 
   const geom::Volume& volume() const { return model.volume(volume_id); }
+  const Settings& settings() const { return job ? *job : Settings::none(); }
 };
+
+/// The plan a view carries when it is of the scheme's own type `T` (made by
+/// its applicable()), else null: the scheme then computes it from the view.
+template <class T, class View>
+const T* carried_plan(const View& view) {
+  return dynamic_cast<const T*>(view.plan);
+}
 
 /// New elements for one entity, in local node numbering. Local node k is the
 /// existing MeshDB node `global[k]` when that is >= 0, or a new node at
@@ -91,12 +106,14 @@ class SurfaceScheme {
   virtual std::string_view name() const = 0;
   /// The roles a volume scheme may give it (flags); None: free surfaces only.
   virtual Role serves() const { return Role::None; }
-  /// A priori: can this scheme mesh the surface? Never meshes.
+  /// A priori: can this scheme mesh the surface? Never meshes. May return
+  /// its plan (Applicability::plan), which the later calls get back in view.plan.
   virtual Applicability applicable(const SurfaceView& view) const = 0;
   /// Adds the constraints this scheme needs on the surface's curve intervals.
   virtual void constrain(const SurfaceView& view, intervals::IntervalProblem& problem) const = 0;
-  /// Meshes the surface; its curves are meshed in view.mesh. Throws MeshingError.
-  virtual EntityMesh mesh(const SurfaceView& view, const MeshParams& params) const = 0;
+  /// Meshes the surface; its curves are meshed in view.mesh. `settings` is
+  /// the run's (the pipeline also sets view.job to it). Throws MeshingError.
+  virtual EntityMesh mesh(const SurfaceView& view, const Settings& settings) const = 0;
 };
 
 /// Which surface scheme a volume scheme needs on each of its surfaces.
@@ -119,10 +136,12 @@ class VolumeScheme {
   /// meshed first, and this volume reads its mesh (docs/design.md, "Volumes
   /// that wait for a neighbour").
   virtual std::vector<int> takes_existing_mesh(const VolumeView& /*view*/) const { return {}; }
-  /// Meshes the volume; its surfaces are meshed in view.mesh. Throws MeshingError.
-  virtual EntityMesh mesh(const VolumeView& view, const MeshParams& params) const = 0;
+  /// Meshes the volume; its surfaces are meshed in view.mesh. `settings` is
+  /// the run's (the pipeline also sets view.job to it). Throws MeshingError.
+  virtual EntityMesh mesh(const VolumeView& view, const Settings& settings) const = 0;
   /// Whether the scheme can make wedges (journal `elements="wedge"` or
-  /// "mixed"); the selector offers only such schemes for those volumes.
+  /// "mixed", Settings::elements()); the selector offers only such schemes
+  /// for those volumes.
   virtual bool makes_wedges() const { return false; }
 };
 

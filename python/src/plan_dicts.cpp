@@ -65,7 +65,7 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
       input = pipeline::plan_input(file.string(), size);
     }
     scheme::Registry registry;
-    register_schemes(registry, builtin_options(input.settings), input.plugins);
+    register_schemes(registry, input.plugins);
     selector::SelectOptions options;
     options.check_intervals = input.settings.size.has_value();
     selection = selector::select_schemes(input.model, registry, input.settings, options);

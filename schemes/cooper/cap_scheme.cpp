@@ -18,8 +18,8 @@ std::string no_scheme(int surface, const char* what, const std::string& reasons)
 // quads below that quality split into triangles). Plain pave does not serve
 // mixed caps: it keeps a poor quad where mixed mode wants two triangles.
 std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                             std::string& why) {
-  const scheme::SurfaceView view{model, surface, nullptr};
+                             std::string& why, const scheme::Settings* settings) {
+  const scheme::SurfaceView view{model, surface, nullptr, settings};
   const scheme::SurfaceScheme* best = nullptr;
   double best_score = -1.0;
   std::string reasons;
@@ -45,8 +45,8 @@ std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& r
 }  // namespace
 
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                       std::string& why, Elements elements) {
-  if (elements == Elements::Mixed) return mixed_cap_scheme(model, registry, surface, why);
+                       std::string& why, Elements elements, const scheme::Settings* settings) {
+  if (elements == Elements::Mixed) return mixed_cap_scheme(model, registry, surface, why, settings);
   // Hex mode: the best-scoring quad-cap scheme (scores are the scaled
   // Jacobian each can reach, so a corner map/submap would squash goes to
   // pave); ties keep the registration order map, submap, pave, plug-ins.
@@ -54,7 +54,7 @@ std::string cap_scheme(const geom::Model& model, const scheme::Registry& registr
   const bool wedge = elements == Elements::Wedge;
   const scheme::RoleChoice c = scheme::best_surface_scheme(
       registry, wedge ? scheme::Role::TriCap : scheme::Role::QuadCap,
-      scheme::SurfaceView{model, surface, nullptr});
+      scheme::SurfaceView{model, surface, nullptr, settings});
   if (c.scheme) return std::string(c.scheme->name());
   why = no_scheme(surface, wedge ? "triangle" : "quad", c.reasons);
   return {};

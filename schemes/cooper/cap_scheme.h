@@ -18,7 +18,9 @@ namespace cooperage::cooper {
 /// mode the best tri-cap scheme ("tri"); mixed mode the best mixed-cap one,
 /// an all-quad scheme (map, submap) only where it reaches
 /// kMixedMinQuadQuality, else "quad_dominant". "" with `why` when none applies.
+/// `settings` reach the candidates' applicable(); null: defaults.
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                       std::string& why, Elements elements = Elements::Hex);
+                       std::string& why, Elements elements = Elements::Hex,
+                       const scheme::Settings* settings = nullptr);
 
 }  // namespace cooperage::cooper

@@ -1,9 +1,12 @@
 // The volume scheme "cooper" (Blacker 1996): one code path for one barrel
 // (the one-to-one sweep, any number of holes) and many (bosses, blind
 // holes, pockets, bores through shoulders, appendages on both ends, sides
-// stacked along the sweep, a curved axis). plan_volume() classifies the
-// volume once -- the plan is cached and carried from applicable() to
-// constrain(), roles() and mesh() -- and sweep_volume() meshes it.
+// stacked along the sweep, a curved axis). applicable() classifies the
+// volume once with plan_volume() and returns the plan (CooperPlan, a
+// scheme::PlanData); the selector keeps it and hands it back through the
+// view to constrain(), roles(), takes_existing_mesh() and mesh(), and
+// sweep_volume() meshes it. The scheme keeps no per-job state: a volume's
+// sweep hints and element kind come from the view's scheme::Settings.
 // Wedge and mixed mode (Blacker 1996, abstract: "a wedge/hexahedral element
 // mix ... by simply allowing triangle and/or mixed triangle/quadrilateral
 // cap meshes"): caps are meshed by "tri" (wedge) or map / submap /
@@ -18,19 +21,13 @@
 #include "schemes/cooper/elements.h"
 #include "schemes/cooper/plan_volume.h"
 
-#include <cstdint>
-#include <map>
 #include <memory>
-#include <mutex>
-#include <optional>
-#include <tuple>
-#include <vector>
 
 namespace cooperage::cooper {
 
+/// What an installation gives cooper once, at registration (the same for
+/// every job).
 struct CooperOptions {
-  /// Journal hints per volume id (sources, targets, direction; binding).
-  std::map<int, SweepHints> hints;
   /// Meshes cap stacks that have no cap meshed by a surface scheme (Blacker
   /// 1996, sec. 6.1); null: volumes that need it are not applicable. The
   /// registration code wraps pave's 2D core (pave::pave_2d) here.
@@ -40,9 +37,18 @@ struct CooperOptions {
   /// the quads below kMixedMinQuadQuality split, framework/mesh/split_poor_quads.h).
   std::shared_ptr<const scheme::PolygonMesher> triangle_mesher;
   std::shared_ptr<const scheme::PolygonMesher> quad_dominant_mesher;
-  /// Element kind per volume id (journal `elements=`); absent: Hex.
-  std::map<int, Elements> elements;
 };
+
+/// Cooper's plan of one volume for one job, as applicable() returns it.
+struct CooperPlan final : scheme::PlanData {
+  VolumePlan plan;
+};
+
+/// The element kind a job asks of a volume (Settings::elements()).
+Elements elements_of(const scheme::Settings& settings, int volume_id);
+/// The journal's sweep hints of a volume (sources, targets, direction, with
+/// its line); empty when it has none.
+SweepHints hints_of(const scheme::Settings& settings, int volume_id);
 
 class CooperScheme final : public scheme::VolumeScheme {
  public:
@@ -55,6 +61,7 @@ class CooperScheme final : public scheme::VolumeScheme {
   bool makes_wedges() const override { return true; }
   /// The plan's verdict: one barrel scores 0.5-0.9, several 0.3-0.45 (the
   /// selector ranks volume map, one barrel, then many). Never meshes.
+  /// Returns the plan (CooperPlan), ok or not.
   scheme::Applicability applicable(const scheme::VolumeView& view) const override;
   /// The plan's rows: every linking chain of a level the same count, at
   /// least one layer per barrel, even cap loops where pieces are paved.
@@ -64,33 +71,19 @@ class CooperScheme final : public scheme::VolumeScheme {
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override;
   /// sweep_volume() on the plan. Throws MeshingError naming the volume.
-  scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::MeshParams& params) const override;
+  scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::Settings& settings) const override;
 
-  /// The plan of a volume (computed on first use, then cached per model,
-  /// volume and options).
-  std::shared_ptr<const VolumePlan> plan(const scheme::VolumeView& view) const;
-
-  /// Sets (or, with all lists empty and no direction, clears) the hints of a volume.
-  void set_hints(int volume_id, std::vector<int> sources, std::vector<int> targets,
-                 std::optional<geom::Vec3> direction = std::nullopt, std::string where = {});
+  /// The plan view.plan carries (this scheme's applicable() for the same
+  /// volume), else one computed now from the view's model and settings.
+  std::shared_ptr<const CooperPlan> plan(const scheme::VolumeView& view) const;
   const CooperOptions& options() const { return options_; }
-  /// The element kind of a volume (Hex unless set in the options).
-  Elements elements(int volume_id) const;
-  /// Sets the 2D mesher of imprinted subcaps in hex mode (see CooperOptions).
-  void set_polygon_mesher(std::shared_ptr<const scheme::PolygonMesher> mesher);
 
  private:
-  /// The polygon mesher of the volume's element kind (null: none given).
-  const scheme::PolygonMesher* polygon_mesher(int volume_id) const;
+  /// The polygon mesher of an element kind (null: none given).
+  const scheme::PolygonMesher* polygon_mesher(Elements elements) const;
 
   const scheme::Registry* registry_;
   CooperOptions options_;
-  /// Plans by (model, volume, fingerprint of its faces, options version).
-  using Key = std::tuple<const geom::Model*, int, std::uint64_t, int>;
-  mutable std::mutex mutex_;
-  mutable std::map<Key, std::shared_ptr<const VolumePlan>> plans_;
-  mutable std::vector<Key> order_;  ///< insertion order, for eviction
-  int version_ = 0;
 };
 
 /// The scheme; register it after the volume map.

@@ -106,7 +106,7 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry, 
   if (!p.tree.ok) return fail(4, p.tree.why);
   if (cand.anchor.down) p.down = cand.anchor.down->normalized();
   const CapSchemeOf scheme_of = [&](int cap, std::string& why) {
-    return cap_scheme(model, registry, cap, why, in.elements);
+    return cap_scheme(model, registry, cap, why, in.elements, in.settings);
   };
   p.roles = cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
@@ -198,7 +198,7 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
     refused.why = vname + ": the submap scheme is not registered; cooper needs it for the sides";
     return refused;
   }
-  const VolumeFacts facts = gather_facts(model, volume_id, registry);
+  const VolumeFacts facts = gather_facts(model, volume_id, registry, in.settings);
   if (facts.faces.size() < 3) {
     refused.why = vname + ": " + std::to_string(facts.faces.size()) + " surfaces, a sweep needs at least 3";
     return refused;

@@ -9,6 +9,7 @@
 #include "schemes/cooper/barrel_constraints.h"
 #include "schemes/cooper/cap_roles.h"
 #include "schemes/cooper/elements.h"
+#include "framework/scheme/settings.h"
 
 #include <optional>
 #include <string>
@@ -29,6 +30,9 @@ struct PlanInputs {
   SweepHints hints;
   Elements elements = Elements::Hex;
   bool polygon_mesher = false;  ///< imprinted pieces can be meshed in 2D
+  /// The job's settings, passed to the side and cap schemes' applicable()
+  /// (submap's vertex types); null: defaults.
+  const scheme::Settings* settings = nullptr;
 };
 
 struct VolumePlan {

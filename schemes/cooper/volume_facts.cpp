@@ -43,7 +43,8 @@ double VolumeFacts::size() const {
   return d > 0 ? d : 1.0;
 }
 
-VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry) {
+VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry,
+                         const scheme::Settings* settings) {
   VolumeFacts out;
   out.volume = volume_id;
   out.shells = static_cast<int>(model.volume(volume_id).shells.size());
@@ -72,7 +73,7 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     if (s.loops.size() == 1) {
       for (const auto& corner : scheme::loop_corners(model, id, 0)) f.angles.push_back(corner.angle);
       if (submap) {
-        const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr});
+        const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr, settings});
         f.submappable = a.ok;
         f.submap_score = a.score;
         f.submap_why = a.why;

@@ -69,6 +69,8 @@ struct VolumeFacts {
 
 /// Gathers the facts of `volume_id`; the submap verdicts come from the
 /// registry's "submap" (none when it is not registered).
-VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry);
+/// `settings` reach submap's applicable() (its vertex types); null: defaults.
+VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry,
+                         const scheme::Settings* settings = nullptr);
 
 }  // namespace cooperage::cooper

@@ -67,7 +67,7 @@ void SurfaceMap::constrain(const scheme::SurfaceView& view,
 }
 
 scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
-                                    const scheme::MeshParams& /*params*/) const {
+                                    const scheme::Settings& /*params*/) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, "map needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;

@@ -26,7 +26,7 @@ class SurfaceMap final : public scheme::SurfaceScheme {
   /// Throws MeshingError(MeshingFailed) when opposite sides differ in count,
   /// a curve is not meshed, or the surface is not mappable.
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 };
 
 std::unique_ptr<scheme::SurfaceScheme> make_surface_map();

@@ -99,7 +99,7 @@ scheme::SurfaceRoles VolumeMap::roles(const scheme::VolumeView& view) const {
 }
 
 scheme::EntityMesh VolumeMap::mesh(const scheme::VolumeView& view,
-                                   const scheme::MeshParams& /*params*/) const {
+                                   const scheme::Settings& /*params*/) const {
   const int vid = view.volume_id;
   if (!view.mesh) fail(vid, "volume map needs the meshed surfaces");
   const mesh::MeshDB& db = *view.mesh;

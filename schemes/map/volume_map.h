@@ -26,7 +26,7 @@ class VolumeMap final : public scheme::VolumeScheme {
   /// MeshingError(MeshingFailed) when the lattice cannot be recovered or a hex
   /// has a non-positive scaled Jacobian.
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 };
 
 std::unique_ptr<scheme::VolumeScheme> make_volume_map();

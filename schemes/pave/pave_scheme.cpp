@@ -93,7 +93,7 @@ void PaveScheme::constrain(const scheme::SurfaceView& view, intervals::IntervalP
   if (!all.empty()) problem.add_even(all, name + ": boundary curves " + all_text + " even");
 }
 
-scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const scheme::MeshParams& /*params*/) const {
+scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const scheme::Settings& /*params*/) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, ErrorCode::Internal, "mesh() needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;

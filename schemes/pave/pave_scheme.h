@@ -13,7 +13,7 @@
 //   interior nodes go back to the surface, and every quad is checked against
 //   the natural normal; an inverted quad is never returned
 //   (MeshingError(MeshingFailed) instead). Element sizes come from the
-//   boundary spacing (graded between loops); MeshParams::size is not used.
+//   boundary spacing (graded between loops); Settings::size is not used.
 #pragma once
 
 #include "framework/scheme/scheme.h"
@@ -30,7 +30,7 @@ class PaveScheme : public scheme::SurfaceScheme {
   scheme::Role serves() const override { return scheme::Role::QuadCap; }
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   void constrain(const scheme::SurfaceView& view, intervals::IntervalProblem& problem) const override;
-  scheme::EntityMesh mesh(const scheme::SurfaceView& view, const scheme::MeshParams& params) const override;
+  scheme::EntityMesh mesh(const scheme::SurfaceView& view, const scheme::Settings& params) const override;
 
  private:
   PaveOptions options_;

@@ -53,7 +53,7 @@ FallbackChain::FallbackChain(std::unique_ptr<scheme::SurfaceScheme> primary,
       min_quality_(min_quality) {}
 
 scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
-                                       const scheme::MeshParams& params) const {
+                                       const scheme::Settings& params) const {
   if (!params.allow_fallback) return primary_->mesh(view, params);
   const geom::SurfaceGeometry* surface = view.surface().geometry.get();
   if (surface == nullptr) return primary_->mesh(view, params);
@@ -77,7 +77,10 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   };
   auto run = [&](const scheme::SurfaceScheme& s, const std::string& what) -> bool {
     try {
-      scheme::EntityMesh m = s.mesh(view, params);
+      // view.plan is the primary's (its applicable()); a fallback plans anew.
+      scheme::SurfaceView own = view;
+      if (&s != primary_.get()) own.plan = nullptr;
+      scheme::EntityMesh m = s.mesh(own, params);
       const mesh::SurfaceMeshQuality q = mesh::surface_mesh_quality(m.coords, m.quads, m.tris, normal_at);
       return consider({what, std::move(m), q});
     } catch (const MeshingError& e) {

@@ -1,5 +1,5 @@
 // Total surface meshing (issue 16, item 1): a surface scheme that, when the
-// surface mesh is the product (MeshParams::allow_fallback, `--dim 2`), never
+// surface mesh is the product (Settings::allow_fallback, `--dim 2`), never
 // gives up on a valid face. It tries, in order, and keeps the first mesh
 // whose every element reaches `min_quality` (scaled Jacobian against the
 // surface normal, measured in 3D):
@@ -45,7 +45,7 @@ class FallbackChain final : public scheme::SurfaceScheme {
     primary_->constrain(view, problem);
   }
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 
  private:
   std::unique_ptr<scheme::SurfaceScheme> primary_;

@@ -24,7 +24,7 @@ void QuadDominantScheme::constrain(const scheme::SurfaceView& view,
 }
 
 scheme::EntityMesh QuadDominantScheme::mesh(const scheme::SurfaceView& view,
-                                            const scheme::MeshParams& params) const {
+                                            const scheme::Settings& params) const {
   scheme::EntityMesh out = quads_->mesh(view, params);
   // Nodes the scheme made (global -1) may move on the surface; curve and
   // vertex nodes stay.

@@ -34,7 +34,7 @@ class QuadDominantScheme final : public scheme::SurfaceScheme {
   /// triangles' free (interior) nodes moved on the surface; curve and
   /// vertex nodes unchanged. Throws what the quad scheme throws.
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 
  private:
   std::unique_ptr<scheme::SurfaceScheme> quads_;

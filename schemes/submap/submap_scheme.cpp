@@ -102,24 +102,36 @@ std::string balance_text(const std::vector<BoundaryPoint>& pts, const LatticePoi
 
 }  // namespace
 
+std::shared_ptr<const SubmapPlanData> SurfaceSubmap::plan(const scheme::SurfaceView& view) const {
+  if (const auto* carried = scheme::carried_plan<SubmapPlanData>(view);
+      carried && carried->surface_id == view.surface_id) {
+    return {std::shared_ptr<const SubmapPlanData>(), carried};  // not owned: the caller keeps it
+  }
+  auto p = std::make_shared<SubmapPlanData>();
+  p->surface_id = view.surface_id;
+  p->plan = plan_submap(view.model, view.surface_id, view.settings().vertex_types(), options_.classify);
+  return p;
+}
+
 scheme::Applicability SurfaceSubmap::applicable(const scheme::SurfaceView& view) const {
-  const SubmapPlan plan = plan_submap(view.model, view.surface_id, pins_, options_.classify);
-  if (!plan.ok) return scheme::Applicability::no(plan.why);
-  return scheme::Applicability::yes(plan.score, plan.why);
+  std::shared_ptr<const SubmapPlanData> p = plan(view);
+  const SubmapPlan& plan = p->plan;
+  if (!plan.ok) return scheme::Applicability::no(plan.why, nullptr);
+  return scheme::Applicability::yes(plan.score, plan.why, std::move(p));
 }
 
 void SurfaceSubmap::constrain(const scheme::SurfaceView& view,
                               intervals::IntervalProblem& problem) const {
-  const SubmapPlan plan = plan_submap(view.model, view.surface_id, pins_, options_.classify);
-  add_submap_constraints(view.surface_id, plan, problem);
+  add_submap_constraints(view.surface_id, plan(view)->plan, problem);
 }
 
 scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
-                                       const scheme::MeshParams& /*params*/) const {
+                                       const scheme::Settings& /*params*/) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, "submap needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;
-  const SubmapPlan plan = plan_submap(view.model, sid, pins_, options_.classify);
+  const std::shared_ptr<const SubmapPlanData> planned = plan(view);
+  const SubmapPlan& plan = planned->plan;
   if (!plan.ok) fail(sid, "not submappable: " + plan.why);
   const geom::SurfaceGeometry& geometry = *view.surface().geometry;
   const UvChart chart(geometry);
@@ -254,8 +266,8 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
   return out;
 }
 
-std::unique_ptr<scheme::SurfaceScheme> make_submap(std::vector<io::VertexTypeSetting> pins) {
-  return std::make_unique<SurfaceSubmap>(std::move(pins));
+std::unique_ptr<scheme::SurfaceScheme> make_submap(SubmapOptions options) {
+  return std::make_unique<SurfaceSubmap>(options);
 }
 
 }  // namespace cooperage::submap

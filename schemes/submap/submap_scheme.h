@@ -11,10 +11,10 @@
 #include <memory>
 #include <vector>
 
-#include "framework/io/job.h"
 #include "framework/scheme/scheme.h"
 #include "schemes/submap/classify.h"
 #include "schemes/submap/smooth.h"
+#include "schemes/submap/submap_plan.h"
 
 namespace cooperage::submap {
 
@@ -23,17 +23,25 @@ struct SubmapOptions {
   SmoothOptions smooth;
 };
 
+/// The plan applicable() returns and constrain() and mesh() take back
+/// (scheme::PlanData): the vertex types and curve directions of one surface,
+/// with the journal's pins (Settings::vertex_types) applied.
+struct SubmapPlanData final : scheme::PlanData {
+  int surface_id = 0;
+  SubmapPlan plan;
+};
+
 class SurfaceSubmap final : public scheme::SurfaceScheme {
  public:
-  explicit SurfaceSubmap(std::vector<io::VertexTypeSetting> pins = {}, SubmapOptions options = {})
-      : pins_(std::move(pins)), options_(options) {}
+  explicit SurfaceSubmap(SubmapOptions options = {}) : options_(options) {}
 
   std::string_view name() const override { return "submap"; }
   /// Structured: cooper's sides, and caps of any sweep.
   scheme::Role serves() const override {
     return scheme::Role::SweepSide | scheme::Role::QuadCap | scheme::Role::MixedCap;
   }
-  /// From angles and topology alone (plan_submap()); says why a face is rejected.
+  /// From angles and topology alone (plan_submap(), with the vertex types
+  /// of view.settings()); says why a face is rejected. Returns the plan.
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
   /// Per loop and axis: + sums = - sums; per hole: it fits inside the outer loop.
   void constrain(const scheme::SurfaceView& view,
@@ -42,18 +50,17 @@ class SurfaceSubmap final : public scheme::SurfaceScheme {
   /// when a curve is not meshed, a loop's intervals do not balance, or the
   /// lattice region is invalid (overlapping, a hole that does not fit).
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 
-  /// Hard vertex types from the journal (those of other surfaces are ignored).
-  void set_pins(std::vector<io::VertexTypeSetting> pins) { pins_ = std::move(pins); }
-  const std::vector<io::VertexTypeSetting>& pins() const { return pins_; }
+  /// The plan view.plan carries (this scheme's applicable() for the same
+  /// surface), else one computed now.
+  std::shared_ptr<const SubmapPlanData> plan(const scheme::SurfaceView& view) const;
 
  private:
-  std::vector<io::VertexTypeSetting> pins_;
   SubmapOptions options_;
 };
 
-/// The scheme, with the journal's vertex type pins.
-std::unique_ptr<scheme::SurfaceScheme> make_submap(std::vector<io::VertexTypeSetting> pins = {});
+/// The scheme (the journal's vertex types reach it through scheme::Settings).
+std::unique_ptr<scheme::SurfaceScheme> make_submap(SubmapOptions options = {});
 
 }  // namespace cooperage::submap

@@ -49,7 +49,7 @@ void TriScheme::constrain(const scheme::SurfaceView& view,
 }
 
 scheme::EntityMesh TriScheme::mesh(const scheme::SurfaceView& view,
-                                   const scheme::MeshParams& /*params*/) const {
+                                   const scheme::Settings& /*params*/) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, "tri needs the meshed curves");
   if (view.surface().loops.empty()) fail(sid, "no boundary loops");

@@ -33,7 +33,7 @@ class TriScheme final : public scheme::SurfaceScheme {
   /// not meshed, the loops are invalid in the face's 2D space, or a
   /// triangle would come out inverted against the surface normal.
   scheme::EntityMesh mesh(const scheme::SurfaceView& view,
-                          const scheme::MeshParams& params) const override;
+                          const scheme::Settings& params) const override;
 
  private:
   mesh2d::RefineOptions options_;

@@ -20,7 +20,7 @@ using geom::Vec3;
 
 struct Fixture {
   scheme::Registry registry;
-  explicit Fixture(const BuiltinOptions& options = {}) { register_builtin_schemes(registry, options); }
+  Fixture() { register_builtin_schemes(registry); }
 };
 
 io::MeshSettings sized(double size) {

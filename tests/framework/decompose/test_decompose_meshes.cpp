@@ -42,7 +42,7 @@ struct Meshed {
 
 Meshed mesh_job(const io::Job& job, int threads = 0) {
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(*job.mesh));
+  register_builtin_schemes(registry);
   Meshed m{run_job(job, registry, selector::mesh_options(3, threads)), {}, 0};
   m.summary = testing::check_hex_mesh(m.run.model, m.run.mesh.mesh);
   for (const auto& v : m.run.model.volumes()) m.cad_volume += v.volume;

@@ -1,5 +1,5 @@
-// Cooper plans in tests: from a registry's cooper scheme (cached, as the
-// pipeline sees them) or directly from plan_volume().
+// Cooper plans in tests: from a registry's cooper scheme (as its
+// applicable() returns them) or directly from plan_volume().
 #pragma once
 
 #include "schemes/cooper/cooper_scheme.h"
@@ -9,11 +9,15 @@
 
 namespace cooperage::cooper::plan_test {
 
-/// The plan the registry's cooper scheme made for a volume.
+/// The plan the registry's cooper scheme makes for a volume, for the job's
+/// `settings` (null: none), as its applicable() returns it.
 inline std::shared_ptr<const VolumePlan> scheme_plan(const scheme::Registry& registry, const geom::Model& model,
-                                                     int volume_id) {
+                                                     int volume_id, const io::MeshSettings* settings = nullptr) {
   const auto* cooper = dynamic_cast<const CooperScheme*>(registry.volume_scheme("cooper"));
-  return cooper ? cooper->plan(scheme::VolumeView{model, volume_id, nullptr}) : nullptr;
+  if (!cooper) return nullptr;
+  const scheme::Settings job = settings ? scheme::Settings::of(*settings) : scheme::Settings{};
+  const std::shared_ptr<const CooperPlan> p = cooper->plan(scheme::VolumeView{model, volume_id, nullptr, &job});
+  return {p, &p->plan};
 }
 
 /// A fresh plan (hex elements unless given).

@@ -30,20 +30,22 @@ using testing::hex_face_counts;
 using testing::hex_points;
 using testing::hex_volume;
 
-// The built-in registry, with the cooper hints of `options`.
-std::unique_ptr<scheme::Registry> with_cooper(CooperOptions options = {}) {
-  BuiltinOptions builtin;
-  for (const auto& [volume, hints] : options.hints) {
-    io::VolumeSetting v;
-    v.id = volume;
-    v.sources = hints.sources;
-    v.targets = hints.targets;
-    v.direction = hints.direction;
-    builtin.volumes.push_back(v);
-  }
+// The built-in registry (hints reach cooper through the job's settings).
+std::unique_ptr<scheme::Registry> with_cooper() {
   auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r, builtin);
+  register_builtin_schemes(*r);
   return r;
+}
+
+// Job settings with sweep hints on volume 1.
+io::MeshSettings hinted(std::vector<int> sources, std::vector<int> targets = {}) {
+  io::MeshSettings s;
+  io::VolumeSetting v;
+  v.id = 1;
+  v.sources = std::move(sources);
+  v.targets = std::move(targets);
+  s.volumes.push_back(v);
+  return s;
 }
 
 // Every built-in scheme but cooper, so a test can add its own instance.
@@ -250,13 +252,15 @@ TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
   // Sweep around the arc: the source hint names the end face at angle 0.
   const int end_face = end_face_at_angle_zero(m0);
   ASSERT_GT(end_face, 0);
-  CooperOptions options;
-  options.hints[1] = SweepHints{{end_face}, {}, std::nullopt, {}};
-  const auto registry = with_cooper(options);
-  const pipeline::MeshResult r0 = pipeline::mesh_model(m0, sized(0.25, true), *registry, kOptions);
-  const pipeline::MeshResult r1 = pipeline::mesh_model(m1, sized(0.25, true), *registry, kOptions);
+  io::MeshSettings settings = hinted({end_face});
+  settings.size = 0.25;
+  settings.volumes.front().scheme = "cooper";
+  const auto registry = with_cooper();
+  const pipeline::MeshResult r0 = pipeline::mesh_model(m0, settings, *registry, kOptions);
+  const pipeline::MeshResult r1 = pipeline::mesh_model(m1, settings, *registry, kOptions);
   ASSERT_EQ(r0.plan.volumes.at(1).scheme, "cooper");
-  EXPECT_EQ(plan_test::plan_with(m0, 1, *registry, options.hints[1]).source, end_face);
+  EXPECT_EQ(plan_test::plan_with(m0, 1, *registry, SweepHints{{end_face}, {}, std::nullopt, {}}).source,
+            end_face);
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
@@ -363,16 +367,22 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   scheme::Registry registry;
   register_all_but_cooper(registry);
   auto owned = std::make_unique<CooperScheme>(registry);
-  CooperScheme* cooper = owned.get();
+  const CooperScheme* cooper = owned.get();
   registry.add(std::move(owned));
-  const scheme::VolumeView view{model, 1, nullptr};
+  // Hints are the job's settings, handed to the scheme through the view.
+  io::MeshSettings job;
+  const scheme::Settings settings = scheme::Settings::of(job);
+  const scheme::VolumeView view{model, 1, nullptr, &settings};
+  const auto set_hints = [&](std::vector<int> sources, std::vector<int> targets) {
+    job = hinted(std::move(sources), std::move(targets));
+  };
   // Unhinted: the larger annular faces are the caps (a sweep along z).
   const VolumePlan free = plan_test::plan_with(model, 1, registry);
   ASSERT_TRUE(free.ok) << free.why;
   EXPECT_NEAR(model.surface(free.source).box.size().z(), 0, 1e-6);
   // A hinted source is obeyed: the sweep goes around the arc.
   const int end_face = end_face_at_angle_zero(model);
-  cooper->set_hints(1, {end_face}, {}, std::nullopt);
+  set_hints({end_face}, {});
   const scheme::SurfaceRoles roles = cooper->roles(view);
   EXPECT_EQ(roles.at(end_face), "map");
   const VolumePlan arc = plan_test::plan_with(model, 1, registry, SweepHints{{end_face}, {}, {}, {}});
@@ -380,26 +390,29 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   EXPECT_EQ(arc.source, end_face);
   EXPECT_EQ(roles.at(arc.target), scheme::kMeshedByVolume);
   EXPECT_EQ(model.surface(arc.target).geometry->type(), geom::SurfaceType::Plane);
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25, true), registry, kOptions);
+  io::MeshSettings run = job;
+  run.size = 0.25;
+  run.volumes.front().scheme = "cooper";
+  const pipeline::MeshResult r = pipeline::mesh_model(model, run, registry, kOptions);
   EXPECT_GT(min_scaled_jacobian(r.mesh), 0.5);
   expect_conformal(r.mesh);
   // A hinted target alone fixes the source too.
-  cooper->set_hints(1, {}, {end_face}, std::nullopt);
+  set_hints({}, {end_face});
   EXPECT_EQ(cooper->roles(view).at(end_face), scheme::kMeshedByVolume);
   // Two sources: part II.
-  cooper->set_hints(1, {arc.source, arc.target}, {}, std::nullopt);
+  set_hints({arc.source, arc.target}, {});
   const scheme::Applicability two = cooper->applicable(view);
   EXPECT_FALSE(two.ok);
   EXPECT_NE(two.why.find("hinted source surface"), std::string::npos) << two.why;
   // A hinted target that no one-barrel sweep from that source reaches.
-  cooper->set_hints(1, {arc.source}, {arc.lattice.sides.front()}, std::nullopt);
+  set_hints({arc.source}, {arc.lattice.sides.front()});
   const scheme::Applicability bad = cooper->applicable(view);
   EXPECT_FALSE(bad.ok);
   EXPECT_NE(bad.why.find("volume 1"), std::string::npos) << bad.why;
   // A surface of another entity.
-  cooper->set_hints(1, {999}, {}, std::nullopt);
+  set_hints({999}, {});
   EXPECT_FALSE(cooper->applicable(view).ok);
-  cooper->set_hints(1, {}, {}, std::nullopt);
+  job = {};
   EXPECT_TRUE(cooper->applicable(view).ok);
 }
 

@@ -60,8 +60,8 @@ std::shared_ptr<const VolumePlan> plan_of_journal(const fs::path& path, geom::Mo
   const io::Job job = io::read_journal(path.string());
   model = pipeline::build_geometry(job);
   registry = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*registry, builtin_options(*job.mesh));
-  return plan_test::scheme_plan(*registry, model, 1);
+  register_builtin_schemes(*registry);
+  return plan_test::scheme_plan(*registry, model, 1, job.mesh ? &*job.mesh : nullptr);
 }
 
 TEST(CooperHints, ADirectionHintIsHonoured) {

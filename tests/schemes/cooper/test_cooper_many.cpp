@@ -364,10 +364,13 @@ TEST(CooperMany, ClassicStepFlushWithThreeWallsClassifiesAlongTheStep) {
   hinted->add(map::make_surface_map());
   hinted->add(submap::make_submap());
   hinted->add(map::make_volume_map());
-  CooperOptions options;
-  options.hints[1] = down;
-  hinted->add(make_cooper(*hinted, options));
-  const auto r = pipeline::mesh_model(model, sized(0.25), *hinted, selector::mesh_options());
+  hinted->add(make_cooper(*hinted));
+  io::MeshSettings job = sized(0.25);
+  io::VolumeSetting v;
+  v.id = 1;
+  v.direction = down.direction;
+  job.volumes.push_back(v);
+  const auto r = pipeline::mesh_model(model, job, *hinted, selector::mesh_options());
   expect_many_to_one(model, r, 24.0, "classic_flush_step_along_z");
 }
 

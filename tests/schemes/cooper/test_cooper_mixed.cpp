@@ -46,7 +46,7 @@ pipeline::MeshResult mesh(const geom::Model& model, io::ElementKind elements) {
   v.elements = elements;
   s.volumes.push_back(v);
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(s));
+  register_builtin_schemes(registry);
   return pipeline::mesh_model(model, s, registry, selector::mesh_options());
 }
 

@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 // with no inverted element. Returns whether it planned.
 bool expect_parity(const geom::Model& model, const io::MeshSettings& settings, const std::string& name) {
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_builtin_schemes(registry);
   selector::SelectOptions options;
   options.check_intervals = settings.size.has_value();
   try {
@@ -55,14 +55,15 @@ void check_model(const geom::Model& model, const io::MeshSettings& settings, con
   const bool planned = expect_parity(model, settings, name);
   EXPECT_TRUE(planned || !settings.size) << name << ": a shipped model does not plan";
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_builtin_schemes(registry);
+  const scheme::Settings job = scheme::Settings::of(settings);
   for (const auto& v : model.volumes()) {
-    const auto a = registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, v.id, nullptr});
+    const auto a = registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, v.id, nullptr, &job});
     if (!a.ok) continue;
     // Already meshed by cooper in the automatic plan: nothing new to prove.
     if (planned && a.score > 0.3) {
       scheme::Registry auto_registry;
-      register_builtin_schemes(auto_registry, builtin_options(settings));
+      register_builtin_schemes(auto_registry);
       selector::SelectOptions options;
       options.check_intervals = settings.size.has_value();
       const auto sel = selector::select_schemes(model, auto_registry, settings, options);
@@ -104,7 +105,7 @@ void check_journal(const fs::path& path) {
     // The model `cooperage run` meshes: after the automatic decomposition
     // (issue 17) when the journal asks for it.
     scheme::Registry registry;
-    register_builtin_schemes(registry, builtin_options(*job.mesh));
+    register_builtin_schemes(registry);
     model = pipeline::build_decomposed_geometry(job, registry, selector::planner()).model;
   } catch (const MeshingError&) {
     return;  // a journal about errors (a missing import, a bad value): no model

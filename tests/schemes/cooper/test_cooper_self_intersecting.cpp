@@ -41,14 +41,13 @@ class Pave2D final : public scheme::PolygonMesher {
   }
 };
 
-std::unique_ptr<scheme::Registry> registry(std::optional<geom::Vec3> direction = std::nullopt) {
+std::unique_ptr<scheme::Registry> registry() {
   auto r = std::make_unique<scheme::Registry>();
   r->add(map::make_surface_map());
   r->add(submap::make_submap());
   r->add(map::make_volume_map());
   CooperOptions options;
   options.polygon_mesher = std::make_shared<Pave2D>();
-  if (direction) options.hints[1].direction = direction;
   r->add(make_cooper(*r, options));
   return r;
 }
@@ -62,9 +61,16 @@ void flush_boss_and_foot(occ::Workbench& wb) {
 
 const geom::Vec3 kUp(0, 0, 1);
 
-io::MeshSettings sized(double size) {
+// The job: a size, and a sweep direction hint on volume 1 when given.
+io::MeshSettings sized(double size, std::optional<geom::Vec3> direction = std::nullopt) {
   io::MeshSettings s;
   s.size = size;
+  if (direction) {
+    io::VolumeSetting v;
+    v.id = 1;
+    v.direction = direction;
+    s.volumes.push_back(v);
+  }
   return s;
 }
 
@@ -97,8 +103,9 @@ TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
   occ::Workbench wb;
   flush_boss_and_foot(wb);
   const geom::Model model = wb.build_model();
-  const auto reg = registry(kUp);
-  const auto r = pipeline::mesh_model(model, sized(0.25), *reg, selector::mesh_options());
+  const auto reg = registry();
+  const io::MeshSettings up = sized(0.25, kUp);
+  const auto r = pipeline::mesh_model(model, up, *reg, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const auto s = testing::check_hex_mesh(model, r.mesh);  // conformity, no inverted hex
   EXPECT_NEAR(s.volume, 46.0, 46.0 * 1e-6);
@@ -108,7 +115,7 @@ TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
   std::printf("[cooper 5.5] flush boss and foot: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
   // The sec. 5.5 step ran: the barrel reports of the same sweep, replayed on
   // the meshed sides (cooper's own caps are meshed again, not read).
-  const auto m = plan_test::scheme_plan(*reg, model, 1);
+  const auto m = plan_test::scheme_plan(*reg, model, 1, &up);
   ASSERT_TRUE(m && m->ok);
   const Pave2D mesher;
   std::vector<BarrelReport> reports;
@@ -132,8 +139,9 @@ TEST(CooperSelfIntersecting, RigidMotionGivesTheMovedMesh) {
   motion.apply(moved, "part");
   const geom::Model m0 = still.build_model(), m1 = moved.build_model();
   const geom::Vec3 up = motion.apply(kUp) - motion.apply(geom::Vec3::Zero());
-  const auto r0 = pipeline::mesh_model(m0, sized(0.25), *registry(kUp), selector::mesh_options());
-  const auto r1 = pipeline::mesh_model(m1, sized(0.25), *registry(up), selector::mesh_options());
+  const auto reg = registry();
+  const auto r0 = pipeline::mesh_model(m0, sized(0.25, kUp), *reg, selector::mesh_options());
+  const auto r1 = pipeline::mesh_model(m1, sized(0.25, up), *reg, selector::mesh_options());
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
   const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);

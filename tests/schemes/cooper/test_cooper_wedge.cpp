@@ -44,9 +44,9 @@ io::MeshSettings wedge_settings(double size, const std::string& scheme = "cooper
   return s;
 }
 
-std::unique_ptr<scheme::Registry> registry_for(const io::MeshSettings& settings) {
+std::unique_ptr<scheme::Registry> registry_for(const io::MeshSettings& /*settings*/) {
   auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r, builtin_options(settings));
+  register_builtin_schemes(*r);
   return r;
 }
 
@@ -245,34 +245,35 @@ TEST(CooperWedge, ApplicableBothWays) {
   boss.fuse("part", {"b", "boss"});
   const geom::Model many = boss.build_model();
 
-  const auto hex = registry_for(wedge_settings(0.5, "cooper", io::ElementKind::Hex));
-  const auto wedge = registry_for(wedge_settings(0.5));
-  const auto* hex_cooper = hex->volume_scheme("cooper");
-  const auto* wedge_cooper = wedge->volume_scheme("cooper");
-  EXPECT_TRUE(hex_cooper->applicable({one, 1, nullptr}).ok);
-  EXPECT_TRUE(wedge_cooper->applicable({one, 1, nullptr}).ok);
-  const scheme::SurfaceRoles roles = wedge_cooper->roles({one, 1, nullptr});
+  // One registry for both jobs: the element kind is the job's (scheme::Settings).
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const auto* cooper = registry.volume_scheme("cooper");
+  const io::MeshSettings hex_job = wedge_settings(0.5, "cooper", io::ElementKind::Hex);
+  const io::MeshSettings wedge_job = wedge_settings(0.5);
+  const scheme::Settings hex = scheme::Settings::of(hex_job), wedge = scheme::Settings::of(wedge_job);
+  EXPECT_TRUE(cooper->applicable({one, 1, nullptr, &hex}).ok);
+  EXPECT_TRUE(cooper->applicable({one, 1, nullptr, &wedge}).ok);
+  const scheme::SurfaceRoles roles = cooper->roles({one, 1, nullptr, &wedge});
   EXPECT_EQ(std::count_if(roles.begin(), roles.end(),
                           [](const auto& r) { return r.second == "tri"; }),
             1);
-  const scheme::SurfaceRoles hex_roles = hex_cooper->roles({one, 1, nullptr});
+  const scheme::SurfaceRoles hex_roles = cooper->roles({one, 1, nullptr, &hex});
   EXPECT_EQ(std::count_if(hex_roles.begin(), hex_roles.end(),
                           [](const auto& r) { return r.second == "tri"; }),
             0);
 
-  EXPECT_TRUE(hex_cooper->applicable({many, 1, nullptr}).ok);
-  const scheme::Applicability a = wedge_cooper->applicable({many, 1, nullptr});
+  EXPECT_TRUE(cooper->applicable({many, 1, nullptr, &hex}).ok);
+  const scheme::Applicability a = cooper->applicable({many, 1, nullptr, &wedge});
   EXPECT_TRUE(a.ok) << a.why;
-  const scheme::SurfaceRoles many_roles = wedge_cooper->roles({many, 1, nullptr});
+  const scheme::SurfaceRoles many_roles = cooper->roles({many, 1, nullptr, &wedge});
   EXPECT_EQ(std::count_if(many_roles.begin(), many_roles.end(),
                           [](const auto& r) { return r.second == "tri"; }),
             2);  // the boss top and the shoulder
   // Without the tri scheme, wedge mode does not apply, and says why.
   scheme::Registry bare;
-  CooperOptions wedge_only;
-  wedge_only.elements[1] = Elements::Wedge;
-  const auto bare_cooper = make_cooper(bare, wedge_only);
-  const scheme::Applicability no = bare_cooper->applicable({one, 1, nullptr});
+  const auto bare_cooper = make_cooper(bare);
+  const scheme::Applicability no = bare_cooper->applicable({one, 1, nullptr, &wedge});
   EXPECT_FALSE(no.ok);
 }
 

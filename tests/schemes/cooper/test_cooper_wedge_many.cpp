@@ -37,7 +37,7 @@ io::MeshSettings settings_for(double size, io::ElementKind elements) {
 
 pipeline::MeshResult mesh(const geom::Model& model, const io::MeshSettings& settings) {
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(settings));
+  register_builtin_schemes(registry);
   return pipeline::mesh_model(model, settings, registry, selector::mesh_options());
 }
 

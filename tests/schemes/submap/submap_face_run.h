@@ -61,15 +61,18 @@ struct FaceRun {
 /// Every curve of the model gets goal length / size; the scheme adds its
 /// constraints for `surface_id`; solve, mesh curves, mesh the surface.
 inline FaceRun run_face(const geom::Model& model, int surface_id,
-                        const scheme::SurfaceScheme& scheme, double size) {
+                        const scheme::SurfaceScheme& scheme, double size,
+                        const scheme::Settings* settings = nullptr) {
   FaceRun run;
   for (const auto& c : model.curves()) run.problem.add_curve(c.id, std::max(c.length / size, 1e-3));
-  const scheme::SurfaceView view{model, surface_id, nullptr};
+  const scheme::SurfaceView view{model, surface_id, nullptr, settings};
   scheme.constrain(view, run.problem);
   run.solution = intervals::solve(run.problem);
   pipeline::mesh_curves(model, run.solution.intervals, io::MeshSettings{}, run.db);
-  const scheme::SurfaceView meshed{model, surface_id, &run.db};
-  run.mesh = scheme.mesh(meshed, scheme::MeshParams{size});
+  const scheme::SurfaceView meshed{model, surface_id, &run.db, settings};
+  scheme::Settings params = settings ? *settings : scheme::Settings{};
+  params.size = size;
+  run.mesh = scheme.mesh(meshed, params);
   return run;
 }
 

@@ -331,9 +331,12 @@ TEST(SubmapFaces, PinnedVertexTypeIsKept) {
   EXPECT_EQ(sides, 1);
 
   // Through the scheme: the pin reaches the classification and the face meshes.
-  const auto scheme = make_submap({pin});
-  ASSERT_TRUE(scheme->applicable({m, sid, nullptr}).ok);
-  const auto run = run_face(m, sid, *scheme, 0.5);
+  io::MeshSettings job;
+  job.vertex_types = {pin};
+  const scheme::Settings settings = scheme::Settings::of(job);
+  const auto scheme = make_submap();
+  ASSERT_TRUE(scheme->applicable({m, sid, nullptr, &settings}).ok);
+  const auto run = run_face(m, sid, *scheme, 0.5, &settings);
   expect_valid_surface_mesh(m, sid, run);
   // A pin on another surface changes nothing.
   pin.surface = sid + 100;

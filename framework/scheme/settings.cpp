@@ -1,0 +1,36 @@
+#include "framework/scheme/settings.h"
+
+namespace cooperage::scheme {
+
+Settings Settings::of(const io::MeshSettings& job, int dim) {
+  Settings s;
+  s.size = job.size.value_or(1.0);
+  s.allow_fallback = dim == 2;
+  s.job = &job;
+  return s;
+}
+
+const Settings& Settings::none() {
+  static const Settings defaults;
+  return defaults;
+}
+
+const io::VolumeSetting* Settings::volume(int volume_id) const {
+  if (!job) return nullptr;
+  for (const io::VolumeSetting& v : job->volumes) {
+    if (v.id == volume_id) return &v;
+  }
+  return nullptr;
+}
+
+io::ElementKind Settings::elements(int volume_id) const {
+  const io::VolumeSetting* v = volume(volume_id);
+  return v ? v->elements : io::ElementKind::Hex;
+}
+
+const std::vector<io::VertexTypeSetting>& Settings::vertex_types() const {
+  static const std::vector<io::VertexTypeSetting> none;
+  return job ? job->vertex_types : none;
+}
+
+}  // namespace cooperage::scheme

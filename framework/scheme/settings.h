@@ -1,0 +1,42 @@
+// What one job asks of the schemes (docs/design.md, "Plans and settings"):
+// the one settings type that reaches a scheme, read-only, through the views
+// of applicable(), constrain(), roles() and as mesh()'s argument. Schemes
+// are registered once and keep no per-job state; everything that differs
+// from one job to the next (element kind and sweep hints per volume, submap
+// vertex types, the size, whether a surface may fall back) is read here.
+#pragma once
+
+#include "framework/io/job.h"
+
+#include <vector>
+
+namespace cooperage::scheme {
+
+struct Settings {
+  double size = 1.0;  ///< target element size [model units]
+  /// The surface mesh is the product (`--dim 2`), not the input of a volume
+  /// scheme: a surface scheme that cannot reach its quality may fall back
+  /// to another one, to quad-dominant or to triangles, saying so in
+  /// EntityMesh::warnings, instead of failing. A volume scheme needs the
+  /// surface meshes it imposed, so the pipeline leaves this off in 3D.
+  bool allow_fallback = false;
+  /// The job's <mesh> settings (per-volume element kinds, sweep hints and
+  /// pins, vertex types, sizes); null: none (every default). It must
+  /// outlive every call that is given these Settings.
+  const io::MeshSettings* job = nullptr;
+
+  /// The settings of one run: `job`'s size (else 1), falling back only
+  /// when the surface mesh is the product (dim 2).
+  static Settings of(const io::MeshSettings& job, int dim = 3);
+  /// Defaults: no job (what a view without Settings gives).
+  static const Settings& none();
+
+  /// The job's <volume> setting of a volume, or null.
+  const io::VolumeSetting* volume(int volume_id) const;
+  /// The element kind asked of a volume (Hex unless the job says otherwise).
+  io::ElementKind elements(int volume_id) const;
+  /// The journal's hard vertex classifications (submap), every surface's.
+  const std::vector<io::VertexTypeSetting>& vertex_types() const;
+};
+
+}  // namespace cooperage::scheme
