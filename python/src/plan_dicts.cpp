@@ -56,7 +56,7 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
     // plan` cut them; when no cut helps, the undecomposed model is planned
     // and select_schemes() names the refused volume.
     scheme::Registry defaults;
-    register_schemes(defaults, BuiltinOptions{}, {});
+    register_schemes(defaults, {});
     pipeline::PlanInput input;
     try {
       input = pipeline::plan_input(file.string(), size, &defaults, selector::planner());

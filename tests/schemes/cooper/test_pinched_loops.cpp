@@ -76,7 +76,7 @@ TEST(PinchedLoops, CornerTouchingBossesJournalMeshes) {
   const geom::Model model = pipeline::build_geometry(job);
   ASSERT_EQ(model.volumes().size(), 4u);
   scheme::Registry registry;
-  register_builtin_schemes(registry, builtin_options(*job.mesh));
+  register_builtin_schemes(registry);
   const auto r = pipeline::mesh_model(model, *job.mesh, registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
