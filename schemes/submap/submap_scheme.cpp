@@ -1,5 +1,7 @@
 #include "schemes/submap/submap_scheme.h"
 
+#include "schemes/submap/facing_edges.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -112,6 +114,7 @@ void SurfaceSubmap::constrain(const scheme::SurfaceView& view,
                               intervals::IntervalProblem& problem) const {
   const SubmapPlan plan = plan_submap(view.model, view.surface_id, pins_, options_.classify);
   add_submap_constraints(view.surface_id, plan, problem);
+  if (plan.ok) add_facing_edge_constraints(view.model, view.surface_id, plan.loops.front(), problem);
 }
 
 scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
