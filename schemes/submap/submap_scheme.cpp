@@ -1,5 +1,7 @@
 #include "schemes/submap/submap_scheme.h"
 
+#include "schemes/submap/facing_edges.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -122,7 +124,11 @@ scheme::Applicability SurfaceSubmap::applicable(const scheme::SurfaceView& view)
 
 void SurfaceSubmap::constrain(const scheme::SurfaceView& view,
                               intervals::IntervalProblem& problem) const {
-  add_submap_constraints(view.surface_id, plan(view)->plan, problem);
+  const auto carried = plan(view);
+  add_submap_constraints(view.surface_id, carried->plan, problem);
+  if (carried->plan.ok) {
+    add_facing_edge_constraints(view.model, view.surface_id, carried->plan.loops.front(), problem);
+  }
 }
 
 scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
