@@ -293,10 +293,11 @@ std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
     }
     std::vector<FaceHit>& hits = result[sid];
     hits.reserve(s.size());
+    const int surface_id = sid;  // C++17 lambdas cannot capture a structured binding (clang)
     auto look = [&](const int* nodes, int n, const char* kind, size_t i) {
       FaceHit h = it->second.find(nodes, n);
       if (h.element < 0) {
-        throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(sid),
+        throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(surface_id),
                            std::string(kind) + " " + std::to_string(i) +
                                " is not a face of any element of volume " +
                                std::to_string(vid) + " (non-conformal mesh)");

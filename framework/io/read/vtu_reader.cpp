@@ -8,6 +8,7 @@
 #include "framework/io/read/read_common.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 
 #include <tinyxml2.h>
 
@@ -331,7 +332,9 @@ MeshFile read_vtu(const std::string& path) {
   const SplitVtu split = split_appended(path, text);
   tinyxml2::XMLDocument doc;
   if (doc.Parse(split.xml.data(), split.xml.size()) != tinyxml2::XML_SUCCESS) {
-    parse_error(path, std::string("XML error: ") + (doc.ErrorStr() ? doc.ErrorStr() : "unknown") +
+    // tinyxml2's ErrorStr() quotes the offending text whole (a damaged
+    // declaration ran past 1,000 characters under libFuzzer): clipped.
+    parse_error(path, std::string("XML error: ") + clip(doc.ErrorStr() ? doc.ErrorStr() : "unknown") +
                           " (line " + std::to_string(doc.ErrorLineNum()) + ")");
   }
   const auto* root = doc.RootElement();

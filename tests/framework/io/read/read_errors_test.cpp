@@ -148,3 +148,28 @@ TEST(ReadErrors, VtuConnectivityOutOfRange) {
 
 }  // namespace
 }  // namespace cooperage::test
+
+namespace cooperage::test {
+namespace {
+
+// libFuzzer (scripts/fuzz.sh mesh_read, 2026-12-02): a .vtu whose XML
+// declaration came after other text gave an error of
+// over 1,000 characters, because tinyxml2 quotes the offending text whole.
+TEST(ReadErrors, VtuXmlErrorIsClipped) {
+  const std::string path = scratch_dir() + "/long.vtu";
+  std::string lines;
+  for (int i = 0; i < 200; ++i) lines += "  0.5 0.25 1\n";
+  // A declaration after other text: tinyxml2 quotes all of it (1,032 characters before the fix).
+  write_file(path, "text\n<?xml vers 1\n" + lines + "?>\n<VTKFile/>\n");
+  try {
+    io::read_mesh_file(path);
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::ParseError) << e.what();
+    EXPECT_NE(std::string(e.what()).find("XML error"), std::string::npos) << e.what();
+    EXPECT_LT(std::string(e.what()).size(), 300u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cooperage::test
