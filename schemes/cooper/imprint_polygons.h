@@ -60,6 +60,10 @@ bool adjacent(const Loop& loop, int a, int b);
 std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y);
 /// Splits a loop at its first repeated node; false when none.
 bool split_at_repeat(const Loop& loop, Loop& a, Loop& b);
+/// The first pair of crossing segments (i, k), i < k, in the order of a
+/// nested scan over i then k (segments sharing a node skipped), or none.
+std::optional<std::pair<size_t, size_t>> first_crossing(const Loop& loop,
+                                                        const std::map<int, Vec2>& xy);
 
 }  // namespace detail
 }  // namespace cooperage::cooper

@@ -331,3 +331,83 @@ TEST(ImprintSubcaps, FeaturesTouchingAtACornerSplitTheOpposingCap) {
 
 }  // namespace
 }  // namespace cooperage::cooper
+
+namespace cooperage::cooper {
+namespace {
+
+// The grid search of detail::first_crossing (campaign case 8110: a 7,500-long
+// boss made the old pairwise scan stall) must find the same first pair as
+// that scan, which this test keeps as the reference.
+std::optional<std::pair<size_t, size_t>> brute_first_crossing(const std::vector<int>& loop,
+                                                              const std::map<int, Vec2>& xy) {
+  const size_t n = loop.size();
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t k = i + 2; k < n; ++k) {
+      if ((k + 1) % n == i) continue;
+      const int a0 = loop[i], a1 = loop[(i + 1) % n], b0 = loop[k], b1 = loop[(k + 1) % n];
+      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+      if (detail::segment_hit(xy.at(a0), xy.at(a1), xy.at(b0), xy.at(b1))) return std::make_pair(i, k);
+    }
+  }
+  return std::nullopt;
+}
+
+TEST(ImprintPolygons, FirstCrossingMatchesThePairwiseScan) {
+  std::uint32_t state = 12345;
+  auto next = [&] {  // a small LCG: the same loops on every platform
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
+  };
+  int crossing = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 4 + trial % 37;
+    std::map<int, Vec2> xy;
+    std::vector<int> loop;
+    for (int v = 0; v < n; ++v) {
+      // Even trials: a star-shaped loop (no crossing); odd ones: random points
+      // (crossings). On a lattice every third trial, for collinear and touching cases.
+      const double angle = 2 * M_PI * v / n;
+      const double r = 1.0 + 0.05 * next();
+      Vec2 p(r * std::cos(angle), r * std::sin(angle));
+      if (trial % 2) p = Vec2(2 * next() - 1, 2 * next() - 1);
+      if (trial % 3 == 0) p = Vec2(std::round(p.x() * 4), std::round(p.y() * 4));
+      xy[v + 1] = p;
+      loop.push_back(v + 1);
+    }
+    const auto expected = brute_first_crossing(loop, xy);
+    EXPECT_EQ(detail::first_crossing(loop, xy), expected) << "trial " << trial;
+    crossing += expected.has_value();
+  }
+  EXPECT_GT(crossing, 30) << "the trials must exercise crossings";
+  EXPECT_LT(crossing, 270) << "and loops without one";
+}
+
+TEST(ImprintPolygons, SplitAtRepeatTakesTheFirstRepeatedNode) {
+  // Node 7 repeats first by position of its first pass (i = 1), although
+  // node 9's second pass comes earlier (j = 3).
+  const std::vector<int> loop = {1, 7, 9, 9, 2, 7, 3};
+  std::vector<int> a, b;
+  ASSERT_TRUE(detail::split_at_repeat(loop, a, b));
+  EXPECT_EQ(a, (std::vector<int>{7, 9, 9, 2}));
+  EXPECT_EQ(b, (std::vector<int>{7, 3, 1}));
+  EXPECT_FALSE(detail::split_at_repeat({1, 2, 3, 4}, a, b));
+}
+
+TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
+  // 20,000 nodes: two long lobes crossing once in the middle.
+  std::map<int, Vec2> xy;
+  std::vector<int> loop;
+  const int half = 10000;
+  for (int v = 0; v < 2 * half; ++v) {
+    const double t = 2 * M_PI * v / (2 * half);
+    xy[v + 1] = Vec2(1000.0 * std::sin(t), std::sin(2 * t));  // a lemniscate-like curve
+    loop.push_back(v + 1);
+  }
+  const auto parts = split_self_intersections(loop, xy, false);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_NEAR(std::abs(signed_area(parts[0], xy)), std::abs(signed_area(parts[1], xy)),
+              1e-6 * std::abs(signed_area(parts[0], xy)));
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
