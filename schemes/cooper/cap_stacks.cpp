@@ -190,18 +190,12 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   };
   for (const auto& q : from.quads) quads.push_back({local(q[0]), local(q[1]), local(q[2]), local(q[3])});
   for (const auto& t : from.tris) tris.push_back({local(t[0]), local(t[1]), local(t[2])});
-  // An affine motion leaves no residual; then the O(interior x boundary)
-  // interpolation is skipped (a 4 x 40,000 cap took a minute; as in
-  // place_layer_nodes.cpp).
-  Vec3 lo = points[0], hi = points[0];
+  // An affine motion leaves no residual: then the O(interior x boundary)
+  // interpolation is skipped (a 4 x 40,000 cap took a minute).
   double largest = 0.0;
-  for (size_t k = 0; k < boundary; ++k) {
-    lo = lo.cwiseMin(points[k]);
-    hi = hi.cwiseMax(points[k]);
-    largest = std::max(largest, residual[k].norm());
-  }
+  for (const Vec3& x : residual) largest = std::max(largest, x.norm());
   std::vector<Vec3> r;
-  if (largest > 1e-9 * (hi - lo).norm()) {
+  if (largest > residual_tolerance(points.data(), boundary)) {
     ResidualField(points, boundary).apply(residual, r);
   } else {
     r.assign(points.size(), Vec3::Zero());

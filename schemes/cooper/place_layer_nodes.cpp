@@ -60,17 +60,6 @@ std::vector<double> arc_length_fractions(const SweepInput& in) {
   return s;
 }
 
-// Residuals above this size are corrected (affine motions have none, so
-// plain and rigid sweeps skip the O(n B) interpolation).
-double residual_tolerance(const std::vector<Vec3>& ring) {
-  Vec3 lo = ring[0], hi = ring[0];
-  for (const Vec3& p : ring) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return 1e-9 * (hi - lo).norm();
-}
-
 // The residual field of the cap (built on first need, once per sweep).
 class LazyField {
  public:
@@ -115,7 +104,7 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
           "inverting (det A <= 0)";
     return false;
   }
-  const double tolerance = residual_tolerance(ring);
+  const double tolerance = residual_tolerance(ring.data(), ring.size());
   std::vector<Vec3> res_u;
 
   // Target interior nodes are independent of each other: placed in parallel
@@ -156,7 +145,7 @@ bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& wh
   if (n == B) return true;
   const std::vector<Vec3> ring = layer_major_rings(in);
   const std::vector<double> s = arc_length_fractions(in);
-  const double tolerance = residual_tolerance(ring);
+  const double tolerance = residual_tolerance(ring.data(), ring.size());
   const Vec3* upper = &ring[0];
   const Vec3* lower = &ring[J * B];
   const Vec3* target = &points[J * n];

@@ -30,6 +30,16 @@ ResidualField::ResidualField(const std::vector<Vec3>& points, std::size_t bounda
   }
 }
 
+double residual_tolerance(const Vec3* points, std::size_t count) {
+  if (count == 0) return 0.0;
+  Vec3 lo = points[0], hi = points[0];
+  for (std::size_t k = 1; k < count; ++k) {
+    lo = lo.cwiseMin(points[k]);
+    hi = hi.cwiseMax(points[k]);
+  }
+  return 1e-9 * (hi - lo).norm();
+}
+
 // cite: Blacker 1996, sec. 6.1 (least-squares weighted residuals).
 void ResidualField::apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) const {
   const std::size_t n = points_.size();

@@ -15,6 +15,11 @@
 
 namespace cooperage::cooper {
 
+/// Residuals at most this size are noise, not motion: 1e-9 of the diagonal
+/// of the points' bounding box. Affine motions leave none, so plain and
+/// rigid sweeps skip the O(interior x boundary) interpolation.
+double residual_tolerance(const Vec3* points, std::size_t count);
+
 class ResidualField {
  public:
   /// \param[in] points  cap nodes, the first `boundary` of them on the boundary
