@@ -10,8 +10,7 @@ namespace {
 
 Result run_one(const io::Job& job, int dim, const Options& options) {
   scheme::Registry registry;
-  register_schemes(registry,
-                   run_plugins(options.plugins, job.plugins));
+  register_schemes(registry, run_plugins(options.plugins, job.plugins));
   pipeline::RunResult run =
       pipeline::run_job(job, registry, selector::mesh_options(dim, options.threads));
   Result r;

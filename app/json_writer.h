@@ -33,7 +33,7 @@ class JsonWriter {
   void separate();
 
   std::ostream& out_;
-  std::vector<bool> first_;   // per open container: no member written yet
+  std::vector<bool> first_;  // per open container: no member written yet
   bool after_key_ = false;
 };
 

@@ -79,7 +79,8 @@ void print_error(const MeshingError& e) {
         break;
       }
     }
-    if (open != std::string::npos && open > 0 && first[open - 1] == ' ' && first.size() - open > 60) {
+    if (open != std::string::npos && open > 0 && first[open - 1] == ' ' &&
+        first.size() - open > 60) {
       details = first.substr(open + 1, first.size() - open - 2);
       first.resize(open - 1);
     }
@@ -91,8 +92,7 @@ void print_error(const MeshingError& e) {
 
 int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   scheme::Registry registry;
-  register_schemes(registry,
-                   run_plugins(limits.plugins, job.plugins));
+  register_schemes(registry, run_plugins(limits.plugins, job.plugins));
   app::Progress progress(!limits.quiet);
   pipeline::MeshOptions options;
   options.planner = selector::planner();
@@ -182,7 +182,8 @@ int main(int argc, char** argv) {
   bool info_no_imprint = false;
   CLI::App* info = app.add_subcommand(
       "info", "Describe a model: volumes, surfaces, curves, vertices, types, measures");
-  info->add_option("FILE", info_file, "A CAD file (.step .stp .iges .igs .brep) or a journal (.xml)")
+  info->add_option("FILE", info_file,
+                   "A CAD file (.step .stp .iges .igs .brep) or a journal (.xml)")
       ->required();
   info->add_flag("--json", info_json, "Print one JSON object instead of text");
   info->add_flag("--no-imprint", info_no_imprint,
@@ -222,9 +223,13 @@ int main(int argc, char** argv) {
   mesh->add_option("--size", mesh_size, "Element size, in the model's length unit")->required();
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
-  mesh->add_option("-o,--output", mesh_output, "Output file: .exo .msh .vtu .inp, or a surface format .obj .off .stl .ply (a 3D mesh "
-                   "gives its boundary)")->required();
-  mesh->add_flag("--binary", mesh_binary, "Binary .vtu (raw appended), .msh (Gmsh 4.1 binary), .stl or .ply");
+  mesh->add_option(
+          "-o,--output", mesh_output,
+          "Output file: .exo .msh .vtu .inp, or a surface format .obj .off .stl .ply (a 3D mesh "
+          "gives its boundary)")
+      ->required();
+  mesh->add_flag("--binary", mesh_binary,
+                 "Binary .vtu (raw appended), .msh (Gmsh 4.1 binary), .stl or .ply");
   mesh->add_flag("--no-imprint", mesh_no_imprint, "Keep touching solids separate");
   mesh->add_option("--elements", mesh_elements,
                    "hex (default); wedge: triangle caps swept into wedges; mixed: quad-dominant "
@@ -248,19 +253,21 @@ int main(int argc, char** argv) {
   plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
 
   bool schemes_json = false;
-  CLI::App* schemes = app.add_subcommand(
-      "schemes", "List every registered scheme: name, dimension, origin (built in or which "
-                 "plug-in library), the roles it serves");
+  CLI::App* schemes =
+      app.add_subcommand("schemes",
+                         "List every registered scheme: name, dimension, origin (built in or which "
+                         "plug-in library), the roles it serves");
   schemes->add_flag("--json", schemes_json, "Print one JSON array instead of text");
 
   std::string quality_file;
   bool quality_json = false;
-  CLI::App* quality = app.add_subcommand(
-      "quality", "Report the element quality of a mesh file, block by block");
+  CLI::App* quality =
+      app.add_subcommand("quality", "Report the element quality of a mesh file, block by block");
   quality->add_option("FILE", quality_file, "A mesh file (.exo .e .g .msh .vtu)")->required();
   quality->add_flag("--json", quality_json, "Print one JSON object instead of text");
-  quality->add_option("--report", report_file,
-                      "Also write an HTML report (pictures coloured by scaled Jacobian, histograms)");
+  quality->add_option(
+      "--report", report_file,
+      "Also write an HTML report (pictures coloured by scaled Jacobian, histograms)");
 
   try {
     app.parse(argc, argv);
@@ -287,7 +294,8 @@ int main(int argc, char** argv) {
       return app::run_quality(quality_file, quality_json, std::cout, report_file);
     }
     if (*plan) {
-      return app::run_plan(plan_file, plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
+      return app::run_plan(plan_file,
+                           plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
                            plan_json, plugins, std::cout);
     }
     if (*mesh) {

@@ -45,8 +45,8 @@ int inner_loop_count(const geom::Model& model) {
 
 void write_model_text(const geom::Model& model, const std::string& source, std::ostream& out) {
   out << "model " << source << "\n";
-  out << "  " << model.volumes().size() << " volumes, " << model.surfaces().size()
-      << " surfaces, " << model.curves().size() << " curves, " << model.vertices().size()
+  out << "  " << model.volumes().size() << " volumes, " << model.surfaces().size() << " surfaces, "
+      << model.curves().size() << " curves, " << model.vertices().size()
       << " vertices; Euler-Poincare V-E+F-R = " << geom::euler_characteristic(model)
       << " (R = " << inner_loop_count(model) << " inner loops)\n";
   out << "  length unit: " << num(model.unit_in_metres()) << " m\n";
@@ -94,9 +94,7 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
 
 void write_model_json(const geom::Model& model, const std::string& source, std::ostream& out) {
   JsonWriter j(out);
-  auto vec = [&](const geom::Vec3& p) {
-    j.value(std::vector<double>{p.x(), p.y(), p.z()});
-  };
+  auto vec = [&](const geom::Vec3& p) { j.value(std::vector<double>{p.x(), p.y(), p.z()}); };
   j.begin_object();
   j.key("source");
   j.value(source);

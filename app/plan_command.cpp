@@ -16,7 +16,7 @@
 namespace cooperage::app {
 namespace {
 
-constexpr int kExitRefused = 2;  // as `mesh` and `run` exit for a volume no scheme fits
+constexpr int kExitRefused = 2;          // as `mesh` and `run` exit for a volume no scheme fits
 constexpr size_t kMaxRefusalLine = 300;  // the whole reason is in the plan above
 
 // The cooper plan of a volume the selection gave to cooper (Blacker 1996,
@@ -39,15 +39,16 @@ std::vector<selector::Candidate> refused_candidates(int volume, const geom::Mode
                                                     const scheme::Settings& job) {
   std::vector<selector::Candidate> out;
   for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
-    out.push_back(selector::Candidate{std::string(s->name()), s->applicable(scheme::VolumeView{model, volume, nullptr, &job})});
+    out.push_back(selector::Candidate{
+        std::string(s->name()), s->applicable(scheme::VolumeView{model, volume, nullptr, &job})});
   }
   return out;
 }
 
 void write_text(const selector::Selection& sel, const decompose::Report& cuts,
                 const std::string& decomposition_failed, bool intervals_checked,
-                const geom::Model& model, const scheme::Registry& registry, const scheme::Settings& job,
-                std::ostream& out) {
+                const geom::Model& model, const scheme::Registry& registry,
+                const scheme::Settings& job, std::ostream& out) {
   auto entity = [&](const selector::Choice& c) {
     out << (c.dim == 3 ? "volume " : "surface ") << c.id << ": "
         << (c.scheme == scheme::kMeshedByVolume ? std::string("meshed by its volume") : c.scheme)
@@ -68,7 +69,8 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
     out << "decomposition (" << cuts.tried << " cuts tried)\n";
     for (const auto& line : cut_lines) out << "  " << line << "\n";
   }
-  if (!decomposition_failed.empty()) out << "decomposition failed: " << decomposition_failed << "\n";
+  if (!decomposition_failed.empty())
+    out << "decomposition failed: " << decomposition_failed << "\n";
   if (!sel.volumes.empty() || !sel.refused.empty()) out << "volumes\n";
   auto refused = sel.refused.begin();
   auto print_refused_before = [&](int id) {  // refusals in id order among the choices
@@ -216,8 +218,8 @@ void write_candidates(JsonWriter& j, const std::vector<selector::Candidate>& can
 
 void write_json(const selector::Selection& sel, const decompose::Report& cuts,
                 const std::string& decomposition_failed, bool intervals_checked,
-                const geom::Model& model, const scheme::Registry& registry, const scheme::Settings& job,
-                std::ostream& out) {
+                const geom::Model& model, const scheme::Registry& registry,
+                const scheme::Settings& job, std::ostream& out) {
   JsonWriter j(out);
   auto entities = [&](const std::vector<selector::Choice>& list) {
     j.begin_array();
@@ -312,12 +314,15 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
     sel = selector::select_schemes(model, registry, settings, options);
   }
   if (json) {
-    write_json(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, job, out);
+    write_json(sel, input.decomposition, decomposition_failed, options.check_intervals, model,
+               registry, job, out);
   } else {
-    write_text(sel, input.decomposition, decomposition_failed, options.check_intervals, model, registry, job, out);
+    write_text(sel, input.decomposition, decomposition_failed, options.check_intervals, model,
+               registry, job, out);
   }
   for (const auto& [id, r] : sel.refused) {
-    std::cerr << "cooperage: error: volume " << id << ": " << clip(r.message, kMaxRefusalLine) << "\n";
+    std::cerr << "cooperage: error: volume " << id << ": " << clip(r.message, kMaxRefusalLine)
+              << "\n";
   }
   return sel.refused.empty() ? 0 : kExitRefused;
 }

@@ -6,7 +6,8 @@
 namespace cooperage::app {
 
 Progress::Progress(bool enabled)
-    : enabled_(enabled), terminal_(::isatty(STDERR_FILENO) != 0),
+    : enabled_(enabled),
+      terminal_(::isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() { finish(); }

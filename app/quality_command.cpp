@@ -26,8 +26,8 @@ std::vector<BlockReport> evaluate_blocks(const io::MeshFile& file) {
     const int stride = quality::node_count(b.type);
     for (quality::Metric m : quality::kAllMetrics) {
       if (!quality::is_defined(m, b.type)) continue;
-      const auto values = quality::evaluate(m, b.type, file.coords, b.connectivity.data(),
-                                            b.size(), stride);
+      const auto values =
+          quality::evaluate(m, b.type, file.coords, b.connectivity.data(), b.size(), stride);
       r.metrics.push_back(quality::summarize(m, values));
     }
     reports.push_back(std::move(r));
@@ -43,8 +43,8 @@ std::size_t element_count(const io::MeshFile& file) {
 
 void write_text(const std::string& path, const io::MeshFile& file,
                 const std::vector<BlockReport>& reports, std::ostream& out) {
-  out << path << ": " << file.coords.size() << " nodes, " << element_count(file)
-      << " elements in " << file.blocks.size() << " blocks\n";
+  out << path << ": " << file.coords.size() << " nodes, " << element_count(file) << " elements in "
+      << file.blocks.size() << " blocks\n";
   for (const auto& [type, count] : file.skipped) {
     out << "skipped " << count << " " << type << " cells\n";
   }
@@ -61,8 +61,8 @@ void write_text(const std::string& path, const io::MeshFile& file,
         std::snprintf(line, sizeof line, "  %-17s %12.6g %12.6g %12.6g %12.6g %9zu\n",
                       s.metric.c_str(), s.min, s.mean, s.max, s.median, s.inverted);
       } else {
-        std::snprintf(line, sizeof line, "  %-17s %12.6g %12.6g %12.6g\n", s.metric.c_str(),
-                      s.min, s.mean, s.max);
+        std::snprintf(line, sizeof line, "  %-17s %12.6g %12.6g %12.6g\n", s.metric.c_str(), s.min,
+                      s.mean, s.max);
       }
       out << line;
     }
@@ -128,8 +128,10 @@ void write_json(const std::string& path, const io::MeshFile& file,
 int run_quality(const std::string& path, bool json, std::ostream& out, const std::string& html) {
   const io::MeshFile file = io::read_mesh_file(path);
   const auto reports = evaluate_blocks(file);
-  if (json) write_json(path, file, reports, out);
-  else write_text(path, file, reports, out);
+  if (json)
+    write_json(path, file, reports, out);
+  else
+    write_text(path, file, reports, out);
   if (!html.empty()) {
     report::write_report(html, report::report_input(file, path));
     if (!json) out << "wrote " << html << '\n';

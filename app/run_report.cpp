@@ -38,7 +38,8 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     seconds[{t.dim, t.id}] = t.seconds;
     schemes[{t.dim, t.id}] = t.scheme;
   }
-  for (const auto& l : decompose::report_lines(result.decomposition)) out << "decomposed " << l << "\n";
+  for (const auto& l : decompose::report_lines(result.decomposition))
+    out << "decomposed " << l << "\n";
   char line[256];
   std::snprintf(line, sizeof line, "%-12s %-8s %-6s %10s %8s %8s %8s %8s %9s\n", "entity", "scheme",
                 "type", "elements", "min SJ", "mean SJ", "max SJ", "inverted", "time [s]");
@@ -80,7 +81,8 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
   }
   if (!result.stages.empty()) {
     out << "time [s]:";
-    for (const auto& st : result.stages) out << " " << st.stage << " " << fmt("%.3f", st.seconds) << ",";
+    for (const auto& st : result.stages)
+      out << " " << st.stage << " " << fmt("%.3f", st.seconds) << ",";
     double total = 0;
     for (const auto& st : result.stages) total += st.seconds;
     out << " total " << fmt("%.3f", total) << "\n";
@@ -90,9 +92,8 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
   for (const auto& w : result.mesh.warnings) out << "warning: " << clip(w.text(), 300) << "\n";
   for (const auto& f : result.written) out << "wrote " << f << "\n";
   if (result.exports_skipped)
-    out << "exports skipped: " << (result.quality.failed() ? "a quality check failed"
-                                                             : "a volume check failed")
-        << "\n";
+    out << "exports skipped: "
+        << (result.quality.failed() ? "a quality check failed" : "a volume check failed") << "\n";
   else if (result.mesh.incomplete() && !result.written.empty())
     out << "partial: only the volumes that meshed were written\n";
 }

@@ -38,8 +38,8 @@ void write_schemes_text(const scheme::Registry& registry, std::ostream& out) {
     name_width = std::max(name_width, r.name.size());
     origin_width = std::max(origin_width, r.origin.size());
   }
-  out << std::left << std::setw(9) << "dim" << std::setw(static_cast<int>(name_width) + 2)
-      << "name" << std::setw(static_cast<int>(origin_width) + 2) << "origin"
+  out << std::left << std::setw(9) << "dim" << std::setw(static_cast<int>(name_width) + 2) << "name"
+      << std::setw(static_cast<int>(origin_width) + 2) << "origin"
       << "serves\n";
   for (const Row& r : list) {
     out << std::setw(9) << r.dim << std::setw(static_cast<int>(name_width) + 2) << r.name

@@ -24,8 +24,7 @@ mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceS
                                 int surface, double size);
 /// As above with a goal size per curve (interval goal = length / size(curve)).
 mesh::MeshDB curves_for_surface(const geom::Model& model, const scheme::SurfaceScheme& scheme,
-                                int surface,
-                                const std::function<double(const geom::Curve&)>& size);
+                                int surface, const std::function<double(const geom::Curve&)>& size);
 /// The built-in schemes.
 const scheme::Registry& builtin_registry();
 

@@ -55,7 +55,8 @@ cooper::SweepInput grid_barrel(int n) {
     }
   }
   for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) in.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    for (int i = 0; i < n; ++i)
+      in.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
   }
   return in;
 }

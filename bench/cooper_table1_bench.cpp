@@ -132,12 +132,13 @@ void run_elements(benchmark::State& state, const char* example,
     wedges = r.mesh.wedge_count();
     hexes = r.mesh.hex_count();
     min_sj = 1;
-    for (const auto& block : r.quality.blocks) min_sj = std::min(min_sj, block.find("scaled_jacobian")->min);
+    for (const auto& block : r.quality.blocks)
+      min_sj = std::min(min_sj, block.find("scaled_jacobian")->min);
   }
   state.counters["wedges"] = static_cast<double>(wedges);
   state.counters["hexes"] = static_cast<double>(hexes);
-  state.counters["elements_per_s"] = benchmark::Counter(static_cast<double>(wedges + hexes),
-                                                        benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["elements_per_s"] = benchmark::Counter(
+      static_cast<double>(wedges + hexes), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["min_SJ"] = min_sj;
 }
 

@@ -87,8 +87,18 @@ BenchFace bench_face(int k, const std::string& brep_path) {
     case 5:
       f.name = "dumbbell";
       wb.prism("s",
-               {{0, 0, 0}, {4, 0, 0}, {4, 1.8, 0}, {6, 1.8, 0}, {6, 0, 0}, {10, 0, 0},
-                {10, 4, 0}, {6, 4, 0}, {6, 2.2, 0}, {4, 2.2, 0}, {4, 4, 0}, {0, 4, 0}},
+               {{0, 0, 0},
+                {4, 0, 0},
+                {4, 1.8, 0},
+                {6, 1.8, 0},
+                {6, 0, 0},
+                {10, 0, 0},
+                {10, 4, 0},
+                {6, 4, 0},
+                {6, 2.2, 0},
+                {4, 2.2, 0},
+                {4, 4, 0},
+                {0, 4, 0}},
                {}, {0, 0, 1});
       f.size = uniform(0.2);  // the neck is 2 intervals across
       break;
@@ -107,8 +117,7 @@ BenchFace bench_face(int k, const std::string& brep_path) {
         return c.geometry->type() == geom::CurveType::Circle ? 1.0 / 8 : 1.0;
       };
       break;
-    default:
-      throw std::out_of_range("bench_face: no face " + std::to_string(k));
+    default: throw std::out_of_range("bench_face: no face " + std::to_string(k));
   }
   if (!brep_path.empty()) wb.write(brep_path);
   f.model = wb.build_model();

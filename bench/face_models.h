@@ -13,10 +13,10 @@ namespace cooperage::bench {
 /// One benchmark face: the surface `surface` of `model`, meshed with interval
 /// goals length / size(curve) on its curves.
 struct BenchFace {
-  std::string name;                                 ///< short id, e.g. "annulus"
+  std::string name;  ///< short id, e.g. "annulus"
   geom::Model model;
-  int surface = 0;                                  ///< the face meshed
-  std::function<double(const geom::Curve&)> size;   ///< goal size per curve [model units]
+  int surface = 0;                                 ///< the face meshed
+  std::function<double(const geom::Curve&)> size;  ///< goal size per curve [model units]
 };
 
 /// Number of faces in the set (BM_PaveFace/<k>, k in [0, face_count())).

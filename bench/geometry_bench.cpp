@@ -38,8 +38,8 @@ void BM_BuildPlateWithHoles(benchmark::State& state) {
     benchmark::DoNotOptimize(surfaces);
   }
   state.counters["surfaces"] = static_cast<double>(surfaces);
-  state.counters["surfaces_per_s"] =
-      benchmark::Counter(static_cast<double>(surfaces), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["surfaces_per_s"] = benchmark::Counter(
+      static_cast<double>(surfaces), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["peak_MB"] = static_cast<double>(cooperage::bench::peak_memory_bytes()) / 1e6;
 }
 BENCHMARK(BM_BuildPlateWithHoles)->Arg(3)->Arg(12)->Arg(48)->Unit(benchmark::kMillisecond);

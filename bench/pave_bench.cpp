@@ -14,9 +14,9 @@
 //
 // BM_Pave2D/<n>: pave_2d alone on the unit square with n (odd) boundary
 // segments per side (~n^2 quads); BM_Pave2DHoles/<n>: on a plate with three
-// holes, n segments per unit length (~7 n^2 quads); counters also give the CPU milliseconds per step
-// (PaveStats: t_boundary, t_cdt, t_recombine, t_split, t_cleanup, t_smooth,
-// t_check) and the Laplacian sweeps made.
+// holes, n segments per unit length (~7 n^2 quads); counters also give the CPU milliseconds per
+// step (PaveStats: t_boundary, t_cdt, t_recombine, t_split, t_cleanup, t_smooth, t_check) and the
+// Laplacian sweeps made.
 #include "bench_models.h"
 #include "face_models.h"
 #include "peak_memory.h"
@@ -79,8 +79,8 @@ QuadStats quad_stats(const geom::Model& model, int surface, const mesh::MeshDB& 
 }
 
 std::string vec_json(const geom::Vec3& v) {
-  return "[" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ", " +
-         std::to_string(v.z()) + "]";
+  return "[" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ", " + std::to_string(v.z()) +
+         "]";
 }
 
 /// Writes <dir>/<name>.{brep,msh,json} for run_faces.py (see the file comment).
@@ -100,7 +100,8 @@ void write_face_files(const std::string& dir, int index, const bench::BenchFace&
     for (size_t k = 0; k < 4; ++k) {
       auto it = renumber.find(q[k]);
       if (it == renumber.end())
-        it = renumber.emplace(q[k], out.add_node(committed.node(q[k]), committed.owner(q[k]))).first;
+        it =
+            renumber.emplace(q[k], out.add_node(committed.node(q[k]), committed.owner(q[k]))).first;
       r[k] = it->second;
     }
     quads.push_back(r);
@@ -157,8 +158,8 @@ void BM_PaveFace(benchmark::State& state) {
   const QuadStats s = quad_stats(face.model, face.surface, committed);
   state.SetLabel(face.name);
   state.counters["quads"] = static_cast<double>(quads);
-  state.counters["quads_per_s"] = benchmark::Counter(static_cast<double>(quads),
-                                                     benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["quads_per_s"] =
+      benchmark::Counter(static_cast<double>(quads), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["min_SJ"] = s.min_sj;
   state.counters["median_SJ"] = s.median_sj;
   state.counters["irregular_per_100"] = s.irregular_per_100;
@@ -204,7 +205,8 @@ void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::V
   state.counters["attempts"] = stats.attempts;
   state.counters["kept"] = stats.kept;
   std::vector<double> sj(last.quads.size());
-  for (size_t k = 0; k < sj.size(); ++k) sj[k] = pave::detail::scaled_jacobian_2d(last.points, last.quads[k]);
+  for (size_t k = 0; k < sj.size(); ++k)
+    sj[k] = pave::detail::scaled_jacobian_2d(last.points, last.quads[k]);
   if (!sj.empty()) {
     std::sort(sj.begin(), sj.end());
     state.counters["min_SJ"] = sj.front();

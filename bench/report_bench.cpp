@@ -53,8 +53,8 @@ void BM_Report(benchmark::State& state) {
     benchmark::DoNotOptimize(html.data());
   }
   state.counters["hexes"] = static_cast<double>(lattice.hexes.size());
-  state.counters["hexes_per_s"] = benchmark::Counter(
-      static_cast<double>(lattice.hexes.size()), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["hexes_per_s"] = benchmark::Counter(static_cast<double>(lattice.hexes.size()),
+                                                     benchmark::Counter::kIsIterationInvariantRate);
   state.counters["html_kB"] = static_cast<double>(bytes) / 1000.0;
 }
 BENCHMARK(BM_Report)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);

@@ -37,7 +37,8 @@ void run_surface_scheme(benchmark::State& state, const geom::Model& model, int s
       p[static_cast<size_t>(k)] = m.coords[static_cast<size_t>(q[static_cast<size_t>(k)])];
       c += p[static_cast<size_t>(k)] / 4.0;
     }
-    sj.push_back(quality::quad_scaled_jacobian(p, model.surface(surface).geometry->project(c).normal));
+    sj.push_back(
+        quality::quad_scaled_jacobian(p, model.surface(surface).geometry->project(c).normal));
   }
   const auto summary = quality::summarize(quality::Metric::ScaledJacobian, sj);
   state.counters["min_SJ"] = summary.min;

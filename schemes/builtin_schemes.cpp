@@ -51,7 +51,8 @@ class QuadDominant2D final : public scheme::PolygonMesher {
     points.reserve(m.points.size());
     for (const Eigen::Vector2d& p : m.points) points.emplace_back(p.x(), p.y(), 0.0);
     std::vector<bool> movable(points.size());
-    for (size_t i = 0; i < movable.size(); ++i) movable[i] = static_cast<int>(i) >= m.boundary_count;
+    for (size_t i = 0; i < movable.size(); ++i)
+      movable[i] = static_cast<int>(i) >= m.boundary_count;
     mesh::QuadDominant split = mesh::make_quad_dominant(
         points, m.quads, movable, [](const geom::Vec3& x) { return geom::Vec3(x.x(), x.y(), 0.0); },
         cooper::kMixedMinQuadQuality);
@@ -67,9 +68,10 @@ void register_builtin_schemes(scheme::Registry& registry) {
   // surface mesh is the product (--dim 2); as the roles of a volume scheme
   // they are themselves alone.
   using quad_dominant::FallbackChain;
-  registry.add(std::make_unique<FallbackChain>(map::make_surface_map(), pave::make_pave(), tri::make_tri()));
-  registry.add(std::make_unique<FallbackChain>(submap::make_submap(), pave::make_pave(),
-                                               tri::make_tri()));
+  registry.add(
+      std::make_unique<FallbackChain>(map::make_surface_map(), pave::make_pave(), tri::make_tri()));
+  registry.add(
+      std::make_unique<FallbackChain>(submap::make_submap(), pave::make_pave(), tri::make_tri()));
   registry.add(std::make_unique<FallbackChain>(pave::make_pave(), nullptr, tri::make_tri()));
   registry.add(tri::make_tri());  // triangles: chosen only when pinned (score 0.1)
   // Likewise; cooper's mixed caps: pave's quads, the poor ones split.
@@ -96,9 +98,8 @@ void register_schemes(scheme::Registry& registry, const std::vector<io::PluginSe
   register_builtin_schemes(registry);
   if (plugin_path) scheme::load_plugin_path(registry);
   for (const io::PluginSetting& p : plugins) {
-    const std::string where = p.where.line > 0
-                                  ? p.where.file + ":" + std::to_string(p.where.line)
-                                  : p.where.element;
+    const std::string where =
+        p.where.line > 0 ? p.where.file + ":" + std::to_string(p.where.line) : p.where.element;
     scheme::load_plugin(registry, p.path, where);
   }
 }

@@ -11,11 +11,10 @@ namespace cooperage {
 
 /// Surface schemes, most preferred first: map, submap, pave, tri (triangles,
 /// only when pinned or a cooper role), quad_dominant (pave's quads with the
-/// poor ones split into triangles, likewise). Volume schemes: map, then cooper (which asks the registry for
-/// submap/map/pave/tri/quad_dominant by name, so the registry must outlive it).
-/// The schemes keep no per-job state (a job's vertex types, sweep hints and
-/// element kinds reach them as scheme::Settings), so one registry serves
-/// any number of jobs.
+/// poor ones split into triangles, likewise). Volume schemes: map, then cooper (which asks the
+/// registry for submap/map/pave/tri/quad_dominant by name, so the registry must outlive it). The
+/// schemes keep no per-job state (a job's vertex types, sweep hints and element kinds reach them as
+/// scheme::Settings), so one registry serves any number of jobs.
 void register_builtin_schemes(scheme::Registry& registry);
 
 /// The plug-ins of a run, in load order: the command line's (`--plugin`,

@@ -139,7 +139,8 @@ class Selector {
     const bool pair = (a == "map" && b == "submap") || (a == "submap" && b == "map");
     if (!pair) return false;
     const scheme::SurfaceScheme* map = registry_.surface_scheme("map");
-    return map != nullptr && map->applicable(scheme::SurfaceView{model_, surface, nullptr, &job_}).ok;
+    return map != nullptr &&
+           map->applicable(scheme::SurfaceView{model_, surface, nullptr, &job_}).ok;
   }
 
   // The waits of `volume` taking `roles` (a volume that meshes a shared
@@ -166,20 +167,23 @@ class Selector {
       const bool theirs = it != roles_.end() && it->second.scheme == scheme::kMeshedByVolume;
       if (it != roles_.end() && (mine || theirs)) {
         // One volume meshes the surface itself; the other must take that mesh.
-        const bool taken = mine ? !theirs && it->second.takes_existing : !mine && takes.count(surface) > 0;
+        const bool taken =
+            mine ? !theirs && it->second.takes_existing : !mine && takes.count(surface) > 0;
         if (mine && theirs) {
           return "surface " + std::to_string(surface) + " would be meshed by both volume " +
-                 std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ") and volume " +
-                 std::to_string(volume) + " (" + scheme_name + "), each sweep ending on it or imprinting it";
+                 std::to_string(it->second.volume) + " (" + it->second.volume_scheme +
+                 ") and volume " + std::to_string(volume) + " (" + scheme_name +
+                 "), each sweep ending on it or imprinting it";
         }
         if (!taken) {
           return "surface " + std::to_string(surface) + " is meshed by " +
-                 (theirs ? "volume " + std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ")"
+                 (theirs ? "volume " + std::to_string(it->second.volume) + " (" +
+                               it->second.volume_scheme + ")"
                          : "volume " + std::to_string(volume) + " (" + scheme_name + ")") +
                  " itself, and volume " +
                  (theirs ? std::to_string(volume) + " (" + scheme_name + ") needs " + role
-                         : std::to_string(it->second.volume) + " (" + it->second.volume_scheme + ") needs " +
-                               it->second.scheme) +
+                         : std::to_string(it->second.volume) + " (" + it->second.volume_scheme +
+                               ") needs " + it->second.scheme) +
                  " on it";
         }
         continue;
@@ -226,8 +230,8 @@ class Selector {
       }
       if (!c->applicability.ok) {
         throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
-                           pin->scheme + " pinned at " + place(pin->where) + " does not apply: " +
-                               c->applicability.why);
+                           pin->scheme + " pinned at " + place(pin->where) +
+                               " does not apply: " + c->applicability.why);
       }
       order.push_back(c);
       choice.pinned = true;
@@ -261,22 +265,27 @@ class Selector {
       waits_for_ = std::move(waits);
       for (const auto& [surface, role] : roles) {
         auto it = roles_.find(surface);
-        if (it != roles_.end() && (role == scheme::kMeshedByVolume) != (it->second.scheme == scheme::kMeshedByVolume)) {
+        if (it != roles_.end() &&
+            (role == scheme::kMeshedByVolume) != (it->second.scheme == scheme::kMeshedByVolume)) {
           // The volume that meshes it itself keeps (or takes) the surface.
           if (role == scheme::kMeshedByVolume) it->second = {role, id, c->scheme, false};
           continue;
         }
         // map and submap on one mappable surface: mapped (compatible()).
         if (it != roles_.end() && it->second.scheme != role) {
-          if (role == "map") it->second = {role, id, c->scheme, takes.count(surface) > 0 && it->second.takes_existing};
+          if (role == "map")
+            it->second = {role, id, c->scheme,
+                          takes.count(surface) > 0 && it->second.takes_existing};
           continue;
         }
         roles_[surface] = {role, id, c->scheme, takes.count(surface) > 0};
       }
       choice.scheme = c->scheme;
-      choice.reason = choice.pinned ? "pinned at " + place(pin->where)
-                                    : "best applicable, score " + score_text(c->applicability.score);
-      if (!choice.pinned && c != order.front()) choice.reason += " (better ones conflict: " + conflicts + ")";
+      choice.reason = choice.pinned
+                          ? "pinned at " + place(pin->where)
+                          : "best applicable, score " + score_text(c->applicability.score);
+      if (!choice.pinned && c != order.front())
+        choice.reason += " (better ones conflict: " + conflicts + ")";
       selection_.volumes.push_back(std::move(choice));
       return;
     }
@@ -301,11 +310,11 @@ class Selector {
     if (role != roles_.end()) {
       const Candidate* c = find_candidate(choice.candidates, role->second.scheme);
       if (!c || !c->applicability.ok) {
-        throw MeshingError(ErrorCode::NotApplicable, EntityRef::surface(id),
-                           "volume " + std::to_string(role->second.volume) + " (" +
-                               role->second.volume_scheme + ") needs " + role->second.scheme +
-                               ", which " + (c ? "does not apply: " + c->applicability.why
-                                               : std::string("is not available")));
+        throw MeshingError(
+            ErrorCode::NotApplicable, EntityRef::surface(id),
+            "volume " + std::to_string(role->second.volume) + " (" + role->second.volume_scheme +
+                ") needs " + role->second.scheme + ", which " +
+                (c ? "does not apply: " + c->applicability.why : std::string("is not available")));
       }
       choice.scheme = role->second.scheme;
       choice.reason = "role from volume " + std::to_string(role->second.volume) + " (" +

@@ -13,8 +13,8 @@
 namespace cooperage::selector {
 
 struct SelectOptions {
-  int dim = 3;                ///< 3: volumes and surfaces; 2: surfaces only
-  int max_relaxations = 64;   ///< bound on map -> submap -> pave steps
+  int dim = 3;               ///< 3: volumes and surfaces; 2: surfaces only
+  int max_relaxations = 64;  ///< bound on map -> submap -> pave steps
   bool check_intervals = true;
   /// A volume no scheme fits is recorded in Selection::refused (and left
   /// out of the plan) instead of failing the whole selection, so an

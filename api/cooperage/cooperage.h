@@ -27,9 +27,9 @@ namespace cooperage {
 
 /// How mesh_file() and run_journal() mesh.
 struct Options {
-  int dim = 3;        ///< 3: volume mesh; 2: surface mesh only (mesh_file() only)
+  int dim = 3;  ///< 3: volume mesh; 2: surface mesh only (mesh_file() only)
   io::ElementKind elements = io::ElementKind::Hex;  ///< every volume's (mesh_file() only)
-  int threads = 0;    ///< 0: all cores; the mesh does not depend on it
+  int threads = 0;            ///< 0: all cores; the mesh does not depend on it
   bool imprint_merge = true;  ///< touching solids share nodes (mesh_file() only)
   /// Mesh files to write (.exo .msh .vtu .inp .obj .off .stl .ply), each
   /// atomically; none are written when meshing fails. run_journal() adds

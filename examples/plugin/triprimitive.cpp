@@ -70,8 +70,7 @@ Sides three_sides(const geom::Model& model, int surface_id) {
 
 // A side's node chain in loop order, junction nodes once.
 std::vector<int> side_chain(const mesh::MeshDB& db, int surface_id,
-                            const std::vector<geom::CurveUse>& loop,
-                            const std::vector<int>& uses) {
+                            const std::vector<geom::CurveUse>& loop, const std::vector<int>& uses) {
   std::vector<int> chain;
   for (int k : uses) {
     const geom::CurveUse& use = loop[static_cast<size_t>(k)];
@@ -111,18 +110,16 @@ class TriPrimitive final : public scheme::SurfaceScheme {
   std::string_view name() const override { return "triprimitive"; }
 
   // Any face it meshes may be a cooper source cap, in hex or mixed mode.
-  scheme::Role serves() const override {
-    return scheme::Role::QuadCap | scheme::Role::MixedCap;
-  }
+  scheme::Role serves() const override { return scheme::Role::QuadCap | scheme::Role::MixedCap; }
 
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override {
     std::shared_ptr<const TriPlan> plan = plan_of(view);
     const Sides& sides = plan->sides;
     if (!sides.why.empty()) return scheme::Applicability::no(sides.why);
-    return scheme::Applicability::yes(
-        sides.score,
-        "surface " + std::to_string(view.surface_id) + ": three corners, three patches meeting at the centre",
-        std::move(plan));
+    return scheme::Applicability::yes(sides.score,
+                                      "surface " + std::to_string(view.surface_id) +
+                                          ": three corners, three patches meeting at the centre",
+                                      std::move(plan));
   }
 
   void constrain(const scheme::SurfaceView& view,
@@ -141,7 +138,8 @@ class TriPrimitive final : public scheme::SurfaceScheme {
     for (size_t k = 0; k < 3; ++k) {
       std::vector<intervals::LinearTerm> terms;
       for (size_t j = 0; j < 3; ++j) {
-        for (int u : sides.uses[j]) terms.push_back({loop[static_cast<size_t>(u)].curve, j == k ? -1 : 1});
+        for (int u : sides.uses[j])
+          terms.push_back({loop[static_cast<size_t>(u)].curve, j == k ? -1 : 1});
       }
       problem.add_linear(terms, intervals::Sense::GreaterEqual, 2,
                          tag + ": side " + std::to_string(k) + " < the other two");
@@ -172,7 +170,8 @@ class TriPrimitive final : public scheme::SurfaceScheme {
       const int twice = n[(k + 1) % 3] + n[(k + 2) % 3] - n[k];
       if (twice < 2 || twice % 2 != 0) {
         fail("side intervals " + std::to_string(n[0]) + ", " + std::to_string(n[1]) + ", " +
-             std::to_string(n[2]) + " have no triprimitive mesh (even sum, each side below the "
+             std::to_string(n[2]) +
+             " have no triprimitive mesh (even sum, each side below the "
              "other two)");
       }
       s[k] = twice / 2;
@@ -200,8 +199,8 @@ class TriPrimitive final : public scheme::SurfaceScheme {
       spoke[k].push_back(m);
       for (int j = 1; j < s[k]; ++j) {
         const double t = static_cast<double>(j) / s[k];
-        spoke[k].push_back(out.add(geometry.project((1 - t) * out.coords[static_cast<size_t>(m)] +
-                                                    t * centre).point));
+        spoke[k].push_back(out.add(
+            geometry.project((1 - t) * out.coords[static_cast<size_t>(m)] + t * centre).point));
       }
       spoke[k].push_back(c);
     }

@@ -8,15 +8,15 @@
 namespace cooperage {
 
 enum class ErrorCode {
-  InvalidInput,    ///< bad argument or setting (negative size, unknown id)
-  FileNotFound,    ///< an input file does not exist or cannot be read
-  ParseError,      ///< malformed journal or CAD file
-  GeometryError,   ///< the CAD kernel failed (boolean, import, healing)
-  NotSupported,    ///< parsed, but the behaviour lands in a later release
-  NotApplicable,   ///< no scheme can mesh the entity
-  Infeasible,      ///< interval constraints cannot be satisfied
-  MeshingFailed,   ///< a scheme failed on an entity it accepted
-  Internal,        ///< a broken invariant: a bug in Cooperage
+  InvalidInput,   ///< bad argument or setting (negative size, unknown id)
+  FileNotFound,   ///< an input file does not exist or cannot be read
+  ParseError,     ///< malformed journal or CAD file
+  GeometryError,  ///< the CAD kernel failed (boolean, import, healing)
+  NotSupported,   ///< parsed, but the behaviour lands in a later release
+  NotApplicable,  ///< no scheme can mesh the entity
+  Infeasible,     ///< interval constraints cannot be satisfied
+  MeshingFailed,  ///< a scheme failed on an entity it accepted
+  Internal,       ///< a broken invariant: a bug in Cooperage
 };
 
 /// Printable name of an error code ("parse error", ...).

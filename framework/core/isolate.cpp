@@ -144,14 +144,14 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
   ::close(fds[1]);
 
   using Clock = std::chrono::steady_clock;
-  const auto deadline =
-      Clock::now() + std::chrono::milliseconds(static_cast<long long>(
-                         std::clamp(limits.seconds, 0.0, 1e7) * 1000.0));
+  const auto deadline = Clock::now() + std::chrono::milliseconds(static_cast<long long>(
+                                           std::clamp(limits.seconds, 0.0, 1e7) * 1000.0));
   std::string received;
   bool timed_out = false;
   char buf[1 << 16];
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
     if (left.count() <= 0) {
       timed_out = true;
       break;
@@ -209,7 +209,7 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
     run.outcome = IsolatedRun::Outcome::Failed;
     const int code = static_cast<unsigned char>(received[1]);
     run.code = code <= static_cast<int>(ErrorCode::Internal) ? static_cast<ErrorCode>(code)
-                                                              : ErrorCode::Internal;
+                                                             : ErrorCode::Internal;
     run.payload = received.substr(2);
   }
   return run;

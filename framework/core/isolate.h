@@ -14,17 +14,17 @@
 namespace cooperage {
 
 struct IsolationLimits {
-  double seconds = 60;            ///< wall-clock limit; the child is killed after it
-  std::size_t memory_bytes = 0;   ///< extra address space the child may take (0: no limit)
+  double seconds = 60;           ///< wall-clock limit; the child is killed after it
+  std::size_t memory_bytes = 0;  ///< extra address space the child may take (0: no limit)
 };
 
 /// How an isolated piece of work ended.
 struct IsolatedRun {
   enum class Outcome {
-    Done,      ///< work returned; `payload` holds the bytes it produced
-    Failed,    ///< work threw; `code` and `payload` (the message) say why
-    Crashed,   ///< the child died of `signal` (or exited without a word)
-    TimedOut,  ///< killed after IsolationLimits::seconds
+    Done,         ///< work returned; `payload` holds the bytes it produced
+    Failed,       ///< work threw; `code` and `payload` (the message) say why
+    Crashed,      ///< the child died of `signal` (or exited without a word)
+    TimedOut,     ///< killed after IsolationLimits::seconds
     OutOfMemory,  ///< an allocation failed under IsolationLimits::memory_bytes
   };
   Outcome outcome = Outcome::Crashed;

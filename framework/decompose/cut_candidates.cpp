@@ -66,8 +66,10 @@ std::vector<geom::Vec3> sweep_axes(const geom::Model& model, int volume) {
   };
   for (int s : model.surfaces_of(volume)) {
     const geom::Surface& surface = model.surface(s);
-    if (auto p = plane_of(surface)) add(p->normal, surface.area);
-    else if (auto c = cylinder_of(surface)) add(c->axis, surface.area);
+    if (auto p = plane_of(surface))
+      add(p->normal, surface.area);
+    else if (auto c = cylinder_of(surface))
+      add(c->axis, surface.area);
   }
   for (size_t k = 0; k < axes.size(); ++k) order.push_back(static_cast<int>(k));
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -87,20 +89,23 @@ std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
   const std::vector<int> surfaces = model.surfaces_of(volume);
   for (int s : surfaces) {
     if (auto p = plane_of(model.surface(s))) {
-      add_unique(out, {{CutSurface::Kind::Plane, p->point, p->normal, 0.0},
-                       "plane of surface " + std::to_string(s)},
+      add_unique(out,
+                 {{CutSurface::Kind::Plane, p->point, p->normal, 0.0},
+                  "plane of surface " + std::to_string(s)},
                  tol);
     }
   }
   for (int s : surfaces) {
     if (auto c = cylinder_of(model.surface(s))) {
-      add_unique(out, {{CutSurface::Kind::Cylinder, c->point, c->axis, c->radius},
-                       "cylinder of surface " + std::to_string(s)},
+      add_unique(out,
+                 {{CutSurface::Kind::Cylinder, c->point, c->axis, c->radius},
+                  "cylinder of surface " + std::to_string(s)},
                  tol);
     }
   }
   std::vector<geom::Vec3> axes = sweep_axes(model, volume);
-  if (static_cast<int>(axes.size()) > options.max_axes) axes.resize(static_cast<size_t>(options.max_axes));
+  if (static_cast<int>(axes.size()) > options.max_axes)
+    axes.resize(static_cast<size_t>(options.max_axes));
   const std::vector<int> curves = curves_of(model, volume);
   for (const geom::Vec3& axis : axes) {
     for (int c : curves) {
@@ -113,8 +118,9 @@ std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
       const geom::Vec3 n = d.cross(axis);
       if (n.norm() < 1e-6) continue;  // the edge runs along the axis
       if (!is_feature(model, volume, c, options.feature_angle_deg)) continue;
-      add_unique(out, {{CutSurface::Kind::Plane, a, n.normalized(), 0.0},
-                       "plane through curve " + std::to_string(c) + " along " + axis_text(axis)},
+      add_unique(out,
+                 {{CutSurface::Kind::Plane, a, n.normalized(), 0.0},
+                  "plane through curve " + std::to_string(c) + " along " + axis_text(axis)},
                  tol);
     }
   }

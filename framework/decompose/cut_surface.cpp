@@ -17,7 +17,9 @@ std::string num(double x) {
   return buf;
 }
 
-std::string vec(const geom::Vec3& v) { return "(" + num(v.x()) + " " + num(v.y()) + " " + num(v.z()) + ")"; }
+std::string vec(const geom::Vec3& v) {
+  return "(" + num(v.x()) + " " + num(v.y()) + " " + num(v.z()) + ")";
+}
 
 // "x", "y", "z" (or "-x" ...) when d is a coordinate axis, else "".
 std::string axis_name(const geom::Vec3& d) {

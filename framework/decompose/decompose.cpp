@@ -59,12 +59,14 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     int faces = 0;
     for (const auto& shell : model.volume(v).shells) faces += static_cast<int>(shell.size());
     if (faces > kMaxSearchFaces) {
-      throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
-                         "no hex scheme applies; automatic decomposition is not tried on a volume of "
-                         "more than " + std::to_string(kMaxSearchFaces) + " faces (it has " +
-                             std::to_string(faces) + ") (" + d.why + ")",
-                         "cut the volume with <webcut> in a journal (`cooperage plan` gives every "
-                         "scheme's reason)");
+      throw MeshingError(
+          ErrorCode::NotApplicable, EntityRef::volume(v),
+          "no hex scheme applies; automatic decomposition is not tried on a volume of "
+          "more than " +
+              std::to_string(kMaxSearchFaces) + " faces (it has " + std::to_string(faces) + ") (" +
+              d.why + ")",
+          "cut the volume with <webcut> in a journal (`cooperage plan` gives every "
+          "scheme's reason)");
     }
     DecomposeOptions budget = options;
     budget.max_cuts = std::min(options.max_cuts, std::max(8, kSearchFaceCuts / std::max(faces, 1)));
@@ -75,11 +77,11 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     if (!plan) {
       // The details last, in parentheses: the command line puts them on a
       // line of their own.
-      throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
-                         "no hex scheme applies; automatic decomposition " + search.failure() +
-                             " (" + d.why + ")",
-                         "`cooperage plan` gives every scheme's reason; cut the volume with "
-                         "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
+      throw MeshingError(
+          ErrorCode::NotApplicable, EntityRef::volume(v),
+          "no hex scheme applies; automatic decomposition " + search.failure() + " (" + d.why + ")",
+          "`cooperage plan` gives every scheme's reason; cut the volume with "
+          "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
     }
     d.cuts = plan->cuts;
     result = result.replace(v - 1, plan->pieces);
@@ -104,8 +106,7 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
       if (origin[k] == d.volume) d.pieces.push_back(static_cast<int>(k) + 1);
     }
   }
-  out.report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 

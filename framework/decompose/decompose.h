@@ -18,29 +18,29 @@
 namespace cooperage::decompose {
 
 struct DecomposeOptions {
-  double size = 0.0;   ///< element size (> 0): no piece thinner than one layer across a cut
-  int max_cuts = 80;   ///< candidate cuts given to the kernel, per volume in all
-  int max_depth = 3;   ///< cuts along one chain (a cut, a cut of a piece, ...)
-  int branches = 2;    ///< cuts that leave pieces to cut again, explored per level
+  double size = 0.0;  ///< element size (> 0): no piece thinner than one layer across a cut
+  int max_cuts = 80;  ///< candidate cuts given to the kernel, per volume in all
+  int max_depth = 3;  ///< cuts along one chain (a cut, a cut of a piece, ...)
+  int branches = 2;   ///< cuts that leave pieces to cut again, explored per level
 };
 
 /// One cut of the decomposition.
 struct AppliedCut {
   CutSurface surface;
-  std::string through;     ///< "plane of surface 12" (ids of the model it was found in)
-  int depth = 0;           ///< 0: cut of the volume itself; 1: of one of its pieces, ...
-  int pieces = 0;          ///< solids it gave
-  double thinnest = 0.0;   ///< thinnest of them across the cut, model units
+  std::string through;    ///< "plane of surface 12" (ids of the model it was found in)
+  int depth = 0;          ///< 0: cut of the volume itself; 1: of one of its pieces, ...
+  int pieces = 0;         ///< solids it gave
+  double thinnest = 0.0;  ///< thinnest of them across the cut, model units
 };
 
 /// The decomposition of one volume of the input model.
 struct VolumeDecomposition {
-  int volume = 0;             ///< id before decomposition
+  int volume = 0;  ///< id before decomposition
   std::string name;
-  std::string why;            ///< every volume scheme's refusal of the whole volume
+  std::string why;  ///< every volume scheme's refusal of the whole volume
   std::vector<AppliedCut> cuts;
-  int tried = 0;              ///< candidate cuts given to the kernel
-  std::vector<int> pieces;    ///< its pieces' ids in the decomposed model
+  int tried = 0;            ///< candidate cuts given to the kernel
+  std::vector<int> pieces;  ///< its pieces' ids in the decomposed model
 };
 
 struct Report {

@@ -22,15 +22,16 @@ std::string ids(const std::vector<int>& list) {
 std::vector<std::string> report_lines(const Report& report) {
   std::vector<std::string> out;
   for (const VolumeDecomposition& v : report.volumes) {
-    out.push_back("volume " + std::to_string(v.volume) + (v.name.empty() ? "" : " (" + v.name + ")") +
-                  ": cut into volumes " + ids(v.pieces) + " (" + std::to_string(v.cuts.size()) +
-                  " cut" + (v.cuts.size() == 1 ? "" : "s") + ", " + std::to_string(v.tried) +
+    out.push_back("volume " + std::to_string(v.volume) +
+                  (v.name.empty() ? "" : " (" + v.name + ")") + ": cut into volumes " +
+                  ids(v.pieces) + " (" + std::to_string(v.cuts.size()) + " cut" +
+                  (v.cuts.size() == 1 ? "" : "s") + ", " + std::to_string(v.tried) +
                   " tried); as one volume: no hex scheme applies (" + v.why + ")");
     for (size_t k = 0; k < v.cuts.size(); ++k) {
       const AppliedCut& c = v.cuts[k];
       out.push_back("  cut " + std::to_string(k + 1) + ": " + describe(c.surface) + ", the " +
-                    c.through + (c.depth ? " of a piece" : "") + " -> " +
-                    std::to_string(c.pieces) + " pieces, thinnest " + num(c.thinnest));
+                    c.through + (c.depth ? " of a piece" : "") + " -> " + std::to_string(c.pieces) +
+                    " pieces, thinnest " + num(c.thinnest));
     }
   }
   return out;

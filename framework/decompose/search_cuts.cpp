@@ -77,8 +77,10 @@ AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
 std::string CutSearch::failure() const {
   std::string out = "tried " + std::to_string(tried_) + " cut" + (tried_ == 1 ? "" : "s");
   if (crossing_ == 0) {
-    return out + "; no cut through its faces or edges leaves pieces at least one element "
-                 "layer (" + number(options_.size) + ") thick";
+    return out +
+           "; no cut through its faces or edges leaves pieces at least one element "
+           "layer (" +
+           number(options_.size) + ") thick";
   }
   if (!conflict_.empty()) out += "; " + conflict_;
   if (!best_partial_.empty()) out += "; " + best_partial_;
@@ -99,7 +101,8 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
   std::vector<CutCandidate> candidates = cut_candidates(model, 1);
   for (const CutCandidate& c : inherited) {
     bool known = false;
-    for (const CutCandidate& k : candidates) known = known || same_surface(k.surface, c.surface, 1e-6);
+    for (const CutCandidate& k : candidates)
+      known = known || same_surface(k.surface, c.surface, 1e-6);
     if (!known) candidates.push_back(c);
   }
   std::vector<Evaluated> evaluated;
@@ -128,8 +131,8 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       std::string schemes;
       for (const auto& v : e.verdicts) schemes += " " + (v.ok ? v.scheme : std::string("-"));
       log::info("decompose: depth " + std::to_string(depth) + ", " + c.through + " (" +
-                describe(c.surface) + "): " + std::to_string(e.outcome.pieces) +
-                " pieces," + schemes + ", thinnest " + std::to_string(thinnest));
+                describe(c.surface) + "): " + std::to_string(e.outcome.pieces) + " pieces," +
+                schemes + ", thinnest " + std::to_string(thinnest));
     }
     evaluated.push_back(std::move(e));
   }
@@ -146,7 +149,9 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       partial.push_back(&e);
     }
   }
-  const auto by_score = [](const Evaluated* a, const Evaluated* b) { return better(a->score, b->score); };
+  const auto by_score = [](const Evaluated* a, const Evaluated* b) {
+    return better(a->score, b->score);
+  };
   std::stable_sort(complete.begin(), complete.end(), by_score);
   std::stable_sort(partial.begin(), partial.end(), by_score);
   for (Evaluated* e : complete) {

@@ -40,9 +40,9 @@ class CutSearch {
   const ModelCheck& check_;
   DecomposeOptions options_;
   int tried_ = 0;
-  int crossing_ = 0;     ///< candidates crossing the volume by a layer on each side
-  std::string best_partial_;   ///< what the best cut at depth 0 left unmeshable
-  std::string conflict_;       ///< why the first complete cut did not plan
+  int crossing_ = 0;          ///< candidates crossing the volume by a layer on each side
+  std::string best_partial_;  ///< what the best cut at depth 0 left unmeshable
+  std::string conflict_;      ///< why the first complete cut did not plan
 };
 
 }  // namespace cooperage::decompose

@@ -7,7 +7,8 @@
 namespace cooperage::decompose {
 
 std::optional<Plane> plane_of(const geom::Surface& surface) {
-  if (!surface.geometry || surface.geometry->type() != geom::SurfaceType::Plane) return std::nullopt;
+  if (!surface.geometry || surface.geometry->type() != geom::SurfaceType::Plane)
+    return std::nullopt;
   const auto [u, v] = surface.geometry->uv_bounds();
   const geom::Vec2 mid(0.5 * (u.x() + u.y()), 0.5 * (v.x() + v.y()));
   const Vec3 n = surface.geometry->normal(mid);
@@ -40,19 +41,24 @@ std::optional<Cylinder> cylinder_of(const geom::Surface& surface) {
     for (int k = 0; k < 3; ++k) {
       const double t = 0.1 + 0.4 * k;  // 0.1, 0.5, 0.9 of the range
       p[k] = mid;
-      if (vary_u) p[k].x() = lo.x() + t * (hi.x() - lo.x());
-      else p[k].y() = lo.y() + t * (hi.y() - lo.y());
+      if (vary_u)
+        p[k].x() = lo.x() + t * (hi.x() - lo.x());
+      else
+        p[k].y() = lo.y() + t * (hi.y() - lo.y());
     }
     auto circle = circle_through(g.point(p[0]), g.point(p[1]), g.point(p[2]));
     if (!circle) return std::nullopt;
     // The line must lie on the circle: a fourth point checks it.
     geom::Vec2 q = mid;
-    if (vary_u) q.x() = lo.x() + 0.3 * (hi.x() - lo.x());
-    else q.y() = lo.y() + 0.3 * (hi.y() - lo.y());
+    if (vary_u)
+      q.x() = lo.x() + 0.3 * (hi.x() - lo.x());
+    else
+      q.y() = lo.y() + 0.3 * (hi.y() - lo.y());
     const Vec3 x = g.point(q);
     const Vec3 r = x - circle->point;
     const double off_plane = std::abs(r.dot(circle->axis));
-    const double off_circle = std::abs((r - r.dot(circle->axis) * circle->axis).norm() - circle->radius);
+    const double off_circle =
+        std::abs((r - r.dot(circle->axis) * circle->axis).norm() - circle->radius);
     if (off_plane + off_circle > 1e-6 * std::max(1.0, circle->radius)) return std::nullopt;
     return circle;
   };

@@ -26,7 +26,8 @@ std::vector<geom::Vec3> volume_samples(const geom::Model& model, int volume, int
   for (int c : curves) {
     const auto& g = *model.curve(c).geometry;
     const auto [t0, t1] = g.range();
-    for (int k = 1; k <= per_curve; ++k) out.push_back(g.point(t0 + (t1 - t0) * k / (per_curve + 1)));
+    for (int k = 1; k <= per_curve; ++k)
+      out.push_back(g.point(t0 + (t1 - t0) * k / (per_curve + 1)));
   }
   return out;
 }

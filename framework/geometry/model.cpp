@@ -112,8 +112,9 @@ void Model::validate() const {
         const int a_end = a.sense == Sense::Forward ? ca.end_vertex : ca.start_vertex;
         const int b_start = b.sense == Sense::Forward ? cb.start_vertex : cb.end_vertex;
         if (a_end != b_start)
-          broken(2, s.id, "boundary loop is not closed between curves " + std::to_string(a.curve) + " and " +
-                              std::to_string(b.curve));
+          broken(2, s.id,
+                 "boundary loop is not closed between curves " + std::to_string(a.curve) + " and " +
+                     std::to_string(b.curve));
         const auto& owners = ca.surfaces;
         if (std::find(owners.begin(), owners.end(), s.id) == owners.end())
           broken(2, s.id, "curve " + std::to_string(a.curve) + " does not list it");
@@ -131,8 +132,9 @@ void Model::validate() const {
           broken(3, v.id, "surface " + std::to_string(use.surface) + " does not list it");
         const bool first = !owners.empty() && owners.front() == v.id;
         if (first != (use.sense == Sense::Forward))
-          broken(3, v.id, "surface " + std::to_string(use.surface) +
-                              " sense disagrees with its natural normal");
+          broken(3, v.id,
+                 "surface " + std::to_string(use.surface) +
+                     " sense disagrees with its natural normal");
       }
     }
   }

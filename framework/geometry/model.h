@@ -32,8 +32,8 @@ struct Loop {
 
 struct Curve {
   int id = 0;
-  int start_vertex = 0;  ///< vertex at range().first
-  int end_vertex = 0;    ///< vertex at range().second (== start for closed curves)
+  int start_vertex = 0;       ///< vertex at range().first
+  int end_vertex = 0;         ///< vertex at range().second (== start for closed curves)
   std::vector<int> surfaces;  ///< surfaces whose loops use this curve, ascending
   std::shared_ptr<const CurveGeometry> geometry;
   double length = 0.0;
@@ -41,7 +41,7 @@ struct Curve {
 
 struct Surface {
   int id = 0;
-  std::vector<Loop> loops;   ///< outer loop first
+  std::vector<Loop> loops;  ///< outer loop first
   /// The 1 or 2 volumes bounded by this surface (0 for a free surface);
   /// the natural normal points out of volumes.front().
   std::vector<int> volumes;

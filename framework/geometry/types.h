@@ -41,10 +41,20 @@ struct BoundingBox {
 enum class CurveType { Line, Circle, Ellipse, Hyperbola, Parabola, Bezier, BSpline, Offset, Other };
 /// Geometric type of a surface, as the CAD kernel reports it.
 enum class SurfaceType {
-  Plane, Cylinder, Cone, Sphere, Torus, Bezier, BSpline, Revolution, Extrusion, Offset, Other
+  Plane,
+  Cylinder,
+  Cone,
+  Sphere,
+  Torus,
+  Bezier,
+  BSpline,
+  Revolution,
+  Extrusion,
+  Offset,
+  Other
 };
 
-const char* to_string(CurveType type);     ///< "line", "circle", "bspline", ...
-const char* to_string(SurfaceType type);   ///< "plane", "cylinder", "bspline", ...
+const char* to_string(CurveType type);    ///< "line", "circle", "bspline", ...
+const char* to_string(SurfaceType type);  ///< "plane", "cylinder", "bspline", ...
 
 }  // namespace cooperage::geom

@@ -63,8 +63,11 @@ void check_not_empty(const Model& model, double tol) {
 void check_curve_ends(const Model& model, double tol) {
   for (const Curve& c : model.curves()) {
     const auto [t0, t1] = c.geometry->range();
-    const struct { double t; int vertex; const char* end; } ends[] = {
-        {t0, c.start_vertex, "starts"}, {t1, c.end_vertex, "ends"}};
+    const struct {
+      double t;
+      int vertex;
+      const char* end;
+    } ends[] = {{t0, c.start_vertex, "starts"}, {t1, c.end_vertex, "ends"}};
     for (const auto& e : ends) {
       const Vec3 p = c.geometry->point(e.t);
       const Vec3& v = model.vertex(e.vertex).point;
@@ -118,8 +121,8 @@ void check_closed_shells(const Model& model) {
                                               std::to_string(curve) + " bounds " +
                                               std::to_string(u.first) + " of its surfaces");
         if (u.second != 0)
-          defect(EntityRef::volume(v.id), "its surfaces are not oriented consistently at curve " +
-                                              std::to_string(curve));
+          defect(EntityRef::volume(v.id),
+                 "its surfaces are not oriented consistently at curve " + std::to_string(curve));
       }
     }
   }
@@ -129,7 +132,8 @@ void check_closed_shells(const Model& model) {
 
 double validation_tolerance(const Model& model) {
   const BoundingBox box = model.box();
-  const double d = box.empty() || !box.min.allFinite() || !box.max.allFinite() ? 0.0 : box.diagonal();
+  const double d =
+      box.empty() || !box.min.allFinite() || !box.max.allFinite() ? 0.0 : box.diagonal();
   return std::max(1e-3 * d, 1e-7);
 }
 

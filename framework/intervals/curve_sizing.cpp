@@ -54,7 +54,8 @@ Sampled sample(const geom::Curve& curve, double size, const SizingOptions& optio
     const Vec3 tangent = curve.geometry->tangent(t);
     if (tangent.norm() > 0) {
       if (previous_tangent.norm() > 0) {
-        turning += std::atan2(previous_tangent.cross(tangent).norm(), previous_tangent.dot(tangent));
+        turning +=
+            std::atan2(previous_tangent.cross(tangent).norm(), previous_tangent.dot(tangent));
       }
       previous_tangent = tangent;
     }
@@ -81,7 +82,8 @@ void apply_gap(Sampled& c, const geom::Curve& cc, const Sampled& d, const geom::
     const Vec3& p = c.p[i];
     if (box_distance(p, d.box) >= c.h[i] / options.gap_factor) continue;
     double dist = INFINITY;
-    for (size_t k = 0; k + 1 < d.p.size(); ++k) dist = std::min(dist, segment_distance(p, d.p[k], d.p[k + 1]));
+    for (size_t k = 0; k + 1 < d.p.size(); ++k)
+      dist = std::min(dist, segment_distance(p, d.p[k], d.p[k + 1]));
     if (!shared.empty()) {
       double r = INFINITY;
       for (const Vec3& v : shared) r = std::min(r, (p - v).norm());
@@ -136,13 +138,16 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
       const size_t n = sc.h.size();
       for (size_t i = 0; i < n; ++i) {
         const double s = sc.s[i] * sc.length;
-        sc.h[i] = std::min({sc.h[i], ha + options.growth * s, hb + options.growth * (sc.length - s)});
+        sc.h[i] =
+            std::min({sc.h[i], ha + options.growth * s, hb + options.growth * (sc.length - s)});
       }
       for (size_t i = 1; i < n; ++i) {
-        sc.h[i] = std::min(sc.h[i], sc.h[i - 1] + options.growth * (sc.s[i] - sc.s[i - 1]) * sc.length);
+        sc.h[i] =
+            std::min(sc.h[i], sc.h[i - 1] + options.growth * (sc.s[i] - sc.s[i - 1]) * sc.length);
       }
       for (size_t i = n - 1; i-- > 0;) {
-        sc.h[i] = std::min(sc.h[i], sc.h[i + 1] + options.growth * (sc.s[i + 1] - sc.s[i]) * sc.length);
+        sc.h[i] =
+            std::min(sc.h[i], sc.h[i + 1] + options.growth * (sc.s[i + 1] - sc.s[i]) * sc.length);
       }
       for (double& h : sc.h) h = std::max(h, 1e-9 * sc.size);
     }

@@ -35,9 +35,9 @@ struct SizingOptions {
 };
 
 struct CurveSizing {
-  double goal = 1.0;          ///< intervals wanted: the integral of ds / size
-  int min = 1;                ///< fewest intervals (turning)
-  mesh::SizeFunction sizes;   ///< local sizes along the curve
+  double goal = 1.0;         ///< intervals wanted: the integral of ds / size
+  int min = 1;               ///< fewest intervals (turning)
+  mesh::SizeFunction sizes;  ///< local sizes along the curve
   /// True when the sizes are not all the element size (a feature made them
   /// smaller somewhere): the curve's nodes should follow them.
   bool graded = false;

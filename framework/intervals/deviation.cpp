@@ -39,7 +39,8 @@ std::vector<int> cost_breakpoints(double goal, int lo, std::optional<int> hi) {
   return points;
 }
 
-std::vector<std::pair<double, double>> cost_lines(double goal, const std::vector<int>& breakpoints) {
+std::vector<std::pair<double, double>> cost_lines(double goal,
+                                                  const std::vector<int>& breakpoints) {
   std::vector<std::pair<double, double>> lines;
   if (breakpoints.size() == 1) {
     lines.emplace_back(0.0, deviation_cost(breakpoints.front(), goal));

@@ -65,7 +65,8 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
     b.add_column(c.lo, c.hi ? static_cast<double>(*c.hi) : inf, 0.0, true);
   std::vector<std::pair<std::string, double>> mip_start;
   if (start)
-    for (size_t j = 0; j < columns.size(); ++j) mip_start.emplace_back("x" + std::to_string(j), (*start)[j]);
+    for (size_t j = 0; j < columns.size(); ++j)
+      mip_start.emplace_back("x" + std::to_string(j), (*start)[j]);
   for (const Row& row : rows) {
     std::vector<std::pair<int, double>> terms;
     for (auto [col, coeff] : row.terms) terms.emplace_back(col, coeff);
@@ -142,10 +143,27 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
   CbcMain0(model, data);
   const std::string seed = std::to_string(options.random_seed);
   const std::string seconds = std::to_string(options.max_seconds);
-  const char* argv[] = {"cooperage", "-log", "0", "-slog", "0", "-threads", "0",
-                        "-randomSeed", seed.c_str(), "-randomCbcSeed", seed.c_str(),
-                        "-seconds", seconds.c_str(), "-ratioGap", "0.01", "-allowableGap", "1e-9",
-                        "-increment", "1e-7", "-solve", "-quit"};
+  const char* argv[] = {"cooperage",
+                        "-log",
+                        "0",
+                        "-slog",
+                        "0",
+                        "-threads",
+                        "0",
+                        "-randomSeed",
+                        seed.c_str(),
+                        "-randomCbcSeed",
+                        seed.c_str(),
+                        "-seconds",
+                        seconds.c_str(),
+                        "-ratioGap",
+                        "0.01",
+                        "-allowableGap",
+                        "1e-9",
+                        "-increment",
+                        "1e-7",
+                        "-solve",
+                        "-quit"};
   const auto started = std::chrono::steady_clock::now();
   CbcMain1(static_cast<int>(sizeof(argv) / sizeof(argv[0])), argv, model, nullptr, data);
   const double elapsed =
@@ -161,8 +179,8 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
     // CbcMain1 reports infeasibility found in preprocessing as "stopped on
     // time" (status 1, secondary 4); its limit is in CPU seconds, so a search
     // that ended before max_seconds of wall time was not stopped by it.
-    const bool completed = model.isProvenInfeasible() || model.status() == 0 ||
-                           elapsed < options.max_seconds;
+    const bool completed =
+        model.isProvenInfeasible() || model.status() == 0 || elapsed < options.max_seconds;
     result.status = completed ? IlpStatus::Infeasible : IlpStatus::NoSolution;
     return result;
   }

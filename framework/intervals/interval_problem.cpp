@@ -15,8 +15,8 @@ namespace {
 }
 
 bool same(const Curve& a, const Curve& b) {
-  return a.goal == b.goal && a.firmness == b.firmness && a.fixed == b.fixed &&
-         a.min == b.min && a.max == b.max;
+  return a.goal == b.goal && a.firmness == b.firmness && a.fixed == b.fixed && a.min == b.min &&
+         a.max == b.max;
 }
 
 std::vector<LinearTerm> terms_of(const std::vector<int>& ids, int coeff) {
@@ -56,8 +56,8 @@ void IntervalProblem::add_curve(int curve_id, double goal, Firmness firmness,
     invalid(curve_id, "fixed interval count " + std::to_string(*fixed) + " is below the minimum " +
                           std::to_string(min));
   if (fixed && max && *fixed > *max)
-    invalid(curve_id, "fixed interval count " + std::to_string(*fixed) +
-                          " is above the maximum " + std::to_string(*max));
+    invalid(curve_id, "fixed interval count " + std::to_string(*fixed) + " is above the maximum " +
+                          std::to_string(*max));
   Curve curve{curve_id, goal, firmness, fixed, min, max};
   auto [it, inserted] = curves_.emplace(curve_id, curve);
   if (!inserted && !same(it->second, curve))
@@ -108,8 +108,10 @@ std::string describe(const Constraint& constraint) {
   bool first = true;
   for (const LinearTerm& t : constraint.terms) {
     if (t.coeff == 0) continue;
-    if (!first) out << (t.coeff < 0 ? " - " : " + ");
-    else if (t.coeff < 0) out << "-";
+    if (!first)
+      out << (t.coeff < 0 ? " - " : " + ");
+    else if (t.coeff < 0)
+      out << "-";
     const int magnitude = std::abs(t.coeff);
     if (magnitude != 1) out << magnitude << "*";
     out << t.curve_id;

@@ -24,11 +24,11 @@ enum class Firmness {
 /// One curve: the variable x >= min (<= max), aiming at goal.
 struct Curve {
   int id = 0;
-  double goal = 1.0;                   ///< intervals wanted (length / size), > 0
+  double goal = 1.0;  ///< intervals wanted (length / size), > 0
   Firmness firmness = Firmness::Default;
-  std::optional<int> fixed;            ///< user's count: the value of a Hard curve, the goal otherwise
-  int min = 1;                         ///< lower bound, >= 1
-  std::optional<int> max;              ///< upper bound, none = unbounded
+  std::optional<int> fixed;  ///< user's count: the value of a Hard curve, the goal otherwise
+  int min = 1;               ///< lower bound, >= 1
+  std::optional<int> max;    ///< upper bound, none = unbounded
 
   /// The value the objective aims at: `fixed` if given, else `goal`.
   double target() const { return fixed ? static_cast<double>(*fixed) : goal; }
@@ -70,19 +70,19 @@ class IntervalProblem {
                  std::optional<int> max = std::nullopt);
 
   /// sum(lhs) == sum(rhs) (map: opposite sides; submap: per-direction sums).
-  void add_equal(const std::vector<int>& lhs, const std::vector<int>& rhs,
-                 std::string label = {});
+  void add_equal(const std::vector<int>& lhs, const std::vector<int>& rhs, std::string label = {});
   /// sum(ids) even (pave: all-quad needs an even boundary), via sum = 2 m.
   void add_even(const std::vector<int>& ids, std::string label = {});
   /// sum(ids) >= k (pave: at least 4 intervals around a loop).
   void add_at_least(const std::vector<int>& ids, int k, std::string label = {});
   /// sum(coeff * x) <sense> rhs, e.g. "c2 + c3 >= c4 + c5 + 4".
-  void add_linear(std::vector<LinearTerm> terms, Sense sense, int rhs,
-                  std::string label = {});
+  void add_linear(std::vector<LinearTerm> terms, Sense sense, int rhs, std::string label = {});
 
   /// Where a curve's intervals should be smaller than its goal's mean (a
   /// small feature nearby, curve_sizing.h): its nodes follow these sizes.
-  void set_size_function(int curve_id, mesh::SizeFunction sizes) { sizes_[curve_id] = std::move(sizes); }
+  void set_size_function(int curve_id, mesh::SizeFunction sizes) {
+    sizes_[curve_id] = std::move(sizes);
+  }
   const std::map<int, mesh::SizeFunction>& size_functions() const { return sizes_; }
 
   const std::map<int, Curve>& curves() const { return curves_; }

@@ -85,7 +85,7 @@ int lone_count(const Curve& curve) {
   const long below = std::clamp<long>(static_cast<long>(std::floor(target)), lo, hi);
   const long above = std::clamp<long>(static_cast<long>(std::ceil(target)), lo, hi);
   return static_cast<int>(deviation_cost(above, target) < deviation_cost(below, target) ? above
-                                                                                         : below);
+                                                                                        : below);
 }
 
 detail::Cost cost_of(const Curve& curve, const SolveOptions& options) {
@@ -114,11 +114,14 @@ std::vector<Item> items_of(const Component& comp) {
     const std::string name = "curve " + std::to_string(c.id);
     const int col = static_cast<int>(j);
     if (c.hard())
-      items.push_back({Item::Kind::Fixed, col, name + " fixed at " + std::to_string(*c.fixed) + " (hard)"});
+      items.push_back(
+          {Item::Kind::Fixed, col, name + " fixed at " + std::to_string(*c.fixed) + " (hard)"});
     if (c.min > 1)
-      items.push_back({Item::Kind::Min, col, name + " at least " + std::to_string(c.min) + " (minimum)"});
+      items.push_back(
+          {Item::Kind::Min, col, name + " at least " + std::to_string(c.min) + " (minimum)"});
     if (c.max)
-      items.push_back({Item::Kind::Max, col, name + " at most " + std::to_string(*c.max) + " (maximum)"});
+      items.push_back(
+          {Item::Kind::Max, col, name + " at most " + std::to_string(*c.max) + " (maximum)"});
   }
   return items;
 }
@@ -139,7 +142,8 @@ bool build_model(const Component& comp, const std::vector<Item>& items,
                  std::vector<int>& class_of, std::vector<detail::Column>& columns,
                  std::vector<detail::Row>& rows) {
   std::map<int, int> index_of;
-  for (size_t j = 0; j < comp.curves.size(); ++j) index_of[comp.curves[j]->id] = static_cast<int>(j);
+  for (size_t j = 0; j < comp.curves.size(); ++j)
+    index_of[comp.curves[j]->id] = static_cast<int>(j);
   Components same(comp.curves.size());
   for (size_t i = 0; i < items.size(); ++i) {
     if (!active[i] || items[i].kind != Item::Kind::Constraint) continue;
@@ -195,8 +199,8 @@ bool build_model(const Component& comp, const std::vector<Item>& items,
   // assignment comes near it).
   long box = 16;
   for (const Curve* curve : comp.curves)
-    box += 2 * std::max<long>({std::lround(std::ceil(curve->target())), curve->min,
-                               curve->fixed.value_or(0)});
+    box += 2 * std::max<long>(
+                   {std::lround(std::ceil(curve->target())), curve->min, curve->fixed.value_or(0)});
   for (const Canonical& c : comp.constraints) box += 2 * std::abs(static_cast<long>(c.rhs));
   const int cap_all = static_cast<int>(std::min<long>(box, 1L << 30));
   for (detail::Column& col : columns) {
@@ -210,8 +214,10 @@ bool build_model(const Component& comp, const std::vector<Item>& items,
     if (row.kind == Constraint::Kind::Linear && row.sense != Sense::Equal) continue;
     long constant = 0, divisor = row.kind == Constraint::Kind::Even ? 2 : 0;
     for (auto [col, coeff] : row.terms) {
-      if (*columns[col].hi == columns[col].lo) constant += static_cast<long>(coeff) * columns[col].lo;
-      else divisor = std::gcd(divisor, static_cast<long>(std::abs(coeff)));
+      if (*columns[col].hi == columns[col].lo)
+        constant += static_cast<long>(coeff) * columns[col].lo;
+      else
+        divisor = std::gcd(divisor, static_cast<long>(std::abs(coeff)));
     }
     const long rest = (row.kind == Constraint::Kind::Even ? 0 : row.rhs) - constant;
     if (divisor == 0 ? rest != 0 : rest % divisor != 0) return false;
@@ -258,8 +264,9 @@ std::vector<bool> deletion_filter(const Component& comp, const std::vector<Item>
   }
   std::string curves;
   for (int id : curve_ids) curves += (curves.empty() ? "" : ", ") + std::to_string(id);
-  throw IntervalConflict("interval constraints cannot all hold: " + list + " (curves " + curves + ")",
-                         std::move(curve_ids));
+  throw IntervalConflict(
+      "interval constraints cannot all hold: " + list + " (curves " + curves + ")",
+      std::move(curve_ids));
 }
 
 /// A cheap feasible start, if there is one of this form: every free column
@@ -305,12 +312,13 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
     std::vector<int> class_free;
     std::vector<detail::Column> plain;
     std::vector<detail::Row> plain_rows;
-    if (build_model(comp, items, std::vector<bool>(items.size(), true), false, options, class_free, plain,
-                    plain_rows)) {
+    if (build_model(comp, items, std::vector<bool>(items.size(), true), false, options, class_free,
+                    plain, plain_rows)) {
       SolveOptions quick = options;
       quick.max_seconds = std::min(options.max_seconds, 10.0);
       const detail::IlpResult feasible = detail::solve_ilp(plain, plain_rows, quick);
-      if ((feasible.status == detail::IlpStatus::Optimal || feasible.status == detail::IlpStatus::Feasible) &&
+      if ((feasible.status == detail::IlpStatus::Optimal ||
+           feasible.status == detail::IlpStatus::Feasible) &&
           detail::satisfies(columns, rows, feasible.x)) {
         start = feasible.x;
       }
@@ -321,9 +329,10 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   switch (result.status) {
     case detail::IlpStatus::Optimal: break;
     case detail::IlpStatus::Feasible:
-      log::warning("interval assignment: CBC stopped before proving optimality for the "
-                   "component of curve " + std::to_string(comp.curves.front()->id) +
-                   "; using the best solution found");
+      log::warning(
+          "interval assignment: CBC stopped before proving optimality for the "
+          "component of curve " +
+          std::to_string(comp.curves.front()->id) + "; using the best solution found");
       break;
     case detail::IlpStatus::Infeasible: throw_infeasible(comp, options);
     case detail::IlpStatus::NoSolution:
@@ -364,7 +373,8 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
         throw IntervalConflict("interval constraints cannot all hold: " + c.label, {});
       continue;
     }
-    for (auto [id, coeff] : canon.terms) links.join(index_of[canon.terms.front().first], index_of[id]);
+    for (auto [id, coeff] : canon.terms)
+      links.join(index_of[canon.terms.front().first], index_of[id]);
     constraints.push_back(std::move(canon));
   }
 

@@ -83,8 +83,9 @@ struct SolveOptions {
   double objective_scale = 100;  ///< multiplies the costs for CBC's tolerances
   double max_seconds = 60.0;     ///< CBC time limit per component [s]
   int iis_item_limit = 50;       ///< narrow infeasible components below this many items
-  double iis_check_seconds = 2;  ///< CBC time limit per narrowing check [s]; unproven keeps the item
-  int random_seed = 12345;       ///< CBC/CLP seed (fixed: deterministic)
+  double iis_check_seconds =
+      2;                    ///< CBC time limit per narrowing check [s]; unproven keeps the item
+  int random_seed = 12345;  ///< CBC/CLP seed (fixed: deterministic)
 };
 
 struct IntervalSolution {

@@ -27,12 +27,12 @@ Api load() {
                        "cannot load the Exodus II library (Debian package libexodusii5): " + why);
   }
   Api api;
-#define COOPERAGE_EXODUS_RESOLVE(f)                                                         \
-  api.f = reinterpret_cast<decltype(api.f)>(dlsym(lib, #f));                                \
-  if (!api.f) {                                                                             \
-    throw MeshingError(ErrorCode::Internal,                                                 \
-                       std::string("the Exodus II library has no function " #f ": ") +      \
-                           (dlerror() ? "not exported" : "null"));                          \
+#define COOPERAGE_EXODUS_RESOLVE(f)                                                    \
+  api.f = reinterpret_cast<decltype(api.f)>(dlsym(lib, #f));                           \
+  if (!api.f) {                                                                        \
+    throw MeshingError(ErrorCode::Internal,                                            \
+                       std::string("the Exodus II library has no function " #f ": ") + \
+                           (dlerror() ? "not exported" : "null"));                     \
   }
   COOPERAGE_EXODUS_FUNCTIONS(COOPERAGE_EXODUS_RESOLVE)
 #undef COOPERAGE_EXODUS_RESOLVE

@@ -15,12 +15,14 @@
 
 namespace cooperage::io::exodus_lazy {
 
+// clang-format off
 #define COOPERAGE_EXODUS_FUNCTIONS(X)                                                          \
   X(ex_create_int) X(ex_open_int) X(ex_close) X(ex_set_option) X(ex_put_init)               \
   X(ex_put_coord_names) X(ex_put_block) X(ex_put_sets) X(ex_put_names)                         \
   X(ex_put_partial_coord) X(ex_put_set) X(ex_get_init_ext) X(ex_inquire_int)                   \
   X(ex_set_max_name_length) X(ex_get_coord) X(ex_get_ids) X(ex_get_block) X(ex_get_conn)      \
   X(ex_get_name) X(ex_set_int64_status) X(nc_inq_varid) X(nc_put_vara_int) X(nc_redef) X(nc__enddef)
+// clang-format on
 
 struct Api {
 #define COOPERAGE_EXODUS_MEMBER(f) decltype(&::f) f = nullptr;

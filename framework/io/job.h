@@ -24,45 +24,95 @@ struct SourceLocation {
 // ---- geometry operations, executed in journal order -----------------------
 
 /// Import a CAD file (.step/.stp, .iges/.igs, .brep) as shape `name`.
-struct ImportOp { std::string name; std::string file; bool heal = true; };
+struct ImportOp {
+  std::string name;
+  std::string file;
+  bool heal = true;
+};
 /// Axis-aligned box from `origin` with edge lengths `size`.
-struct BrickOp { std::string name; Vec3 origin = Vec3::Zero(); Vec3 size = Vec3::Ones(); };
+struct BrickOp {
+  std::string name;
+  Vec3 origin = Vec3::Zero();
+  Vec3 size = Vec3::Ones();
+};
 struct CylinderOp {
-  std::string name; Vec3 base = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
-  double radius = 1; double height = 1;
+  std::string name;
+  Vec3 base = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  double radius = 1;
+  double height = 1;
 };
 struct ConeOp {
-  std::string name; Vec3 base = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
-  double radius1 = 1; double radius2 = 0; double height = 1;
+  std::string name;
+  Vec3 base = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  double radius1 = 1;
+  double radius2 = 0;
+  double height = 1;
 };
-struct SphereOp { std::string name; Vec3 center = Vec3::Zero(); double radius = 1; };
+struct SphereOp {
+  std::string name;
+  Vec3 center = Vec3::Zero();
+  double radius = 1;
+};
 /// A planar polygon (closed implicitly), e.g. a profile or a hole.
 using Polygon = std::vector<Vec3>;
 /// Planar profile (with optional hole profiles) extruded along `direction`.
-struct PrismOp { std::string name; Polygon profile; std::vector<Polygon> holes; Vec3 direction; };
+struct PrismOp {
+  std::string name;
+  Polygon profile;
+  std::vector<Polygon> holes;
+  Vec3 direction;
+};
 /// Planar profile revolved about the axis through `origin` along `axis` by `angle` degrees.
 struct RevolveOp {
-  std::string name; Polygon profile; Vec3 origin = Vec3::Zero(); Vec3 axis = Vec3::UnitZ();
+  std::string name;
+  Polygon profile;
+  Vec3 origin = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
   double angle = 360;
 };
 /// Solid through planar sections in order (a loft). Each section is a planar
 /// polygon (>= 3 points) or, first or last only, a single point (an apex).
 /// ruled: straight side faces, point j joined to point j of the next section
 /// (every polygon has the same number of points); otherwise smooth faces.
-struct LoftOp { std::string name; std::vector<Polygon> sections; bool ruled = true; };
+struct LoftOp {
+  std::string name;
+  std::vector<Polygon> sections;
+  bool ruled = true;
+};
 enum class BooleanKind { Fuse, Cut, Common };
 /// `name` = inputs[0] op inputs[1] op ...; the inputs are consumed.
-struct BooleanOp { std::string name; BooleanKind kind = BooleanKind::Fuse; std::vector<std::string> inputs; };
-struct TranslateOp { std::string shape; Vec3 by = Vec3::Zero(); };
+struct BooleanOp {
+  std::string name;
+  BooleanKind kind = BooleanKind::Fuse;
+  std::vector<std::string> inputs;
+};
+struct TranslateOp {
+  std::string shape;
+  Vec3 by = Vec3::Zero();
+};
 /// Rotation about the axis through `origin` along `axis` by `angle` degrees.
-struct RotateOp { std::string shape; Vec3 origin = Vec3::Zero(); Vec3 axis = Vec3::UnitZ(); double angle = 0; };
-struct ScaleOp { std::string shape; Vec3 origin = Vec3::Zero(); double factor = 1; };
+struct RotateOp {
+  std::string shape;
+  Vec3 origin = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  double angle = 0;
+};
+struct ScaleOp {
+  std::string shape;
+  Vec3 origin = Vec3::Zero();
+  double factor = 1;
+};
 /// Split a shape by the plane through `origin` with normal `normal` (webcut).
-struct WebcutOp { std::string shape; Vec3 origin = Vec3::Zero(); Vec3 normal = Vec3::UnitZ(); };
+struct WebcutOp {
+  std::string shape;
+  Vec3 origin = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();
+};
 
-using GeometryOp = std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, PrismOp,
-                                RevolveOp, LoftOp, BooleanOp, TranslateOp, RotateOp, ScaleOp,
-                                WebcutOp>;
+using GeometryOp = std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, PrismOp, RevolveOp,
+                                LoftOp, BooleanOp, TranslateOp, RotateOp, ScaleOp, WebcutOp>;
 
 struct GeometryStep {
   GeometryOp op;
@@ -77,8 +127,8 @@ enum class BiasKind { None, Geometric, Dual };
 /// Sizing and scheme settings for one entity (or the global default when
 /// id == 0 in MeshSettings::global).
 struct SizeSetting {
-  std::optional<double> size;          ///< target element size
-  std::optional<int> intervals;        ///< interval count (curves)
+  std::optional<double> size;    ///< target element size
+  std::optional<int> intervals;  ///< interval count (curves)
   Firmness firmness = Firmness::Default;
 };
 
@@ -86,9 +136,9 @@ struct CurveSetting {
   int id = 0;
   SizeSetting sizing;
   BiasKind bias = BiasKind::None;
-  std::optional<double> bias_ratio;        ///< growth ratio between neighbours
-  std::optional<double> bias_first_size;   ///< first element size (instead of ratio)
-  bool reverse_bias = false;               ///< bias from the end vertex
+  std::optional<double> bias_ratio;       ///< growth ratio between neighbours
+  std::optional<double> bias_first_size;  ///< first element size (instead of ratio)
+  bool reverse_bias = false;              ///< bias from the end vertex
   SourceLocation where;
 };
 
@@ -107,11 +157,11 @@ struct SurfaceSetting {
 struct VolumeSetting {
   int id = 0;
   SizeSetting sizing;
-  std::string scheme = "auto";   ///< "auto" or a registered volume scheme ("map", "cooper", ...)
+  std::string scheme = "auto";  ///< "auto" or a registered volume scheme ("map", "cooper", ...)
   ElementKind elements = ElementKind::Hex;
-  std::vector<int> sources;      ///< sweep source surface hints
-  std::vector<int> targets;      ///< sweep target surface hints
-  std::optional<Vec3> direction; ///< sweep direction hint
+  std::vector<int> sources;       ///< sweep source surface hints
+  std::vector<int> targets;       ///< sweep target surface hints
+  std::optional<Vec3> direction;  ///< sweep direction hint
   SourceLocation where;
 };
 
@@ -129,8 +179,8 @@ struct VertexTypeSetting {
 enum class Decompose { Auto, Off };
 
 struct MeshSettings {
-  std::optional<double> size;      ///< global element size
-  int threads = 0;                 ///< 0: all cores (capped at the hardware's)
+  std::optional<double> size;  ///< global element size
+  int threads = 0;             ///< 0: all cores (capped at the hardware's)
   /// Refuse a mesh estimated above this many elements (default 200 M).
   std::optional<double> max_elements;
   /// Largest deviation of a meshed volume (area) from the CAD's, as a
@@ -149,7 +199,7 @@ struct MeshSettings {
 /// A threshold on a metric. Elements worse than `limit` are counted; with
 /// action Fail the run fails.
 struct QualityCheck {
-  std::string metric;    ///< "scaled_jacobian", "skew", ...
+  std::string metric;  ///< "scaled_jacobian", "skew", ...
   std::optional<double> min;
   std::optional<double> max;
   enum class Action { Warn, Fail } action = Action::Warn;
@@ -220,13 +270,13 @@ struct GroupSettings {
 
 /// A whole journal.
 struct Job {
-  std::string file;                      ///< the journal path ("" when built in code)
-  std::string base_dir;                  ///< relative paths inside are resolved against it
-  std::vector<PluginSetting> plugins;    ///< loaded after the built-in schemes, in order
+  std::string file;                    ///< the journal path ("" when built in code)
+  std::string base_dir;                ///< relative paths inside are resolved against it
+  std::vector<PluginSetting> plugins;  ///< loaded after the built-in schemes, in order
   std::vector<GeometryStep> geometry;
-  bool imprint_merge = true;             ///< fragment touching solids into a conformal model
+  bool imprint_merge = true;  ///< fragment touching solids into a conformal model
   std::optional<MeshSettings> mesh;
-  GroupSettings groups;                  ///< <block>, <sideset>, <nodeset>
+  GroupSettings groups;  ///< <block>, <sideset>, <nodeset>
   std::vector<QualityCheck> quality;
   std::vector<ExportSetting> exports;
   std::vector<ReportSetting> reports;

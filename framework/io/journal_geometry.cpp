@@ -20,8 +20,8 @@ namespace cooperage::io::detail {
 namespace {
 
 const std::vector<std::string> kGeometryElements = {
-    "import", "brick", "cylinder", "cone", "sphere", "prism", "revolve", "loft", "fuse",
-    "cut", "common", "translate", "rotate", "scale", "webcut", "imprint_merge"};
+    "import", "brick", "cylinder", "cone",      "sphere", "prism", "revolve", "loft",
+    "fuse",   "cut",   "common",   "translate", "rotate", "scale", "webcut",  "imprint_merge"};
 
 /// Names in journal order: where each was defined and, once a boolean used
 /// it, where it was consumed.
@@ -63,14 +63,16 @@ Vec3 check_planar_polygon(const Element& e, const Polygon& points) {
     const auto& next = points[(i + 1) % points.size()];
     if ((points[i] - next).norm() <= 1e-12 * scale) {
       if (i + 1 == points.size())
-        e.fail_at("points", "the first and last points coincide; the polygon closes by itself, "
-                            "do not repeat the first point");
-      e.fail_at("points", "points " + std::to_string(i + 1) + " and " + std::to_string(i + 2) +
-                              " coincide");
+        e.fail_at("points",
+                  "the first and last points coincide; the polygon closes by itself, "
+                  "do not repeat the first point");
+      e.fail_at("points",
+                "points " + std::to_string(i + 1) + " and " + std::to_string(i + 2) + " coincide");
     }
   }
   Vec3 normal = Vec3::Zero();  // Newell's method
-  for (size_t i = 0; i < points.size(); ++i) normal += points[i].cross(points[(i + 1) % points.size()]);
+  for (size_t i = 0; i < points.size(); ++i)
+    normal += points[i].cross(points[(i + 1) % points.size()]);
   if (normal.norm() <= 1e-12 * scale * scale)
     e.fail_at("points", "the points are collinear (the polygon has no area)");
   normal.normalize();
@@ -163,21 +165,23 @@ LoftOp read_loft(const Element& e) {
     Polygon section = child.points("points", /*allow_single=*/true);
     if (section.size() == 1) {
       if (i != 0 && i + 1 != children.size())
-        child.fail_at("points", "a single-point section (an apex) is allowed only as the first "
-                                "or the last <section>");
+        child.fail_at("points",
+                      "a single-point section (an apex) is allowed only as the first "
+                      "or the last <section>");
     } else {
       check_planar_polygon(child, section);
       if (!first_polygon) {
         first_polygon = &child;
         polygon_size = section.size();
       } else if (op.ruled && section.size() != polygon_size) {
-        child.fail_at("points", "a ruled loft needs the same number of points in every polygon "
-                                "<section> (OpenCASCADE joins the sections edge by edge and needs "
-                                "compatible wires): the <section> at line " +
-                                    std::to_string(first_polygon->line()) + " has " +
-                                    std::to_string(polygon_size) + ", this one has " +
-                                    std::to_string(section.size()) +
-                                    "; use ruled=\"false\" or give them the same count");
+        child.fail_at("points",
+                      "a ruled loft needs the same number of points in every polygon "
+                      "<section> (OpenCASCADE joins the sections edge by edge and needs "
+                      "compatible wires): the <section> at line " +
+                          std::to_string(first_polygon->line()) + " has " +
+                          std::to_string(polygon_size) + ", this one has " +
+                          std::to_string(section.size()) +
+                          "; use ruled=\"false\" or give them the same count");
       }
     }
     op.sections.push_back(std::move(section));
@@ -207,7 +211,8 @@ GeometryOp read_op(const Element& e, const std::string& tag, ShapeTable& shapes)
     bool known = false;
     for (const char* ext : {".step", ".stp", ".iges", ".igs", ".brep"}) {
       const std::string x = ext;
-      known = known || (lower.size() > x.size() && lower.compare(lower.size() - x.size(), x.size(), x) == 0);
+      known = known ||
+              (lower.size() > x.size() && lower.compare(lower.size() - x.size(), x.size(), x) == 0);
     }
     if (!known)
       e.fail_at("file", "attribute \"file\" must end in .step, .stp, .iges, .igs or .brep, got \"" +
@@ -307,8 +312,7 @@ void read_geometry(const Element& geometry, Job& job) {
       e.fail("unknown element in <geometry>" + suggestion(tag, kGeometryElements, "<", ">") +
              "; allowed: " + list(kGeometryElements, "<", ">"));
     if (tag == "imprint_merge") {
-      if (i + 1 != children.size())
-        e.fail("must be the last child of <geometry>");
+      if (i + 1 != children.size()) e.fail("must be the last child of <geometry>");
       e.allow_attributes({"enabled"});
       e.expect_empty();
       job.imprint_merge = e.boolean("enabled").value_or(true);

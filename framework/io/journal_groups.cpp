@@ -69,8 +69,9 @@ void read_block(const Element& e, GroupSettings& groups) {
   b.volumes = optional_ids(e, "volumes");
   b.surfaces = optional_ids(e, "surfaces");
   if (b.volumes.empty() == b.surfaces.empty())
-    e.fail("needs exactly one of \"volumes\" (a volume mesh) and \"surfaces\" (a surface mesh, "
-           "--dim 2)");
+    e.fail(
+        "needs exactly one of \"volumes\" (a volume mesh) and \"surfaces\" (a surface mesh, "
+        "--dim 2)");
   b.where = e.where();
   check_unique(e, groups.blocks, b, "block");
   // An element belongs to one block.
@@ -84,7 +85,8 @@ void read_block(const Element& e, GroupSettings& groups) {
       if (std::count(o.surfaces.begin(), o.surfaces.end(), s))
         e.fail_at("surfaces", "surface " + std::to_string(s) + " is already in block " +
                                   std::to_string(o.id) + " at line " +
-                                  std::to_string(o.where.line) + "; an element belongs to one block");
+                                  std::to_string(o.where.line) +
+                                  "; an element belongs to one block");
   }
   groups.blocks.push_back(std::move(b));
 }
@@ -121,9 +123,12 @@ void read_nodeset(const Element& e, GroupSettings& groups) {
 
 void read_group(const Element& e, GroupSettings& groups) {
   const std::string tag = e.name();
-  if (tag == "block") read_block(e, groups);
-  else if (tag == "sideset") read_sideset(e, groups);
-  else read_nodeset(e, groups);
+  if (tag == "block")
+    read_block(e, groups);
+  else if (tag == "sideset")
+    read_sideset(e, groups);
+  else
+    read_nodeset(e, groups);
 }
 
 }  // namespace cooperage::io::detail

@@ -38,8 +38,10 @@ std::optional<std::string> scheme_name(const Element& e) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
   if (!valid)
-    e.fail_at("scheme", "attribute \"scheme\" must be \"auto\" or a scheme name (letters, digits, "
-                        "'_', '-', '.'), got \"" + *name + "\"");
+    e.fail_at("scheme",
+              "attribute \"scheme\" must be \"auto\" or a scheme name (letters, digits, "
+              "'_', '-', '.'), got \"" +
+                  *name + "\"");
   return name;
 }
 
@@ -73,8 +75,8 @@ CurveSetting read_curve(const Element& e) {
   if (c.bias == BiasKind::None) {
     for (const char* a : {"ratio", "first_size", "reverse"})
       if (e.has(a))
-        e.fail_at(a, "attribute \"" + std::string(a) +
-                         "\" needs bias=\"geometric\" or bias=\"dual\"");
+        e.fail_at(a,
+                  "attribute \"" + std::string(a) + "\" needs bias=\"geometric\" or bias=\"dual\"");
   } else {
     if (c.bias_ratio.has_value() == c.bias_first_size.has_value())
       e.fail("a biased curve needs exactly one of \"ratio\" and \"first_size\"");
@@ -106,7 +108,8 @@ VolumeSetting read_volume(const Element& e) {
   v.id = e.required_integer("id", 1);
   v.sizing = read_sizing(e, false);
   if (auto name = scheme_name(e)) v.scheme = *name;
-  v.elements = static_cast<ElementKind>(e.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
+  v.elements =
+      static_cast<ElementKind>(e.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
   if (e.has("sources")) v.sources = e.ids("sources");
   if (e.has("targets")) v.targets = e.ids("targets");
   v.direction = e.vector("direction", VectorKind::NonZero);
@@ -143,8 +146,7 @@ VertexTypeSetting read_vertex_type(const Element& e) {
 }  // namespace
 
 MeshSettings read_mesh(const Element& mesh) {
-  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance",
-                         "decompose"});
+  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance", "decompose"});
   MeshSettings m;
   m.size = mesh.number("size", NumberKind::Positive);
   m.threads = mesh.integer("threads", 0).value_or(0);

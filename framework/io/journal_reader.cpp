@@ -1,6 +1,7 @@
 // The journal reader: the document, the <cooperage> root and its sections in
 // order (<plugin>*, <geometry>, <mesh>?, <block|sideset|nodeset>*, <quality>*, <export>*,
-// <report>*). The sections live in journal_geometry.cpp, journal_mesh.cpp and journal_groups.cpp; attribute parsing in journal_xml.cpp.
+// <report>*). The sections live in journal_geometry.cpp, journal_mesh.cpp and journal_groups.cpp;
+// attribute parsing in journal_xml.cpp.
 #include "framework/io/journal_reader.h"
 
 #include "framework/core/error.h"
@@ -25,10 +26,11 @@ namespace {
 
 using detail::Element;
 
-const std::vector<std::string> kRootElements = {"plugin", "geometry", "mesh",   "block", "sideset",
-                                                "nodeset", "quality", "export", "report"};
-const char* const kRootOrder = "<plugin>*, <geometry>, <mesh>?, <block>/<sideset>/<nodeset>* (in "
-                               "any order), <quality>*, <export>*, <report>*";
+const std::vector<std::string> kRootElements = {"plugin",  "geometry", "mesh",   "block", "sideset",
+                                                "nodeset", "quality",  "export", "report"};
+const char* const kRootOrder =
+    "<plugin>*, <geometry>, <mesh>?, <block>/<sideset>/<nodeset>* (in "
+    "any order), <quality>*, <export>*, <report>*";
 
 bool is_group(const std::string& tag) {
   return tag == "block" || tag == "sideset" || tag == "nodeset";
@@ -40,9 +42,8 @@ int rank_of(const std::string& tag) {
   return static_cast<int>(std::find(kRootElements.begin(), kRootElements.end(), key) -
                           kRootElements.begin());
 }
-const std::vector<std::string> kMetrics = {"scaled_jacobian", "jacobian",         "skew",
-                                           "taper",           "aspect_frobenius", "edge_ratio",
-                                           "shape"};
+const std::vector<std::string> kMetrics = {"scaled_jacobian",  "jacobian",   "skew", "taper",
+                                           "aspect_frobenius", "edge_ratio", "shape"};
 const std::vector<std::string> kExportExtensions = {".exo", ".msh", ".vtu", ".inp",
                                                     ".obj", ".off", ".stl", ".ply"};
 const std::vector<std::string> kBinaryExtensions = {".vtu", ".msh", ".stl", ".ply"};
@@ -52,8 +53,9 @@ const std::vector<std::string> kReportExtensions = {".html", ".htm"};
 /// "X.EXO" is an Exodus file, as the writers and the CAD import agree.
 bool ends_with(const std::string& s, const std::string& tail) {
   if (s.size() <= tail.size()) return false;
-  return std::equal(tail.begin(), tail.end(), s.end() - static_cast<long>(tail.size()),
-                    [](char t, char c) { return t == std::tolower(static_cast<unsigned char>(c)); });
+  return std::equal(
+      tail.begin(), tail.end(), s.end() - static_cast<long>(tail.size()),
+      [](char t, char c) { return t == std::tolower(static_cast<unsigned char>(c)); });
 }
 
 std::string shortest(double v) {
@@ -95,15 +97,15 @@ ExportSetting read_export(const Element& e) {
   ExportSetting x{e.required("file"), e.where()};
   if (std::none_of(kExportExtensions.begin(), kExportExtensions.end(),
                    [&](const std::string& ext) { return ends_with(x.file, ext); }))
-    e.fail_at("file", "attribute \"file\" must end in one of " +
-                          detail::list(kExportExtensions) + " (the extension picks the format), got \"" +
-                          clip_path(x.file) + "\"");
+    e.fail_at("file", "attribute \"file\" must end in one of " + detail::list(kExportExtensions) +
+                          " (the extension picks the format), got \"" + clip_path(x.file) + "\"");
   x.binary = e.choice("encoding", {"ascii", "binary"}).value_or(0) == 1;
   if (x.binary && std::none_of(kBinaryExtensions.begin(), kBinaryExtensions.end(),
                                [&](const std::string& ext) { return ends_with(x.file, ext); }))
-    e.fail_at("encoding", "encoding=\"binary\" is for .vtu, .msh, .stl and .ply files (Exodus is "
-                          "always binary; Abaqus .inp, .obj and .off always text), got \"" +
-                              clip_path(x.file) + "\"");
+    e.fail_at("encoding",
+              "encoding=\"binary\" is for .vtu, .msh, .stl and .ply files (Exodus is "
+              "always binary; Abaqus .inp, .obj and .off always text), got \"" +
+                  clip_path(x.file) + "\"");
   return x;
 }
 
@@ -125,8 +127,9 @@ PluginSetting read_plugin(const Element& e, const std::string& base_dir) {
   e.expect_empty();
   PluginSetting p{e.required("file"), {}, e.where()};
   const std::filesystem::path f(p.file);
-  p.path = f.is_absolute() || base_dir.empty() ? p.file
-                                                : (std::filesystem::path(base_dir) / f).lexically_normal().string();
+  p.path = f.is_absolute() || base_dir.empty()
+               ? p.file
+               : (std::filesystem::path(base_dir) / f).lexically_normal().string();
   return p;
 }
 
@@ -137,7 +140,8 @@ void read_root(const Element& root, Job& job) {
   const auto version = root.text("version");
   if (!version) root.fail("missing required attribute \"version\" (use version=\"1\")");
   if (*version != "1")
-    root.fail_at("version", "unsupported version \"" + clip(*version) + "\"; this release reads version=\"1\"");
+    root.fail_at("version", "unsupported version \"" + clip(*version) +
+                                "\"; this release reads version=\"1\"");
 
   std::map<std::string, int> seen;  // section -> line of its first occurrence
   std::string last;                 // the last section read
@@ -222,9 +226,9 @@ Job parse_journal(const std::string& xml_text, const std::string& file_name_for_
     std::string hint;
     if (doc.ErrorID() == tinyxml2::XML_ERROR_MISMATCHED_ELEMENT)
       hint = " (an element opened here is not closed, or closed by the wrong tag)";
-    throw MeshingError(ErrorCode::ParseError, detail::at(file, doc.ErrorLineNum()) +
-                                                  "malformed XML, " + doc.ErrorName() + detail +
-                                                  hint);
+    throw MeshingError(
+        ErrorCode::ParseError,
+        detail::at(file, doc.ErrorLineNum()) + "malformed XML, " + doc.ErrorName() + detail + hint);
   }
   const tinyxml2::XMLElement* root = doc.RootElement();
   if (!root)

@@ -62,8 +62,8 @@ std::optional<double> to_number(const std::string& word) {
 }
 
 std::optional<int> to_integer(const std::string& word) {
-  if (word.empty() || !std::all_of(word.begin(), word.end(),
-                                   [](char c) { return c >= '0' && c <= '9'; }))
+  if (word.empty() ||
+      !std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::nullopt;
   int value = 0;
   auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -138,8 +138,7 @@ int Element::line() const { return element_->GetLineNum(); }
 SourceLocation Element::where() const { return {*file_, line(), tag()}; }
 
 void Element::fail(const std::string& message) const {
-  throw MeshingError(ErrorCode::InvalidInput,
-                     at(*file_, line()) + "<" + tag() + ">: " + message);
+  throw MeshingError(ErrorCode::InvalidInput, at(*file_, line()) + "<" + tag() + ">: " + message);
 }
 
 void Element::fail_at(const char* attribute, const std::string& message) const {
@@ -161,21 +160,20 @@ void Element::allow_attributes(std::initializer_list<const char*> allowed) const
     if (std::find(names.begin(), names.end(), a->Name()) != names.end()) continue;
     const std::string allowed_text = names.empty() ? "none" : list(names);
     fail_at(a->Name(), "unknown attribute \"" + clip(a->Name(), 40) + "\"" +
-                           suggestion(a->Name(), names, "\"", "\"") +
-                           "; allowed: " + allowed_text);
+                           suggestion(a->Name(), names, "\"", "\"") + "; allowed: " + allowed_text);
   }
 }
 
 void Element::expect_empty() const {
   for (auto* node = element_->FirstChild(); node; node = node->NextSibling()) {
     if (auto* child = node->ToElement())
-      throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, child->GetLineNum()) + "<" + tag() +
-                             ">: takes no child elements, got <" + clip(child->Name(), 40) + ">");
+      throw MeshingError(ErrorCode::InvalidInput, at(*file_, child->GetLineNum()) + "<" + tag() +
+                                                      ">: takes no child elements, got <" +
+                                                      clip(child->Name(), 40) + ">");
     if (auto* text = node->ToText(); text && !trim(text->Value()).empty())
-      throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, text->GetLineNum()) + "<" + tag() +
-                             ">: takes no text, got \"" + clip(trim(text->Value())) + "\"");
+      throw MeshingError(ErrorCode::InvalidInput, at(*file_, text->GetLineNum()) + "<" + tag() +
+                                                      ">: takes no text, got \"" +
+                                                      clip(trim(text->Value())) + "\"");
   }
 }
 
@@ -185,9 +183,9 @@ std::vector<Element> Element::children() const {
     if (auto* child = node->ToElement()) {
       out.emplace_back(child, *file_);
     } else if (auto* text = node->ToText(); text && !trim(text->Value()).empty()) {
-      throw MeshingError(ErrorCode::InvalidInput,
-                         at(*file_, text->GetLineNum()) + "<" + tag() +
-                             ">: unexpected text \"" + clip(trim(text->Value())) + "\"");
+      throw MeshingError(ErrorCode::InvalidInput, at(*file_, text->GetLineNum()) + "<" + tag() +
+                                                      ">: unexpected text \"" +
+                                                      clip(trim(text->Value())) + "\"");
     }
   }
   return out;
@@ -211,8 +209,9 @@ std::string Element::required(const char* attribute) const {
 std::string Element::shape_name(const char* attribute) const {
   const std::string value = required(attribute);
   if (!valid_name(value))
-    bad_value(attribute, "a name of at most 64 characters (a letter or '_', then letters, "
-                         "digits, '_', '.', '-')");
+    bad_value(attribute,
+              "a name of at most 64 characters (a letter or '_', then letters, "
+              "digits, '_', '.', '-')");
   return value;
 }
 
@@ -230,7 +229,8 @@ std::optional<double> Element::number(const char* attribute, NumberKind kind) co
   const auto value_text = text(attribute);
   if (!value_text) return std::nullopt;
   const auto value = to_number(trim(*value_text));
-  const bool ok = value && (kind == NumberKind::Any || (kind == NumberKind::Positive && *value >= kMinPositive) ||
+  const bool ok = value && (kind == NumberKind::Any ||
+                            (kind == NumberKind::Positive && *value >= kMinPositive) ||
                             (kind == NumberKind::NonNegative && *value >= 0));
   if (!ok) bad_value(attribute, kNumberWords[static_cast<int>(kind)]);
   return value;
@@ -325,8 +325,8 @@ Polygon Element::points(const char* attribute, bool allow_single) const {
   size_t begin = 0;
   while (true) {
     const size_t comma = value.find(',', begin);
-    const auto point = to_vector(value.substr(begin, comma == std::string::npos ? std::string::npos
-                                                                               : comma - begin));
+    const auto point = to_vector(
+        value.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin));
     if (!point) bad_value(attribute, expected);
     out.push_back(*point);
     if (comma == std::string::npos) break;

@@ -26,9 +26,9 @@ double surface_scaled_jacobian(const std::vector<Vec3>& points, const int* corne
 
 /// The worst element of a surface mesh.
 struct SurfaceMeshQuality {
-  double min = 1.0;           ///< smallest scaled Jacobian (1 when there is no element)
-  std::size_t inverted = 0;   ///< elements with a scaled Jacobian <= 0
-  std::size_t below = 0;      ///< elements below the `floor` given
+  double min = 1.0;          ///< smallest scaled Jacobian (1 when there is no element)
+  std::size_t inverted = 0;  ///< elements with a scaled Jacobian <= 0
+  std::size_t below = 0;     ///< elements below the `floor` given
 };
 
 /// Scores every quad and triangle with surface_scaled_jacobian() against

@@ -30,10 +30,9 @@ double first_fraction(int n, double r, CurveSpacing::Kind kind) {
 double ratio_for_first(int n, double target, CurveSpacing::Kind kind) {
   double lo = 1e-6, hi = 1e6;
   if (target >= first_fraction(n, lo, kind) || target <= first_fraction(n, hi, kind)) {
-    throw MeshingError(ErrorCode::InvalidInput,
-                       "a first interval of " + std::to_string(target) +
-                           " of the curve length cannot be reached with " + std::to_string(n) +
-                           " intervals");
+    throw MeshingError(ErrorCode::InvalidInput, "a first interval of " + std::to_string(target) +
+                                                    " of the curve length cannot be reached with " +
+                                                    std::to_string(n) + " intervals");
   }
   for (int it = 0; it < 200; ++it) {
     const double mid = std::sqrt(lo * hi);
@@ -68,9 +67,10 @@ std::vector<double> sized_fractions(int n, double length, const SizeFunction& f)
     const double h0 = f.size[k], h1 = f.size[k + 1], need = target - cumulative[k];
     const double d = h1 - h0;
     double t = std::abs(d) < 1e-9 * std::max(h0, h1) ? need * h0 / piece
-                                                        : h0 / d * std::expm1(need * d / piece);
+                                                     : h0 / d * std::expm1(need * d / piece);
     t = std::clamp(t, 0.0, 1.0);
-    s[static_cast<size_t>(i)] = std::max(s[static_cast<size_t>(i) - 1], f.at[k] + t * (f.at[k + 1] - f.at[k]));
+    s[static_cast<size_t>(i)] =
+        std::max(s[static_cast<size_t>(i) - 1], f.at[k] + t * (f.at[k + 1] - f.at[k]));
   }
   return s;
 }
@@ -109,7 +109,8 @@ std::vector<double> spacing_fractions(int n, double length, const CurveSpacing& 
   const auto w = weights(n, r, spacing.kind);
   double total = 0;
   for (double x : w) total += x;
-  for (int i = 0; i < n; ++i) s[static_cast<size_t>(i) + 1] = s[static_cast<size_t>(i)] + w[static_cast<size_t>(i)] / total;
+  for (int i = 0; i < n; ++i)
+    s[static_cast<size_t>(i) + 1] = s[static_cast<size_t>(i)] + w[static_cast<size_t>(i)] / total;
   s.back() = 1.0;
   if (spacing.kind == CurveSpacing::Kind::Geometric && spacing.reverse) {
     std::vector<double> rev(s.size());

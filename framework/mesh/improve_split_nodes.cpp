@@ -54,13 +54,15 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
   std::vector<Element> elements;
   elements.reserve(quads.size() + tris.size());
   for (const Quad& q : quads) {
-    const Vec3 n = (points[static_cast<size_t>(q[2])] - points[static_cast<size_t>(q[0])])
-                       .cross(points[static_cast<size_t>(q[3])] - points[static_cast<size_t>(q[1])]);
+    const Vec3 n =
+        (points[static_cast<size_t>(q[2])] - points[static_cast<size_t>(q[0])])
+            .cross(points[static_cast<size_t>(q[3])] - points[static_cast<size_t>(q[1])]);
     elements.push_back({q, 4, n});
   }
   for (const Tri& t : tris) {
-    const Vec3 n = (points[static_cast<size_t>(t[1])] - points[static_cast<size_t>(t[0])])
-                       .cross(points[static_cast<size_t>(t[2])] - points[static_cast<size_t>(t[0])]);
+    const Vec3 n =
+        (points[static_cast<size_t>(t[1])] - points[static_cast<size_t>(t[0])])
+            .cross(points[static_cast<size_t>(t[2])] - points[static_cast<size_t>(t[0])]);
     elements.push_back({{t[0], t[1], t[2], -1}, 3, n});
   }
   std::set<int> target_set;
@@ -104,7 +106,8 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
       // Quads keep quad_floor, or their quality now when already below it.
       std::vector<double> floors;
       for (int e : mine) {
-        floors.push_back(std::min(quad_floor, quality(points, elements[static_cast<size_t>(e)])) - 1e-12);
+        floors.push_back(std::min(quad_floor, quality(points, elements[static_cast<size_t>(e)])) -
+                         1e-12);
       }
       // Trials move in the tangent plane (the elements' mean normal), and
       // only the best of a round is passed through `project` (onto a

@@ -21,17 +21,21 @@ std::vector<std::vector<int>> surface_loop_nodes(const geom::Model& model, int s
   for (size_t l = 0; l < loops.size(); ++l) {
     std::vector<int> ring;
     for (const geom::CurveUse& use : loops[l].uses) {
-      if (!db.curve_meshed(use.curve)) fail(surface_id, "curve " + std::to_string(use.curve) + " is not meshed");
+      if (!db.curve_meshed(use.curve))
+        fail(surface_id, "curve " + std::to_string(use.curve) + " is not meshed");
       std::vector<int> chain = db.curve_nodes(use.curve);
-      if (chain.size() < 2) fail(surface_id, "curve " + std::to_string(use.curve) + " has no intervals");
+      if (chain.size() < 2)
+        fail(surface_id, "curve " + std::to_string(use.curve) + " has no intervals");
       if (use.sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
       if (!ring.empty() && ring.back() != chain.front()) {
-        fail(surface_id, "curve " + std::to_string(use.curve) + " does not continue loop " + std::to_string(l));
+        fail(surface_id,
+             "curve " + std::to_string(use.curve) + " does not continue loop " + std::to_string(l));
       }
       ring.insert(ring.end(), chain.begin() + (ring.empty() ? 0 : 1), chain.end());
     }
     if (ring.size() < 2 || ring.front() != ring.back()) {
-      fail(surface_id, "loop " + std::to_string(l) + " (curves " + loop_curve_list(loops[l]) + ") is not closed");
+      fail(surface_id, "loop " + std::to_string(l) + " (curves " + loop_curve_list(loops[l]) +
+                           ") is not closed");
     }
     ring.pop_back();
     rings.push_back(std::move(ring));

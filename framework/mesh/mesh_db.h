@@ -76,7 +76,9 @@ class MeshDB {
   /// Node chain of a curve from its start vertex to its end vertex, both
   /// included (first == last for a closed curve); empty when not meshed.
   const std::vector<int>& curve_nodes(int curve_id) const;
-  void set_curve_nodes(int curve_id, std::vector<int> chain) { curves_[curve_id] = std::move(chain); }
+  void set_curve_nodes(int curve_id, std::vector<int> chain) {
+    curves_[curve_id] = std::move(chain);
+  }
   bool curve_meshed(int curve_id) const { return curves_.count(curve_id) > 0; }
 
   const SurfaceMeshData& surface(int surface_id) const;

@@ -61,10 +61,12 @@ void merge_good_pairs(const std::vector<Vec3>& points, double min_quality, QuadD
       }
       const Quad q{apex, from, far, to};
       const Vec3 normal = quad_normal(points, q);
-      const Vec3 tri_normal = (at(points, from) - at(points, apex)).cross(at(points, to) - at(points, apex));
+      const Vec3 tri_normal =
+          (at(points, from) - at(points, apex)).cross(at(points, to) - at(points, apex));
       if (!(normal.dot(tri_normal) > 0)) continue;
       const double quality = min_corner_sine(points, q.data(), 4, normal);
-      if (quality >= min_quality) candidates.push_back({std::round(quality * 1e9), t, twin->second, q});
+      if (quality >= min_quality)
+        candidates.push_back({std::round(quality * 1e9), t, twin->second, q});
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {

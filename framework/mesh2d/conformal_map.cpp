@@ -56,7 +56,8 @@ std::vector<Vector2d> conformal_map(const std::vector<Vector3d>& points,
     if (c == 0) c = free++;
   }
   std::vector<Vector2d> out(static_cast<size_t>(n), Vector2d::Zero());
-  out[static_cast<size_t>(pin1)] = Vector2d((points[static_cast<size_t>(pin1)] - points[static_cast<size_t>(pin0)]).norm(), 0.0);
+  out[static_cast<size_t>(pin1)] =
+      Vector2d((points[static_cast<size_t>(pin1)] - points[static_cast<size_t>(pin0)]).norm(), 0.0);
   if (free == 0) return out;
 
   // Two rows per triangle (Levy et al. 2002, sec. 3): for the flat positions

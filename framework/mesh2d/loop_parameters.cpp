@@ -114,7 +114,8 @@ class Walker {
     const Vector2d closing = nearest_copy(uv.front(), uv.back(), period_);
     Eigen::Vector2i w(0, 0);
     for (int d = 0; d < 2; ++d) {
-      if (period_[d] > 0) w[d] = static_cast<int>(std::lround((closing[d] - uv.front()[d]) / period_[d]));
+      if (period_[d] > 0)
+        w[d] = static_cast<int>(std::lround((closing[d] - uv.front()[d]) / period_[d]));
     }
     return w;
   }
@@ -157,9 +158,9 @@ double closed_period(const geom::SurfaceGeometry& surface, int dir) {
   using geom::SurfaceType;
   constexpr double kTwoPi = 6.283185307179586;
   const SurfaceType type = surface.type();
-  if (dir == 0 && (type == SurfaceType::Cylinder || type == SurfaceType::Cone ||
-                   type == SurfaceType::Sphere || type == SurfaceType::Torus ||
-                   type == SurfaceType::Revolution)) {
+  if (dir == 0 &&
+      (type == SurfaceType::Cylinder || type == SurfaceType::Cone || type == SurfaceType::Sphere ||
+       type == SurfaceType::Torus || type == SurfaceType::Revolution)) {
     return kTwoPi;
   }
   if (dir == 1 && type == SurfaceType::Torus) return kTwoPi;
@@ -217,9 +218,9 @@ LoopParameters loop_parameters(const geom::SurfaceGeometry& surface,
     int poles = 0;
     for (int d : pole_dir[l]) poles += d >= 0 ? 1 : 0;
     if (poles > 4) {
-      throw MeshingError(ErrorCode::MeshingFailed,
-                         "loop " + std::to_string(l) + " has " + std::to_string(poles) +
-                             " poles; at most 4 are supported");
+      throw MeshingError(ErrorCode::MeshingFailed, "loop " + std::to_string(l) + " has " +
+                                                       std::to_string(poles) +
+                                                       " poles; at most 4 are supported");
     }
     // Every combination of pole windings in {-1, 0, +1} periods: the loop
     // must not wind around the surface; among those, the largest area of

@@ -25,7 +25,8 @@ bool on_segment(const Vector2d& a, const Vector2d& b, const Vector2d& c) {
 bool touch(const Vector2d& a, const Vector2d& b, const Vector2d& c, const Vector2d& d) {
   const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
   const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return true;
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+    return true;
   return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) ||
          (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
 }
@@ -69,7 +70,9 @@ std::string invalid_loops(const std::vector<std::vector<Vector2d>>& loops) {
       segments.push_back({static_cast<int>(l), static_cast<int>(k)});
     }
   }
-  auto a_of = [&](const Segment& s) { return loops[static_cast<size_t>(s.loop)][static_cast<size_t>(s.index)]; };
+  auto a_of = [&](const Segment& s) {
+    return loops[static_cast<size_t>(s.loop)][static_cast<size_t>(s.index)];
+  };
   auto b_of = [&](const Segment& s) {
     const auto& p = loops[static_cast<size_t>(s.loop)];
     return p[(static_cast<size_t>(s.index) + 1) % p.size()];
@@ -85,9 +88,12 @@ std::string invalid_loops(const std::vector<std::vector<Vector2d>>& loops) {
   };
   for (size_t s = 0; s < segments.size(); ++s) {
     const Vector2d a = a_of(segments[s]), b = b_of(segments[s]);
-    for (int j = index(std::min(a.y(), b.y()), box.min().y(), ny); j <= index(std::max(a.y(), b.y()), box.min().y(), ny); ++j) {
-      for (int i = index(std::min(a.x(), b.x()), box.min().x(), nx); i <= index(std::max(a.x(), b.x()), box.min().x(), nx); ++i) {
-        buckets[static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i)].push_back(static_cast<int>(s));
+    for (int j = index(std::min(a.y(), b.y()), box.min().y(), ny);
+         j <= index(std::max(a.y(), b.y()), box.min().y(), ny); ++j) {
+      for (int i = index(std::min(a.x(), b.x()), box.min().x(), nx);
+           i <= index(std::max(a.x(), b.x()), box.min().x(), nx); ++i) {
+        buckets[static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i)]
+            .push_back(static_cast<int>(s));
       }
     }
   }
@@ -121,7 +127,8 @@ std::string invalid_loops(const std::vector<std::vector<Vector2d>>& loops) {
   if (!(signed_area(loops[0]) > 0)) return "the outer loop is not counter-clockwise";
   for (size_t l = 1; l < loops.size(); ++l) {
     if (!(signed_area(loops[l]) < 0)) return "hole loop " + std::to_string(l) + " is not clockwise";
-    if (!point_in(loops[0], loops[l][0])) return "hole loop " + std::to_string(l) + " lies outside the outer loop";
+    if (!point_in(loops[0], loops[l][0]))
+      return "hole loop " + std::to_string(l) + " lies outside the outer loop";
     for (size_t m = 1; m < loops.size(); ++m) {
       if (m != l && point_in(loops[m], loops[l][0])) {
         return "hole loop " + std::to_string(l) + " lies inside hole loop " + std::to_string(m);

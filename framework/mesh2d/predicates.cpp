@@ -7,7 +7,6 @@
 namespace cooperage::mesh2d {
 namespace {
 
-
 // Exact a + b = x + y (Knuth's two-sum).
 inline void two_sum(double a, double b, double& x, double& y) {
   x = a + b;

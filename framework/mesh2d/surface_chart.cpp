@@ -71,7 +71,8 @@ SurfaceChart::SurfaceChart(const geom::SurfaceGeometry& surface,
   }
 }
 
-void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, const ChartOptions& options) {
+void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops,
+                               const ChartOptions& options) {
   const LoopParameters lp = loop_parameters(surface_, loops, 4);
   const Vec2 scale = mean_metric(surface_, lp);
   su_ = scale.x();
@@ -93,7 +94,8 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
   // polygon point (loop, index) of lp, i.e. loop node lp.node[loop][index].
   const SeparatedLoops sep = separate_touching_points(scaled, 1e-9 * diagonal(scaled));
   std::string why = invalid_loops(sep.loops);
-  if (!why.empty()) fail("the boundary is not a valid region in the face's parameter plane (" + why + ")");
+  if (!why.empty())
+    fail("the boundary is not a valid region in the face's parameter plane (" + why + ")");
   auto node_of = [&](const LoopPointRef& r) {
     return LoopPointRef{r.loop, lp.node[static_cast<size_t>(r.loop)][static_cast<size_t>(r.index)]};
   };
@@ -119,7 +121,8 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
       for (const LoopPointRef& r : sep.source[l]) sources_[l].push_back(node_of(r));
     }
   };
-  if (!lp.has_poles() && max_conformal_distortion(xyz, bg.points, bg.triangles) <= options.max_distortion) {
+  if (!lp.has_poles() &&
+      max_conformal_distortion(xyz, bg.points, bg.triangles) <= options.max_distortion) {
     use_scaled_uv();
     return;
   }
@@ -128,7 +131,7 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
   std::vector<int> merged(bg.points.size());
   for (size_t i = 0; i < merged.size(); ++i) merged[i] = static_cast<int>(i);
   std::vector<std::vector<int>> out_vertex(sep.loops.size());  // per chart point: its vertex
-  std::map<std::pair<int, int>, int> pole_vertex;               // (loop, node) -> vertex
+  std::map<std::pair<int, int>, int> pole_vertex;              // (loop, node) -> vertex
   size_t b = 0;
   for (size_t l = 0; l < sep.loops.size(); ++l) {
     for (size_t k = 0; k < sep.loops[l].size(); ++k, ++b) {
@@ -141,7 +144,8 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
         continue;
       }
       xyz[b] = loops[static_cast<size_t>(n.loop)][static_cast<size_t>(n.index)];
-      const auto [it, fresh] = pole_vertex.emplace(std::make_pair(n.loop, n.index), static_cast<int>(b));
+      const auto [it, fresh] =
+          pole_vertex.emplace(std::make_pair(n.loop, n.index), static_cast<int>(b));
       merged[b] = it->second;
       if (fresh) {
         out_vertex[l].push_back(static_cast<int>(b));
@@ -158,7 +162,8 @@ void SurfaceChart::make_curved(const std::vector<std::vector<Vec3>>& loops, cons
                                merged[static_cast<size_t>(t[2])]};
     if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2]) continue;  // collapsed at a pole
     tris.push_back(m);
-    corner_uv.push_back({uv_of(bg.points[static_cast<size_t>(t[0])]), uv_of(bg.points[static_cast<size_t>(t[1])]),
+    corner_uv.push_back({uv_of(bg.points[static_cast<size_t>(t[0])]),
+                         uv_of(bg.points[static_cast<size_t>(t[1])]),
                          uv_of(bg.points[static_cast<size_t>(t[2])])});
   }
   // Pinned: the first chart point and the boundary vertex farthest from it.

@@ -59,8 +59,8 @@ class SurfaceChart {
   ///                     outer first, the face on the left against the
   ///                     natural normal; a seam node appears twice, a pole once)
   /// Throws MeshingError(MeshingFailed) when no chart gives valid loops.
-  SurfaceChart(const geom::SurfaceGeometry& surface, const std::vector<std::vector<geom::Vec3>>& loops,
-               const ChartOptions& options = {});
+  SurfaceChart(const geom::SurfaceGeometry& surface,
+               const std::vector<std::vector<geom::Vec3>>& loops, const ChartOptions& options = {});
   ~SurfaceChart();
   SurfaceChart(SurfaceChart&&) noexcept;
 

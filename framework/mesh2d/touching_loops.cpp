@@ -12,14 +12,15 @@ using Eigen::Vector2d;
 
 /// Groups of points (loop, index) closer than the tolerance, by a sort on
 /// quantised coordinates (neighbouring cells checked too).
-std::vector<std::vector<std::pair<int, int>>> coincident(const std::vector<std::vector<Vector2d>>& loops,
-                                                         double tolerance) {
+std::vector<std::vector<std::pair<int, int>>> coincident(
+    const std::vector<std::vector<Vector2d>>& loops, double tolerance) {
   std::map<std::pair<long long, long long>, std::vector<std::pair<int, int>>> cells;
   const double cell = std::max(tolerance, 1e-300) * 4.0;
   for (size_t l = 0; l < loops.size(); ++l) {
     for (size_t k = 0; k < loops[l].size(); ++k) {
       const Vector2d& p = loops[l][k];
-      cells[{static_cast<long long>(std::floor(p.x() / cell)), static_cast<long long>(std::floor(p.y() / cell))}]
+      cells[{static_cast<long long>(std::floor(p.x() / cell)),
+             static_cast<long long>(std::floor(p.y() / cell))}]
           .emplace_back(static_cast<int>(l), static_cast<int>(k));
     }
   }
@@ -65,7 +66,8 @@ SeparatedLoops separate_touching_points(const std::vector<std::vector<Vector2d>>
   out.loops = loops;
   out.source.resize(loops.size());
   for (size_t l = 0; l < loops.size(); ++l) {
-    for (size_t k = 0; k < loops[l].size(); ++k) out.source[l].push_back({static_cast<int>(l), static_cast<int>(k)});
+    for (size_t k = 0; k < loops[l].size(); ++k)
+      out.source[l].push_back({static_cast<int>(l), static_cast<int>(k)});
   }
   // Merge loops that share a point: b into a at the shared point, so the
   // merged loop walks a to the point, all of b, the point again, the rest
@@ -119,7 +121,8 @@ SeparatedLoops separate_touching_points(const std::vector<std::vector<Vector2d>>
       while (sweep > 2.0 * M_PI) sweep -= 2.0 * M_PI;
       const double a = a_next + 0.5 * sweep;
       const double step = fraction * std::min((p - x).norm(), (q - x).norm());
-      moved[static_cast<size_t>(l)][static_cast<size_t>(k)] = x + step * Vector2d(std::cos(a), std::sin(a));
+      moved[static_cast<size_t>(l)][static_cast<size_t>(k)] =
+          x + step * Vector2d(std::cos(a), std::sin(a));
       ++out.moved;
     }
   }

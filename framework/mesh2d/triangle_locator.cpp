@@ -47,7 +47,8 @@ TriangleLocator::TriangleLocator(std::vector<Eigen::Vector2d> points,
     int i0, i1, j0, j1;
     range(triangles_[k], i0, i1, j0, j1);
     for (int j = j0; j <= j1; ++j) {
-      for (int i = i0; i <= i1; ++i) items_[static_cast<size_t>(count[static_cast<size_t>(cell(i, j))]++)] = static_cast<int>(k);
+      for (int i = i0; i <= i1; ++i)
+        items_[static_cast<size_t>(count[static_cast<size_t>(cell(i, j))]++)] = static_cast<int>(k);
     }
   }
 }
@@ -57,7 +58,9 @@ Eigen::Vector3d TriangleLocator::barycentric(int t, const Eigen::Vector2d& x) co
   const Eigen::Vector2d& a = points_[static_cast<size_t>(tri[0])];
   const Eigen::Vector2d& b = points_[static_cast<size_t>(tri[1])];
   const Eigen::Vector2d& c = points_[static_cast<size_t>(tri[2])];
-  auto cross = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); };
+  auto cross = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
+    return p.x() * q.y() - p.y() * q.x();
+  };
   const double area = cross(b - a, c - a);
   if (!(area != 0)) return Eigen::Vector3d(1.0 / 3, 1.0 / 3, 1.0 / 3);
   const double wa = cross(b - x, c - x) / area;
@@ -68,8 +71,10 @@ Eigen::Vector3d TriangleLocator::barycentric(int t, const Eigen::Vector2d& x) co
 TriangleLocator::Hit TriangleLocator::locate(const Eigen::Vector2d& x) const {
   Hit best;
   if (triangles_.empty()) return best;
-  const int ci = std::clamp(static_cast<int>(std::floor((x.x() - lo_.x()) / cell_size_)), 0, nx_ - 1);
-  const int cj = std::clamp(static_cast<int>(std::floor((x.y() - lo_.y()) / cell_size_)), 0, ny_ - 1);
+  const int ci =
+      std::clamp(static_cast<int>(std::floor((x.x() - lo_.x()) / cell_size_)), 0, nx_ - 1);
+  const int cj =
+      std::clamp(static_cast<int>(std::floor((x.y() - lo_.y()) / cell_size_)), 0, ny_ - 1);
   // Rings of buckets around x until a triangle holds it; the triangle whose
   // most negative barycentric coordinate is largest otherwise.
   double best_score = -std::numeric_limits<double>::infinity();

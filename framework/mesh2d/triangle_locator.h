@@ -17,7 +17,7 @@ class TriangleLocator {
   TriangleLocator(std::vector<Eigen::Vector2d> points, std::vector<std::array<int, 3>> triangles);
 
   struct Hit {
-    int triangle = -1;                         ///< -1 only when there are no triangles
+    int triangle = -1;                                  ///< -1 only when there are no triangles
     Eigen::Vector3d weights = Eigen::Vector3d::Zero();  ///< barycentric, >= 0, sum 1
   };
   /// The triangle holding x (or the nearest one).
@@ -34,7 +34,7 @@ class TriangleLocator {
   Eigen::Vector2d lo_ = Eigen::Vector2d::Zero();
   double cell_size_ = 1.0;
   int nx_ = 1, ny_ = 1;
-  std::vector<int> start_;    ///< bucket c holds items[start_[c] .. start_[c + 1])
+  std::vector<int> start_;  ///< bucket c holds items[start_[c] .. start_[c + 1])
   std::vector<int> items_;
 };
 

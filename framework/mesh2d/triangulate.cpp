@@ -45,7 +45,8 @@ Triangulation2D triangulate(const std::vector<std::vector<Eigen::Vector2d>>& loo
       const auto& b = loop[i];
       const auto& c = loop[(i + 1) % loop.size()];
       if (orient2d(a, b, c) == 0.0 && (b - a).dot(c - b) < 0.0)
-        bad_input("loop " + std::to_string(l) + " turns back on itself at point " + std::to_string(i));
+        bad_input("loop " + std::to_string(l) + " turns back on itself at point " +
+                  std::to_string(i));
     }
     nb += loop.size();
     area += signed_area(loop);

@@ -39,8 +39,7 @@ std::vector<std::pair<int, bool>> selected(const mesh::MeshDB& db, const geom::M
 
 }  // namespace
 
-SurfaceMesh to_openmesh(const mesh::MeshDB& db, const geom::Model& model,
-                        SurfaceSelection which) {
+SurfaceMesh to_openmesh(const mesh::MeshDB& db, const geom::Model& model, SurfaceSelection which) {
   SurfaceMesh m;
   OpenMesh::VPropHandleT<int> node_of;
   OpenMesh::FPropHandleT<int> surface_of;

@@ -44,8 +44,9 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
     if (v.elements != io::ElementKind::Hex && v.scheme == "map") {
       const char* kind = v.elements == io::ElementKind::Wedge ? "wedge" : "mixed";
       throw MeshingError(ErrorCode::InvalidInput,
-                         at(v.where) + "elements=\"" + kind + "\" with scheme=\"map\": a volume map "
-                                       "makes hexes only; use scheme=\"cooper\" or \"auto\"");
+                         at(v.where) + "elements=\"" + kind +
+                             "\" with scheme=\"map\": a volume map "
+                             "makes hexes only; use scheme=\"cooper\" or \"auto\"");
     }
   }
   for (const auto& p : settings.vertex_types) {
@@ -62,9 +63,9 @@ std::string lower(std::string s) {
 }
 
 [[noreturn]] void group_error(const io::SourceLocation& where, const std::string& message) {
-  throw MeshingError(ErrorCode::InvalidInput,
-                     (where.line > 0 ? at(where) : where.file + ": " + where.element + ": ") +
-                         message);
+  throw MeshingError(
+      ErrorCode::InvalidInput,
+      (where.line > 0 ? at(where) : where.file + ": " + where.element + ": ") + message);
 }
 
 // What the journal reader checks per element (journal_groups.cpp), for
@@ -74,7 +75,8 @@ template <class Setting>
 void check_kind(const std::vector<Setting>& all, const char* kind) {
   for (size_t i = 0; i < all.size(); ++i) {
     const Setting& g = all[i];
-    if (g.id < 1) group_error(g.where, std::string(kind) + " id " + std::to_string(g.id) + " is not positive");
+    if (g.id < 1)
+      group_error(g.where, std::string(kind) + " id " + std::to_string(g.id) + " is not positive");
     const bool name_ok = !g.name.empty() && g.name.size() <= 32 &&
                          std::isalpha(static_cast<unsigned char>(g.name[0])) &&
                          std::all_of(g.name.begin(), g.name.end(), [](char c) {
@@ -82,7 +84,8 @@ void check_kind(const std::vector<Setting>& all, const char* kind) {
                          });
     if (!name_ok)
       group_error(g.where, std::string(kind) + " " + std::to_string(g.id) + ": the name \"" +
-                               g.name.substr(0, 40) + "\" must be a letter, then letters, digits "
+                               g.name.substr(0, 40) +
+                               "\" must be a letter, then letters, digits "
                                "or '_' (at most 32 characters)");
     for (size_t j = 0; j < i; ++j) {
       if (all[j].id == g.id)
@@ -109,10 +112,9 @@ void check_groups(const geom::Model& model, const io::GroupSettings& groups) {
       for (int id : dim == 3 ? b.volumes : b.surfaces) {
         auto [it, fresh] = block_of.emplace(std::make_pair(dim, id), b.id);
         if (!fresh)
-          group_error(b.where, std::string(dim == 3 ? "volume " : "surface ") +
-                                   std::to_string(id) + " is in blocks " +
-                                   std::to_string(it->second) + " and " + std::to_string(b.id) +
-                                   "; an element belongs to one block");
+          group_error(b.where, std::string(dim == 3 ? "volume " : "surface ") + std::to_string(id) +
+                                   " is in blocks " + std::to_string(it->second) + " and " +
+                                   std::to_string(b.id) + "; an element belongs to one block");
       }
     }
   }
@@ -121,7 +123,8 @@ void check_groups(const geom::Model& model, const io::GroupSettings& groups) {
       group_error(s.where, "side set " + std::to_string(s.id) + " has no surfaces");
   for (const auto& n : groups.node_sets)
     if (n.surfaces.empty() && n.curves.empty() && n.vertices.empty())
-      group_error(n.where, "node set " + std::to_string(n.id) + " has no surfaces, curves or vertices");
+      group_error(n.where,
+                  "node set " + std::to_string(n.id) + " has no surfaces, curves or vertices");
   const size_t n_vol = model.volumes().size(), n_surf = model.surfaces().size();
   for (const auto& b : groups.blocks) {
     for (int v : b.volumes) check_id(b.where, "volume", v, n_vol);

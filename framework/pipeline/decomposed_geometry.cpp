@@ -64,7 +64,8 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   build.imprint_merge = job.imprint_merge;
   DecomposedGeometry out;
   out.model = bench.build_model(build);
-  out.geometry_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.geometry_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.decomposition.origin.clear();
   for (const geom::Volume& v : out.model.volumes()) out.decomposition.origin.push_back(v.id);
   if (dim != 3 || !job.mesh || job.mesh->decompose == io::Decompose::Off) return out;
@@ -81,8 +82,10 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   if (!setting.empty()) {
     throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(todo.front()),
                        "no hex scheme applies, and automatic decomposition would renumber the "
-                       "entities that " + setting + " refers to by id; cut the volume with "
-                       "<webcut> in the journal, or remove the per-entity settings");
+                       "entities that " +
+                           setting +
+                           " refers to by id; cut the volume with "
+                           "<webcut> in the journal, or remove the per-entity settings");
   }
   if (!planner) throw MeshingError(ErrorCode::Internal, "decomposition needs a planner");
   io::MeshSettings piece_settings = settings;
@@ -102,8 +105,8 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   };
   decompose::DecomposeOptions options;
   options.size = decomposition_size(settings, out.model);
-  decompose::Decomposed d = decompose::decompose(occ::SolidPieces::of(bench, build), out.model,
-                                                 registry, check, options);
+  decompose::Decomposed d =
+      decompose::decompose(occ::SolidPieces::of(bench, build), out.model, registry, check, options);
   out.model = std::move(d.model);
   out.decomposition = std::move(d.report);
   return out;

@@ -33,8 +33,7 @@ intervals::Firmness to_firmness(io::Firmness f) {
 
 }  // namespace
 
-double curve_target_size(const geom::Model& model, const io::MeshSettings& settings,
-                         int curve_id) {
+double curve_target_size(const geom::Model& model, const io::MeshSettings& settings, int curve_id) {
   if (const auto* own = find_setting(settings.curves, curve_id); own && own->sizing.size) {
     return *own->sizing.size;
   }

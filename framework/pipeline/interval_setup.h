@@ -14,8 +14,7 @@ namespace cooperage::pipeline {
 /// Target element size of a curve: its own size, else the smallest size set
 /// on a surface or volume it bounds, else the global size. Throws
 /// MeshingError(InvalidInput) naming the curve when no size applies.
-double curve_target_size(const geom::Model& model, const io::MeshSettings& settings,
-                         int curve_id);
+double curve_target_size(const geom::Model& model, const io::MeshSettings& settings, int curve_id);
 
 /// Goals for every curve (a user's interval count is hard unless marked
 /// soft) and the constraints of every planned surface and volume scheme.

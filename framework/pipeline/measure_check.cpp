@@ -84,8 +84,10 @@ MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int 
       if (!db.surface_meshed(s.id) || s.geometry->type() == geom::SurfaceType::Plane) continue;
       const mesh::SurfaceMeshData& sm = db.surface(s.id);
       const double out = geom::sign(use.sense);
-      for (const mesh::Quad& q : sm.quads) m.faceting += facet_sliver(gather(q, db), *s.geometry, out);
-      for (const mesh::Tri& t : sm.tris) m.faceting += facet_sliver(gather(t, db), *s.geometry, out);
+      for (const mesh::Quad& q : sm.quads)
+        m.faceting += facet_sliver(gather(q, db), *s.geometry, out);
+      for (const mesh::Tri& t : sm.tris)
+        m.faceting += facet_sliver(gather(t, db), *s.geometry, out);
     }
   }
   return m;
@@ -104,8 +106,8 @@ std::uint64_t edge_key(int a, int b) {
 }
 
 /// The model curve of surface `s` that a boundary edge (a, b) follows, or 0.
-int curve_of_edge(const geom::Model& model, const mesh::MeshDB& db, const geom::Surface& s,
-                  int a, int b, const Vec3& mid) {
+int curve_of_edge(const geom::Model& model, const mesh::MeshDB& db, const geom::Surface& s, int a,
+                  int b, const Vec3& mid) {
   for (int n : {a, b})
     if (db.owner(n).dim == 1) return db.owner(n).id;
   if (db.owner(a).dim != 0 || db.owner(b).dim != 0) return 0;
@@ -218,7 +220,9 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
       refined = quad_area({p[0], mid[0], c, mid[3]}) + quad_area({mid[0], p[1], mid[1], c}) +
                 quad_area({c, mid[1], p[2], mid[2]}) + quad_area({mid[3], c, mid[2], p[3]});
     } else {
-      auto tri = [](const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * (b - a).cross(c - a).norm(); };
+      auto tri = [](const Vec3& a, const Vec3& b, const Vec3& c) {
+        return 0.5 * (b - a).cross(c - a).norm();
+      };
       refined = tri(p[0], mid[0], mid[2]) + tri(mid[0], p[1], mid[1]) + tri(mid[2], mid[1], p[2]) +
                 tri(mid[0], mid[1], mid[2]);
     }

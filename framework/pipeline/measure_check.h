@@ -36,10 +36,10 @@
 namespace cooperage::pipeline {
 
 struct MeasureCheck {
-  EntityRef entity;      ///< a volume (3D meshes) or a surface (surface meshes)
-  double cad = 0;        ///< the CAD's volume or area
-  double mesh = 0;       ///< the sum over the entity's elements
-  double faceting = 0;   ///< what facets over curved geometry leave out (see above)
+  EntityRef entity;     ///< a volume (3D meshes) or a surface (surface meshes)
+  double cad = 0;       ///< the CAD's volume or area
+  double mesh = 0;      ///< the sum over the entity's elements
+  double faceting = 0;  ///< what facets over curved geometry leave out (see above)
   /// |mesh + faceting - cad| / cad.
   double deviation() const;
 };

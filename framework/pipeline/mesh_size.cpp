@@ -101,8 +101,8 @@ void check_mesh_size(const MeshSizeEstimate& estimate, double limit) {
     where = " (" + estimate.largest.name() + " about " + number(estimate.largest_elements) + ")";
   throw MeshingError(ErrorCode::InvalidInput,
                      "the mesh would have about " + number(worst) + " elements" + where +
-                         " and need about " + number(estimate.bytes / 1e9) +
-                         " GB; the limit is " + number(limit) +
+                         " and need about " + number(estimate.bytes / 1e9) + " GB; the limit is " +
+                         number(limit) +
                          " (--max-elements, <mesh max_elements>): use a larger element size or "
                          "fewer intervals");
 }

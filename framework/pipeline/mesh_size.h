@@ -21,8 +21,8 @@ inline constexpr double kMaxElementsCeiling = 1e9;
 struct MeshSizeEstimate {
   double elements = 0;  ///< volume elements (dim 3) plus surface elements
   double nodes = 0;
-  double bytes = 0;     ///< memory the mesh and its working copies take, about
-  EntityRef largest;    ///< the entity expected to have the most elements
+  double bytes = 0;   ///< memory the mesh and its working copies take, about
+  EntityRef largest;  ///< the entity expected to have the most elements
   double largest_elements = 0;
 };
 

@@ -56,8 +56,9 @@ std::vector<Outcome> for_each_entity(const std::vector<int>& ids, Work work) {
     } catch (const MeshingError& e) {
       out[i].error = e;
     } catch (const std::bad_alloc&) {
-      out[i].error = MeshingError(ErrorCode::InvalidInput, EntityRef::none(), "ran out of memory while meshing it",
-                                  "use a larger element size");
+      out[i].error =
+          MeshingError(ErrorCode::InvalidInput, EntityRef::none(),
+                       "ran out of memory while meshing it", "use a larger element size");
     } catch (const std::exception& e) {
       out[i].error = MeshingError(ErrorCode::Internal, e.what());
     }
@@ -88,8 +89,8 @@ class Refusals {
 // count) and hand each failure to `failed`.
 template <class MeshOne, class Commit, class Failed>
 void run_stage(const char* stage, int dim, const std::vector<int>& ids,
-               const std::map<int, PlanEntry>& plan, MeshResult& result,
-               const MeshOptions& options, MeshOne mesh_one, Commit commit, Failed failed) {
+               const std::map<int, PlanEntry>& plan, MeshResult& result, const MeshOptions& options,
+               MeshOne mesh_one, Commit commit, Failed failed) {
   report(options, stage, 0, ids.size());
   auto meshes = for_each_entity(ids, mesh_one);
   for (size_t i = 0; i < ids.size(); ++i) {
@@ -180,7 +181,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   const double max_elements =
       std::min(options.max_elements.value_or(settings.max_elements.value_or(kDefaultMaxElements)),
                kMaxElementsCeiling);
-  const double tolerance = options.volume_tolerance.value_or(settings.volume_tolerance.value_or(0.01));
+  const double tolerance =
+      options.volume_tolerance.value_or(settings.volume_tolerance.value_or(0.01));
   const int dim = options.dim;
 
   geom::validate(model);
@@ -194,9 +196,10 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   lap("plan");
   report(options, "intervals", 0, 1);
   // The planner solved this very problem when it checked feasibility.
-  result.intervals = result.plan.intervals
-                         ? *result.plan.intervals
-                         : intervals::solve(build_interval_problem(model, registry, result.plan, settings));
+  result.intervals =
+      result.plan.intervals
+          ? *result.plan.intervals
+          : intervals::solve(build_interval_problem(model, registry, result.plan, settings));
   {
     std::map<int, double> counts;
     for (const auto& [curve, n] : result.intervals.intervals) counts[curve] = n;
@@ -239,7 +242,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       [&](int id) {
         const PlanEntry& entry = result.plan.surfaces.at(id);
         const auto* s = registry.surface_scheme(entry.scheme);
-        return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &params, entry.data.get()}, params);
+        return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &params, entry.data.get()},
+                       params);
       },
       commit_surface, surface_failed);
   lap("surfaces");
@@ -260,8 +264,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         for (int other : w->second) {
           if (refusals.refused(other)) {
             refusals.refuse(id, ErrorCode::MeshingFailed,
-                            "it takes the mesh of a shared surface from volume " + std::to_string(other) +
-                                ", which could not be meshed",
+                            "it takes the mesh of a shared surface from volume " +
+                                std::to_string(other) + ", which could not be meshed",
                             "");
             ready = false;
             break;
@@ -273,7 +277,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       (ready ? wave : later).push_back(id);
     }
     if (wave.empty() && later.empty()) break;  // the rest was refused: its makers failed
-    if (wave.empty()) {  // the selector keeps the waits acyclic
+    if (wave.empty()) {                        // the selector keeps the waits acyclic
       throw MeshingError(ErrorCode::Internal, "volumes wait for each other's meshes");
     }
     run_stage(
@@ -281,9 +285,11 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         [&](int id) {
           const PlanEntry& entry = result.plan.volumes.at(id);
           const auto* s = registry.volume_scheme(entry.scheme);
-          return s->mesh(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()}, params);
+          return s->mesh(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
+                         params);
         },
-        commit_volume, [&](int id, const MeshingError& e) {
+        commit_volume,
+        [&](int id, const MeshingError& e) {
           refusals.refuse(id, e.code(), e.message(), e.hint());
         });
     done.insert(wave.begin(), wave.end());
@@ -297,8 +303,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     const auto* sj = block.find("scaled_jacobian");
     if (!sj || sj->inverted == 0) continue;
     const int entity = dim == 3 && block.dim == 2 ? (model.surface(block.id).volumes.empty()
-                                                        ? 0
-                                                        : model.surface(block.id).volumes.front())
+                                                         ? 0
+                                                         : model.surface(block.id).volumes.front())
                                                   : block.id;
     if (entity == 0) {  // a free face in a volume run: no verdict entity to carry it
       throw MeshingError(ErrorCode::MeshingFailed, EntityRef{block.dim, block.id},
@@ -327,10 +333,12 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     } else if (const double raw = m.cad > 0 ? std::abs(m.mesh - m.cad) / m.cad : 0.0; raw > 0.01) {
       // Correct facets, yet a person asked for the part and gets this much
       // less of it (a rod at a coarse size is a hexagonal prism): say so.
-      result.warnings.push_back(
-          {m.entity, "its meshed " + std::string(what) + " " + number(m.mesh) + " is " + percent(raw) +
-                         (m.mesh < m.cad ? " below" : " above") + " the CAD's " + number(m.cad) +
-                         ": the elements facet its curved faces coarsely; a smaller size follows them closer"});
+      result.warnings.push_back({m.entity, "its meshed " + std::string(what) + " " +
+                                               number(m.mesh) + " is " + percent(raw) +
+                                               (m.mesh < m.cad ? " below" : " above") +
+                                               " the CAD's " + number(m.cad) +
+                                               ": the elements facet its curved faces coarsely; a "
+                                               "smaller size follows them closer"});
     }
     if (d > tolerance) deviates[m.entity.id] = text + "; the tolerance is " + percent(tolerance);
     result.measures.push_back(m);
@@ -359,9 +367,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     result.verdicts.push_back(std::move(v));
   }
 
-  const auto first_refused = std::find_if(result.verdicts.begin(), result.verdicts.end(), [](const Verdict& v) {
-    return v.state == Verdict::State::Refused;
-  });
+  const auto first_refused =
+      std::find_if(result.verdicts.begin(), result.verdicts.end(),
+                   [](const Verdict& v) { return v.state == Verdict::State::Refused; });
   if (first_refused != result.verdicts.end() && !options.allow_partial) {
     if (result.verdicts.size() == 1)
       throw MeshingError(first_refused->code, first_refused->entity, first_refused->reason,
@@ -369,21 +377,22 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
     Verdict first = *first_refused;
     for (const Verdict& v : result.verdicts)
       if (v.state == Verdict::State::Refused && v.code == ErrorCode::Internal) first.code = v.code;
-    const std::size_t refused = static_cast<std::size_t>(std::count_if(
-        result.verdicts.begin(), result.verdicts.end(),
-        [](const Verdict& v) { return v.state == Verdict::State::Refused; }));
+    const std::size_t refused = static_cast<std::size_t>(
+        std::count_if(result.verdicts.begin(), result.verdicts.end(),
+                      [](const Verdict& v) { return v.state == Verdict::State::Refused; }));
     const char* kind = verdict_dim == 3 ? "volumes" : "surfaces";
     const std::string hint =
         std::to_string(refused) + " of " + std::to_string(result.verdicts.size()) + " " + kind +
         " could not be meshed" +
-        (good.empty() ? std::string()
-                      : "; --allow-partial writes the " + std::to_string(good.size()) +
-                            " that meshed");
+        (good.empty()
+             ? std::string()
+             : "; --allow-partial writes the " + std::to_string(good.size()) + " that meshed");
     throw IncompleteMesh(first, result.verdicts, hint);
   }
   if (options.allow_partial && result.incomplete()) {
     if (good.empty()) {
-      const Verdict& v = first_refused != result.verdicts.end() ? *first_refused : result.verdicts.front();
+      const Verdict& v =
+          first_refused != result.verdicts.end() ? *first_refused : result.verdicts.front();
       throw MeshingError(v.state == Verdict::State::Refused ? v.code : ErrorCode::MeshingFailed,
                          v.entity, v.reason.empty() ? "nothing could be meshed" : v.reason, v.hint);
     }
@@ -398,9 +407,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
 RunResult run_job(const io::Job& job, const scheme::Registry& registry,
                   const MeshOptions& options) {
   if (!job.mesh) {
-    throw MeshingError(ErrorCode::InvalidInput,
-                       clip_path(job.file) +
-                           ": the journal has no <mesh> element, so there is nothing to run");
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        clip_path(job.file) + ": the journal has no <mesh> element, so there is nothing to run");
   }
   // Every target is checked before any work, and no two name one file.
   std::map<std::string, const io::ExportSetting*> targets;
@@ -415,10 +424,9 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     std::string key = std::filesystem::weakly_canonical(path, ec).string();
     if (ec) key = path;
     if (auto [it, fresh] = targets.emplace(key, &e); !fresh)
-      throw MeshingError(ErrorCode::InvalidInput,
-                         where_prefix(e.where) + "\"" + clip_path(e.file) +
-                             "\" is the same file as the export at line " +
-                             std::to_string(it->second->where.line));
+      throw MeshingError(ErrorCode::InvalidInput, where_prefix(e.where) + "\"" + clip_path(e.file) +
+                                                      "\" is the same file as the export at line " +
+                                                      std::to_string(it->second->where.line));
   }
   auto stage_start = Clock::now();
   RunResult result;
@@ -438,11 +446,13 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   stage_start = Clock::now();
   // The mesher's report already has the scaled Jacobian of every block;
   // evaluate again only when the journal checks metrics.
-  result.quality = job.quality.empty() ? result.mesh.quality
-                                       : assess_quality(result.mesh.mesh, result.model, job.quality);
+  result.quality = job.quality.empty()
+                       ? result.mesh.quality
+                       : assess_quality(result.mesh.mesh, result.model, job.quality);
   if (!job.quality.empty()) result.stages.push_back({"quality checks", seconds_since(stage_start)});
-  const bool deviates = std::any_of(result.mesh.verdicts.begin(), result.mesh.verdicts.end(),
-                                    [](const Verdict& v) { return v.state == Verdict::State::Deviates; });
+  const bool deviates =
+      std::any_of(result.mesh.verdicts.begin(), result.mesh.verdicts.end(),
+                  [](const Verdict& v) { return v.state == Verdict::State::Deviates; });
   if (result.quality.failed() || (deviates && !options.allow_partial)) {
     result.exports_skipped = !job.exports.empty();
     write_reports(job, options, result);
@@ -457,9 +467,11 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     export_options.groups = job.groups;
     export_options.skip_empty_groups = options.allow_partial;
     try {
-      batch.stage(resolve_path(job.base_dir, e.file), result.mesh.mesh, result.model, export_options);
+      batch.stage(resolve_path(job.base_dir, e.file), result.mesh.mesh, result.model,
+                  export_options);
     } catch (const MeshingError& err) {
-      throw MeshingError(err.code(), err.entity(), where_prefix(e.where) + err.message(), err.hint());
+      throw MeshingError(err.code(), err.entity(), where_prefix(e.where) + err.message(),
+                         err.hint());
     }
   }
   result.written = batch.commit();

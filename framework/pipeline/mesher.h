@@ -70,9 +70,9 @@ struct Warning {
 /// What became of one volume (3D) or surface (surface meshes).
 struct Verdict {
   enum class State {
-    Meshed,   ///< meshed and within the volume tolerance
-    Refused,  ///< no scheme, a scheme failed, or inverted elements
-    Deviates, ///< meshed, but its volume (area) is off the CAD's beyond the tolerance
+    Meshed,    ///< meshed and within the volume tolerance
+    Refused,   ///< no scheme, a scheme failed, or inverted elements
+    Deviates,  ///< meshed, but its volume (area) is off the CAD's beyond the tolerance
   };
   EntityRef entity;
   State state = State::Meshed;
@@ -86,13 +86,13 @@ struct MeshResult {
   intervals::IntervalSolution intervals;
   /// The mesh; with allow_partial, only the entities whose verdict is Meshed.
   mesh::MeshDB mesh;
-  std::vector<EntityTiming> timings;  ///< surfaces then volumes, by id
-  QualityReport quality;              ///< scaled Jacobian per block (no journal checks)
-  std::vector<Warning> warnings;      ///< in stage order, then by entity id
-  std::vector<StageTime> stages;      ///< plan, intervals, curves, surfaces, volumes, quality
-  std::vector<Verdict> verdicts;      ///< every volume (3D) or surface (2D), by id
-  std::vector<MeasureCheck> measures; ///< meshed volume / area against the CAD's
-  double volume_tolerance = 0.01;     ///< the tolerance the verdicts used
+  std::vector<EntityTiming> timings;   ///< surfaces then volumes, by id
+  QualityReport quality;               ///< scaled Jacobian per block (no journal checks)
+  std::vector<Warning> warnings;       ///< in stage order, then by entity id
+  std::vector<StageTime> stages;       ///< plan, intervals, curves, surfaces, volumes, quality
+  std::vector<Verdict> verdicts;       ///< every volume (3D) or surface (2D), by id
+  std::vector<MeasureCheck> measures;  ///< meshed volume / area against the CAD's
+  double volume_tolerance = 0.01;      ///< the tolerance the verdicts used
 
   /// True when some verdict is not Meshed (a partial or failed result).
   bool incomplete() const;
@@ -121,8 +121,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
                       const scheme::Registry& registry, const MeshOptions& options = {});
 
 struct RunResult {
-  geom::Model model;               ///< after the automatic decomposition, if any
-  decompose::Report decomposition; ///< the cuts made (empty when none were needed)
+  geom::Model model;                ///< after the automatic decomposition, if any
+  decompose::Report decomposition;  ///< the cuts made (empty when none were needed)
   MeshResult mesh;
   QualityReport quality;
   std::vector<std::string> written;  ///< export files written

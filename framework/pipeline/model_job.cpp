@@ -47,7 +47,8 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
       throw MeshingError(ErrorCode::InvalidInput,
                          options.origin + ": " + options.binary_option +
                              " is for .vtu, .msh, .stl and .ply outputs (Exodus is always binary), "
-                             "not '" + e + "'");
+                             "not '" +
+                             e + "'");
     }
     job.exports.push_back({e, {options.origin, 0, options.export_option}, options.binary});
   }

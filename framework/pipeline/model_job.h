@@ -48,7 +48,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options);
 struct PlanInput {
   geom::Model model;
   io::MeshSettings settings;
-  decompose::Report decomposition;  ///< the cuts made (none without a registry)
+  decompose::Report decomposition;         ///< the cuts made (none without a registry)
   std::vector<io::PluginSetting> plugins;  ///< a journal's <plugin> elements
 };
 

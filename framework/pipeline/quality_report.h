@@ -25,8 +25,8 @@ struct BlockReport {
 
 struct CheckOutcome {
   io::QualityCheck check;
-  std::size_t violations = 0;   ///< elements outside the thresholds, all blocks
-  bool failed = false;          ///< violations with action Fail
+  std::size_t violations = 0;  ///< elements outside the thresholds, all blocks
+  bool failed = false;         ///< violations with action Fail
 };
 
 struct QualityReport {

@@ -138,7 +138,8 @@ std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<
   // One element's nodes, gathered on the fly (no copy of the whole mesh).
   auto nodes_of = [&](std::size_t e, Vector3d* out) {
     for (int i = 0; i < n; ++i) {
-      out[i] = coords[static_cast<std::size_t>(connectivity[e * width + static_cast<std::size_t>(i)])];
+      out[i] =
+          coords[static_cast<std::size_t>(connectivity[e * width + static_cast<std::size_t>(i)])];
     }
   };
 
@@ -177,8 +178,8 @@ std::vector<double> evaluate(Metric metric, ElementType type, const std::vector<
                              const EvaluateOptions& options) {
   static_assert(sizeof(std::array<int, 8>) == 8 * sizeof(int), "rows are contiguous ints");
   return evaluate(metric, type, coords,
-                  connectivity.empty() ? nullptr : connectivity.front().data(),
-                  connectivity.size(), 8, options);
+                  connectivity.empty() ? nullptr : connectivity.front().data(), connectivity.size(),
+                  8, options);
 }
 
 }  // namespace cooperage::quality

@@ -19,9 +19,8 @@ using Eigen::Vector3d;
 constexpr double kTiny = std::numeric_limits<double>::min();  // VERDICT_DBL_MIN
 
 // Corner i: base node and the three neighbours (columns of A_i), see header.
-constexpr int kCorner[8][4] = {
-    {0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
-    {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
+constexpr int kCorner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 2, 7},
+                               {4, 7, 5, 0}, {5, 4, 6, 1}, {6, 5, 7, 2}, {7, 6, 4, 3}};
 
 constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
@@ -99,8 +98,8 @@ double hex_max_aspect_frobenius(const HexNodes& p) {
     const double det = t.det();
     if (det <= kTiny) return kDegenerate;
     const double frob2 = t.a.squaredNorm() + t.b.squaredNorm() + t.c.squaredNorm();
-    const double adj2 = t.a.cross(t.b).squaredNorm() + t.b.cross(t.c).squaredNorm() +
-                        t.c.cross(t.a).squaredNorm();
+    const double adj2 =
+        t.a.cross(t.b).squaredNorm() + t.b.cross(t.c).squaredNorm() + t.c.cross(t.a).squaredNorm();
     worst = std::max(worst, std::sqrt(frob2 * adj2) / det);
   }
   return std::min(worst / 3.0, kDegenerate);

@@ -41,7 +41,8 @@ std::string_view to_string(ElementType type) {
 }
 
 std::optional<ElementType> element_type_from_string(std::string_view name) {
-  for (ElementType t : {ElementType::Tri, ElementType::Quad, ElementType::Wedge, ElementType::Hex}) {
+  for (ElementType t :
+       {ElementType::Tri, ElementType::Quad, ElementType::Wedge, ElementType::Hex}) {
     if (to_string(t) == name) return t;
   }
   return std::nullopt;

@@ -30,12 +30,12 @@ enum class Metric {
   AspectFrobenius,  ///< hex/quad/wedge: max aspect Frobenius; tri: aspect Frobenius
   EdgeRatio,
   Shape,
-  RelativeSize,     ///< Verdict's relative_size_squared
+  RelativeSize,  ///< Verdict's relative_size_squared
 };
 
 /// All metrics in enum order (for loops in reports and tests).
 inline constexpr Metric kAllMetrics[] = {
-    Metric::ScaledJacobian, Metric::Jacobian,  Metric::Skew,  Metric::Taper,
+    Metric::ScaledJacobian,  Metric::Jacobian,  Metric::Skew,  Metric::Taper,
     Metric::AspectFrobenius, Metric::EdgeRatio, Metric::Shape, Metric::RelativeSize};
 
 /// "scaled_jacobian", "jacobian", "skew", "taper", "aspect_frobenius",

@@ -70,12 +70,14 @@ MetricSummary summarize(Metric metric, const std::vector<double>& values,
   // Median by selection, O(n): the upper middle, and for an even count the
   // largest value below it.
   const std::size_t n = sorted.size();
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2),
+                   sorted.end());
   const double upper = sorted[n / 2];
   if (n % 2 == 1) {
     s.median = upper;
   } else {
-    const double lower = *std::max_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2));
+    const double lower =
+        *std::max_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2));
     s.median = 0.5 * (lower + upper);
   }
   return s;

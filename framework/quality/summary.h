@@ -13,8 +13,8 @@ namespace cooperage::quality {
 
 /// Statistics of one metric over many elements.
 struct MetricSummary {
-  std::string metric;           ///< to_string(Metric), e.g. "scaled_jacobian"
-  std::size_t count = 0;        ///< number of values
+  std::string metric;     ///< to_string(Metric), e.g. "scaled_jacobian"
+  std::size_t count = 0;  ///< number of values
   double min = 0.0, mean = 0.0, max = 0.0, median = 0.0;  ///< 0 when count == 0
   /// 10 equal bins over [histogram_lo, histogram_hi]; values outside the
   /// range (including kDegenerate sentinels) are counted in the end bins;

@@ -46,8 +46,8 @@ double tri_jacobian(const TriNodes& p, const Vector3d& normal) {
 }
 
 double tri_aspect_frobenius(const TriNodes& p) {
-  const double sum = (p[1] - p[0]).squaredNorm() + (p[2] - p[1]).squaredNorm() +
-                     (p[0] - p[2]).squaredNorm();
+  const double sum =
+      (p[1] - p[0]).squaredNorm() + (p[2] - p[1]).squaredNorm() + (p[0] - p[2]).squaredNorm();
   const double area2 = area_vector(p).norm();
   if (area2 == 0.0) return kDegenerate;
   return std::min(sum / (2.0 * kSqrt3 * area2), kDegenerate);

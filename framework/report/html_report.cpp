@@ -52,14 +52,10 @@ std::string plural(std::size_t n, const std::string& word) {
 
 std::string type_word(ElementType t) {
   switch (t) {
-    case ElementType::Hex:
-      return "hex";
-    case ElementType::Wedge:
-      return "wedge";
-    case ElementType::Quad:
-      return "quad";
-    case ElementType::Tri:
-      return "triangle";
+    case ElementType::Hex: return "hex";
+    case ElementType::Wedge: return "wedge";
+    case ElementType::Quad: return "quad";
+    case ElementType::Tri: return "triangle";
   }
   return "element";
 }

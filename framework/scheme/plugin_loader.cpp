@@ -17,8 +17,9 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& library, const std::string& what,
                        const std::string& reason) {
-  throw MeshingError(ErrorCode::InvalidInput,
-                     "plug-in " + library + (what.empty() ? "" : " (" + what + ")") + ": " + reason);
+  throw MeshingError(
+      ErrorCode::InvalidInput,
+      "plug-in " + library + (what.empty() ? "" : " (" + what + ")") + ": " + reason);
 }
 
 }  // namespace
@@ -46,9 +47,10 @@ void load_plugin(Registry& registry, const std::string& path, const std::string&
   const int version = abi();
   if (version != kPluginAbiVersion) {
     fail(library, what,
-         "was built for plug-in ABI version " + std::to_string(version) + ", but this cooperage "
-             "loads version " + std::to_string(kPluginAbiVersion) +
-             "; rebuild the plug-in against this Cooperage");
+         "was built for plug-in ABI version " + std::to_string(version) +
+             ", but this cooperage "
+             "loads version " +
+             std::to_string(kPluginAbiVersion) + "; rebuild the plug-in against this Cooperage");
   }
   auto register_schemes =
       reinterpret_cast<PluginRegisterFunction>(dlsym(handle, kPluginRegisterSymbol));
@@ -75,8 +77,8 @@ std::vector<std::string> plugin_path_libraries(const std::string& value) {
     if (entry.empty()) continue;
     std::error_code ec;
     if (!fs::exists(entry, ec)) {
-      throw MeshingError(ErrorCode::InvalidInput, std::string(kPluginPathVariable) + ": \"" +
-                                                      entry + "\" does not exist");
+      throw MeshingError(ErrorCode::InvalidInput,
+                         std::string(kPluginPathVariable) + ": \"" + entry + "\" does not exist");
     }
     if (!fs::is_directory(entry, ec)) {
       out.push_back(entry);

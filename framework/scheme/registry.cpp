@@ -21,19 +21,21 @@ const typename Entries::value_type* find_entry(const Entries& entries, std::stri
 }  // namespace
 
 void Registry::check_name(int dim, std::string_view name) const {
-  const std::string what = std::string(dimension_word(dim)) + " scheme \"" + std::string(name) + "\"";
+  const std::string what =
+      std::string(dimension_word(dim)) + " scheme \"" + std::string(name) + "\"";
   const bool valid_chars = std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
   if (name.empty() || name == "auto" || !valid_chars) {
     throw MeshingError(ErrorCode::InvalidInput,
-                       what + " has an invalid name: a name is made of letters, digits, '_', '-' "
-                              "and '.', and is not \"auto\"");
+                       what +
+                           " has an invalid name: a name is made of letters, digits, '_', '-' "
+                           "and '.', and is not \"auto\"");
   }
   const std::string taken = origin(dim, name);
   if (!taken.empty()) {
-    throw MeshingError(ErrorCode::InvalidInput, what + " from " + origin_ +
-                                                    " is already registered (" + taken + ")");
+    throw MeshingError(ErrorCode::InvalidInput,
+                       what + " from " + origin_ + " is already registered (" + taken + ")");
   }
 }
 

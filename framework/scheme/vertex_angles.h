@@ -31,9 +31,9 @@ std::optional<VertexType> classify_angle(double degrees);
 
 /// A junction of a loop: between uses[k-1] (incoming) and uses[k] (outgoing).
 struct LoopCorner {
-  int use_index = 0;      ///< k: the outgoing use
-  int vertex = 0;         ///< model vertex id
-  double angle = 0.0;     ///< interior angle measured inside the face [degrees], (0, 360)
+  int use_index = 0;               ///< k: the outgoing use
+  int vertex = 0;                  ///< model vertex id
+  double angle = 0.0;              ///< interior angle measured inside the face [degrees], (0, 360)
   std::optional<VertexType> type;  ///< classify_angle(angle)
 };
 

@@ -21,11 +21,9 @@ bool is_input_error(ErrorCode code) {
     case ErrorCode::GeometryError:
     case ErrorCode::NotSupported:
     case ErrorCode::NotApplicable:
-    case ErrorCode::Infeasible:
-      return true;
+    case ErrorCode::Infeasible: return true;
     case ErrorCode::MeshingFailed:
-    case ErrorCode::Internal:
-      return false;
+    case ErrorCode::Internal: return false;
   }
   return false;
 }

@@ -34,28 +34,20 @@ void append_quality(std::vector<double>& out, const mesh::MeshDB& db, quality::M
 
 const char* meshio_name(CellKind kind) {
   switch (kind) {
-    case CellKind::Hexahedron:
-      return "hexahedron";
-    case CellKind::Wedge:
-      return "wedge";
-    case CellKind::Quad:
-      return "quad";
-    case CellKind::Triangle:
-      return "triangle";
+    case CellKind::Hexahedron: return "hexahedron";
+    case CellKind::Wedge: return "wedge";
+    case CellKind::Quad: return "quad";
+    case CellKind::Triangle: return "triangle";
   }
   return "";
 }
 
 int corner_count(CellKind kind) {
   switch (kind) {
-    case CellKind::Hexahedron:
-      return 8;
-    case CellKind::Wedge:
-      return 6;
-    case CellKind::Quad:
-      return 4;
-    case CellKind::Triangle:
-      return 3;
+    case CellKind::Hexahedron: return 8;
+    case CellKind::Wedge: return 6;
+    case CellKind::Quad: return 4;
+    case CellKind::Triangle: return 3;
   }
   return 0;
 }

@@ -45,8 +45,7 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
   py::gil_scoped_release release;
   const io::Job job = make_job();
   scheme::Registry registry;
-  register_schemes(registry,
-                   job.plugins);
+  register_schemes(registry, job.plugins);
   result->run = pipeline::run_job(job, registry, selector::mesh_options(dim, threads));
   result->groups = job.groups;
   return result;

@@ -13,7 +13,8 @@ Expr combine(const Expr& a, int sa, const Expr& b, int sb) {
   Expr out = a;
   for (auto& [k, v] : out) v *= sa;
   for (const auto& [k, v] : b) out[k] += sb * v;
-  for (auto it = out.begin(); it != out.end();) it = it->second == 0 ? out.erase(it) : std::next(it);
+  for (auto it = out.begin(); it != out.end();)
+    it = it->second == 0 ? out.erase(it) : std::next(it);
   return out;
 }
 
@@ -31,7 +32,8 @@ std::string ids(const std::vector<int>& v) {
 
 }  // namespace
 
-std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice, const SweepOrder& order,
+std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice,
+                                                 const SweepOrder& order,
                                                  std::vector<size_t>* extra) {
   const size_t n = static_cast<size_t>(lattice.classes);
   std::vector<std::vector<size_t>> at(n);
@@ -77,7 +79,8 @@ std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice, con
 // has its layers; at least one layer per barrel).
 std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const SideLattice& lattice,
                                             const SweepOrder& order, const BarrelTree& tree,
-                                            const std::set<int>& even_caps, const std::string& tag) {
+                                            const std::set<int>& even_caps,
+                                            const std::string& tag) {
   std::vector<IntervalRow> rows;
   std::vector<size_t> extra;
   const auto lambda = layer_potentials(lattice, order, &extra);
@@ -97,21 +100,25 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
     const Expr diff = combine(lambda[static_cast<size_t>(order.chain_upper[i])], 1,
                               lambda[static_cast<size_t>(order.chain_lower[i])], -1);
     add(combine(diff, 1, chain_sum(c), -1), intervals::Sense::Equal, 0,
-        "linking curves " + ids(c.curves) + " of side surface " + std::to_string(c.face) + " = the layers they span");
+        "linking curves " + ids(c.curves) + " of side surface " + std::to_string(c.face) +
+            " = the layers they span");
   }
   for (size_t b = 0; b < tree.barrels.size(); ++b) {
     const BarrelNode& node = tree.barrels[b];
     const std::string name = "barrel " + std::to_string(b + 1);
     for (const auto* classes : {&node.upper_classes, &node.lower_classes}) {
       for (size_t k = 1; k < classes->size(); ++k) {
-        add(combine(lambda[static_cast<size_t>((*classes)[k])], 1, lambda[static_cast<size_t>(classes->front())], -1),
+        add(combine(lambda[static_cast<size_t>((*classes)[k])], 1,
+                    lambda[static_cast<size_t>(classes->front())], -1),
             intervals::Sense::Equal, 0,
-            name + ": its " + (classes == &node.upper_classes ? "upper" : "lower") + " cap on one layer");
+            name + ": its " + (classes == &node.upper_classes ? "upper" : "lower") +
+                " cap on one layer");
       }
     }
     add(combine(lambda[static_cast<size_t>(node.upper_classes.front())], 1,
                 lambda[static_cast<size_t>(node.lower_classes.front())], -1),
-        intervals::Sense::GreaterEqual, 1, name + " (sides " + std::to_string(node.sides.front()) + ", ...) has a layer");
+        intervals::Sense::GreaterEqual, 1,
+        name + " (sides " + std::to_string(node.sides.front()) + ", ...) has a layer");
   }
   for (int cap : even_caps) {
     {
@@ -119,8 +126,9 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
       for (size_t l = 0; l < loops.size(); ++l) {
         Expr e;
         for (const UseFact& u : loops[l]) e[u.curve] = 1;
-        rows.push_back({std::move(e), intervals::Sense::Equal, 0, true,
-                        tag + ": loop " + std::to_string(l) + " of cap " + std::to_string(cap) + " even"});
+        rows.push_back(
+            {std::move(e), intervals::Sense::Equal, 0, true,
+             tag + ": loop " + std::to_string(l) + " of cap " + std::to_string(cap) + " even"});
       }
     }
   }

@@ -33,7 +33,8 @@ struct IntervalRow {
 /// Layer potentials: per level class, curve coefficients of lambda(class)
 /// - lambda(root of its component); `extra` receives the chains left out
 /// of the spanning tree (indices into lattice.chains).
-std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice, const SweepOrder& order,
+std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice,
+                                                 const SweepOrder& order,
                                                  std::vector<size_t>* extra = nullptr);
 
 /// The rows; every loop of `even_caps` is even; `tag` starts every label

@@ -43,7 +43,8 @@ std::vector<int> node_faces(const SweepState& s, int g) {
 std::string SweepState::barrel_name(size_t b) const {
   const BarrelNode& n = plan.tree.barrels[b];
   std::string name = "barrel " + std::to_string(b + 1) + " (sides ";
-  for (size_t k = 0; k < n.sides.size() && k < 4; ++k) name += (k ? ", " : "") + std::to_string(n.sides[k]);
+  for (size_t k = 0; k < n.sides.size() && k < 4; ++k)
+    name += (k ? ", " : "") + std::to_string(n.sides[k]);
   return name + (n.sides.size() > 4 ? ", ...)" : ")");
 }
 
@@ -61,13 +62,15 @@ void form_ribs(SweepState& s) {
     const long span = value(s, lambda[static_cast<size_t>(p.order.chain_upper[i])]) -
                       value(s, lambda[static_cast<size_t>(p.order.chain_lower[i])]);
     if (sum != span) {
-      fail(s.vid, "the linking curves of side surface " + std::to_string(c.face) + " have " + std::to_string(sum) +
-                      " intervals where the barrels need " + std::to_string(span));
+      fail(s.vid, "the linking curves of side surface " + std::to_string(c.face) + " have " +
+                      std::to_string(sum) + " intervals where the barrels need " +
+                      std::to_string(span));
     }
   }
   std::set<int> cap_nodes;
   for (const auto& [cap, where] : tree.cap_end) {
-    for (const auto& loop : loop_nodes(s.model, s.db, s.vid, cap)) cap_nodes.insert(loop.begin(), loop.end());
+    for (const auto& loop : loop_nodes(s.model, s.db, s.vid, cap))
+      cap_nodes.insert(loop.begin(), loop.end());
   }
   s.barrels.assign(tree.barrels.size(), {});
   s.interface_loops.assign(tree.interfaces.size(), {});
@@ -78,13 +81,16 @@ void form_ribs(SweepState& s) {
     const long top = value(s, lambda[static_cast<size_t>(node.upper_classes.front())]);
     const long bottom = value(s, lambda[static_cast<size_t>(node.lower_classes.front())]);
     for (int c : node.upper_classes) {
-      if (value(s, lambda[static_cast<size_t>(c)]) != top) fail(s.vid, s.barrel_name(b) + ": its upper cap is not on one layer");
+      if (value(s, lambda[static_cast<size_t>(c)]) != top)
+        fail(s.vid, s.barrel_name(b) + ": its upper cap is not on one layer");
     }
     for (int c : node.lower_classes) {
-      if (value(s, lambda[static_cast<size_t>(c)]) != bottom) fail(s.vid, s.barrel_name(b) + ": its lower cap is not on one layer");
+      if (value(s, lambda[static_cast<size_t>(c)]) != bottom)
+        fail(s.vid, s.barrel_name(b) + ": its lower cap is not on one layer");
     }
     st.layers = static_cast<int>(top - bottom);
-    if (st.layers < 1) fail(s.vid, s.barrel_name(b) + " has " + std::to_string(st.layers) + " layers");
+    if (st.layers < 1)
+      fail(s.vid, s.barrel_name(b) + " has " + std::to_string(st.layers) + " layers");
     // The upper cap: its pieces' loops merged (shared edges cancel).
     std::vector<std::vector<int>> loops;
     for (const EndPiece& e : node.upper) {
@@ -99,16 +105,20 @@ void form_ribs(SweepState& s) {
     }
     BarrelInput bin;
     bin.upper_loops = node.upper.size() == 1 ? loops : merge_loops(loops, {});
-    if (bin.upper_loops.empty()) fail(s.vid, s.barrel_name(b) + ": its upper subcaps do not form a cap bounded by simple loops");
+    if (bin.upper_loops.empty())
+      fail(s.vid,
+           s.barrel_name(b) + ": its upper subcaps do not form a cap bounded by simple loops");
     std::set<int> front;
     for (const auto& l : bin.upper_loops) front.insert(l.begin(), l.end());
     for (int g : used) {
       if (!front.count(g)) bin.blocked_nodes.push_back(g);
     }
     for (int side : node.sides) {
-      if (!s.db.surface_meshed(side)) fail(s.vid, "side surface " + std::to_string(side) + " is not meshed");
+      if (!s.db.surface_meshed(side))
+        fail(s.vid, "side surface " + std::to_string(side) + " is not meshed");
       const mesh::SurfaceMeshData& m = s.db.surface(side);
-      if (!m.tris.empty()) fail(s.vid, "side surface " + std::to_string(side) + " has triangles; ribs need quads");
+      if (!m.tris.empty())
+        fail(s.vid, "side surface " + std::to_string(side) + " has triangles; ribs need quads");
       bin.side_quads.insert(bin.side_quads.end(), m.quads.begin(), m.quads.end());
     }
     bin.stop_nodes.assign(cap_nodes.begin(), cap_nodes.end());
@@ -139,7 +149,8 @@ void form_ribs(SweepState& s) {
     std::vector<std::vector<int>> all = st.lower_loops;
     all.insert(all.end(), lower_caps.begin(), lower_caps.end());
     const auto virtual_loops = lower_caps.empty() ? st.lower_loops : merge_loops(all, {});
-    if (virtual_loops.empty()) fail(s.vid, s.barrel_name(b) + ": its virtual lower cap is not bounded by simple loops");
+    if (virtual_loops.empty())
+      fail(s.vid, s.barrel_name(b) + ": its virtual lower cap is not bounded by simple loops");
     if (below.size() == 1) {
       s.interface_loops[static_cast<size_t>(below.front())] = virtual_loops;
       continue;
@@ -148,7 +159,8 @@ void form_ribs(SweepState& s) {
     for (const auto& l : virtual_loops) {
       int owner = -1;
       for (int i : below) {
-        const BarrelNode& y = tree.barrels[static_cast<size_t>(tree.interfaces[static_cast<size_t>(i)].below)];
+        const BarrelNode& y =
+            tree.barrels[static_cast<size_t>(tree.interfaces[static_cast<size_t>(i)].below)];
         std::set<int> faces(y.sides.begin(), y.sides.end());
         for (const EndPiece& e : y.upper) {
           if (e.cap) faces.insert(e.cap);
@@ -159,7 +171,8 @@ void form_ribs(SweepState& s) {
           }
         }
       }
-      if (owner < 0) fail(s.vid, s.barrel_name(b) + ": a loop of its virtual lower cap touches no barrel below");
+      if (owner < 0)
+        fail(s.vid, s.barrel_name(b) + ": a loop of its virtual lower cap touches no barrel below");
       s.interface_loops[static_cast<size_t>(owner)].push_back(l);
     }
   }
@@ -178,18 +191,21 @@ void make_charts(SweepState& s) {
     st.to_lower = least_squares_map(up.data(), lo.data(), up.size(), st.loop_starts);
     st.to_upper = least_squares_map(lo.data(), up.data(), lo.size(), st.loop_starts);
     if (!st.to_lower.ok || !st.to_upper.ok) {
-      fail(s.vid, s.barrel_name(b) + ": the least-squares map between its upper and lower rings is singular");
+      fail(s.vid, s.barrel_name(b) +
+                      ": the least-squares map between its upper and lower rings is singular");
     }
     Vec3 d = st.to_lower.to_centre - st.to_lower.from_centre;
     if (!(d.norm() > 0)) fail(s.vid, s.barrel_name(b) + ": its two rings have one centre");
     d.normalize();
     Vec3 e = Vec3::UnitX();
-    if (std::abs(d.x()) > 0.6) e = std::abs(d.y()) < std::abs(d.z()) ? Vec3::UnitY() : Vec3::UnitZ();
+    if (std::abs(d.x()) > 0.6)
+      e = std::abs(d.y()) < std::abs(d.z()) ? Vec3::UnitY() : Vec3::UnitZ();
     st.d = d;
     st.u = (e - e.dot(d) * d).normalized();
     st.v = d.cross(st.u);  // u x v = d: counter-clockwise about the sweep direction
     st.level = st.to_lower.from_centre.dot(d);
-    for (const auto& rib : st.ribs) st.rib_pairs.push_back({s.existing(rib.front()), s.existing(rib.back())});
+    for (const auto& rib : st.ribs)
+      st.rib_pairs.push_back({s.existing(rib.front()), s.existing(rib.back())});
   }
 }
 

@@ -28,7 +28,8 @@ std::set<int> region_faces(const Slab& slab, size_t r) {
 int region_of_face(const Slab& slab, int f) {
   for (size_t c = 0; c < slab.cycles.size(); ++c) {
     const auto& faces = slab.cycles[c].faces;
-    if (std::binary_search(faces.begin(), faces.end(), f)) return region_of_cycle(slab, static_cast<int>(c));
+    if (std::binary_search(faces.begin(), faces.end(), f))
+      return region_of_cycle(slab, static_cast<int>(c));
   }
   return -1;
 }
@@ -36,8 +37,8 @@ int region_of_face(const Slab& slab, int f) {
 }  // namespace
 
 // cite: Blacker 1996, sec. 4 (barrel formation; the barrels are a unique set).
-BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order,
-                            const SlabRegions& slabs) {
+BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice,
+                            const SweepOrder& order, const SlabRegions& slabs) {
   BarrelTree out;
   const double tol = slabs.tolerance;
   const size_t ns = slabs.slabs.size();
@@ -77,12 +78,12 @@ BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice
     const size_t i = level_index(order.height[static_cast<size_t>(lattice.cap_class.at(cap))]);
     const bool upper = order.upper.at(cap);
     if (i >= slabs.levels.size() || (upper && i >= ns) || (!upper && i == 0)) {
-      out.why = "cap " + std::to_string(cap) + " has no volume on its " + (upper ? "lower" : "upper") +
-                " side along the sweep";
+      out.why = "cap " + std::to_string(cap) + " has no volume on its " +
+                (upper ? "lower" : "upper") + " side along the sweep";
       return out;
     }
-    const size_t k = upper ? i : i - 1;           // the slab on its material side
-    const size_t other = upper ? i - 1 : i;       // the slab on its void side (if any)
+    const size_t k = upper ? i : i - 1;      // the slab on its material side
+    const size_t other = upper ? i - 1 : i;  // the slab on its void side (if any)
     std::set<int> regions = contact_regions(cap, k);
     if (regions.empty() && other < ns && (upper ? i > 0 : i < ns)) {
       // A floor or a ceiling inside a hole: the region continuing the one
@@ -214,16 +215,20 @@ BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice
       for (const CapContact& c : lattice.contacts) {
         const auto it = out.cap_end.find(c.cap);
         if (it == out.cap_end.end()) continue;
-        if (it->second == std::make_pair(static_cast<int>(y), true) && fx.count(c.face)) connected = true;
-        if (it->second == std::make_pair(static_cast<int>(x), false) && fy.count(c.face)) connected = true;
+        if (it->second == std::make_pair(static_cast<int>(y), true) && fx.count(c.face))
+          connected = true;
+        if (it->second == std::make_pair(static_cast<int>(x), false) && fy.count(c.face))
+          connected = true;
       }
       if (!connected) continue;
       out.interfaces.push_back({static_cast<int>(x), static_cast<int>(y)});
     }
   }
   for (size_t i = 0; i < out.interfaces.size(); ++i) {
-    out.barrels[static_cast<size_t>(out.interfaces[i].above)].lower.push_back({0, static_cast<int>(i)});
-    out.barrels[static_cast<size_t>(out.interfaces[i].below)].upper.push_back({0, static_cast<int>(i)});
+    out.barrels[static_cast<size_t>(out.interfaces[i].above)].lower.push_back(
+        {0, static_cast<int>(i)});
+    out.barrels[static_cast<size_t>(out.interfaces[i].below)].upper.push_back(
+        {0, static_cast<int>(i)});
   }
   // Level classes of the ends.
   for (BarrelNode& b : out.barrels) {

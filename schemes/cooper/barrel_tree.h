@@ -54,7 +54,7 @@ struct BarrelTree {
   std::map<int, std::pair<int, bool>> cap_end;
 };
 
-BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order,
-                            const SlabRegions& slabs);
+BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice,
+                            const SweepOrder& order, const SlabRegions& slabs);
 
 }  // namespace cooperage::cooper

@@ -24,8 +24,9 @@ std::set<int> curve_set(const std::vector<UseFact>& loop) {
 std::string vec_text(const geom::Vec3& v) {
   std::ostringstream s;
   s.precision(3);
-  s << "(" << (std::abs(v.x()) < 5e-4 ? 0.0 : v.x()) << ", " << (std::abs(v.y()) < 5e-4 ? 0.0 : v.y()) << ", "
-    << (std::abs(v.z()) < 5e-4 ? 0.0 : v.z()) << ")";
+  s << "(" << (std::abs(v.x()) < 5e-4 ? 0.0 : v.x()) << ", "
+    << (std::abs(v.y()) < 5e-4 ? 0.0 : v.y()) << ", " << (std::abs(v.z()) < 5e-4 ? 0.0 : v.z())
+    << ")";
   return s.str();
 }
 
@@ -67,7 +68,8 @@ std::vector<int> hole_fillers(const VolumeFacts& facts, int host) {
       bool flat = true;
       for (int c : hole) {
         const auto it = facts.dihedral.find(c);
-        flat = flat && it != facts.dihedral.end() && std::abs(it->second - 180.0) <= kSubcapFlatness;
+        flat =
+            flat && it != facts.dihedral.end() && std::abs(it->second - 180.0) <= kSubcapFlatness;
       }
       if (flat) {
         out.push_back(g.id);
@@ -110,8 +112,8 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
   }
   for (int t : targets) {
     if (host_of(t) != t) {
-      why = "hinted target surface " + std::to_string(t) + " is a subcap of surface " + std::to_string(host_of(t)) +
-            "; a composite cap can only be the source";
+      why = "hinted target surface " + std::to_string(t) + " is a subcap of surface " +
+            std::to_string(host_of(t)) + "; a composite cap can only be the source";
       return {};
     }
   }
@@ -124,7 +126,8 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
     free.push_back(f.id);
     CapSize s;
     std::vector<int> members{f.id};
-    if (subcaps.count(f.id)) members.insert(members.end(), subcaps[f.id].begin(), subcaps[f.id].end());
+    if (subcaps.count(f.id))
+      members.insert(members.end(), subcaps[f.id].begin(), subcaps[f.id].end());
     std::set<std::set<int>> loops;  // the composite's boundary: loops not shared by two members
     std::map<std::set<int>, int> count;
     for (int m : members) {
@@ -164,11 +167,14 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
     }
   }
   std::stable_sort(pairs.begin(), pairs.end(), [&](const auto& x, const auto& y) {
-    const int lx = size[x.first].loops + size[x.second].loops, ly = size[y.first].loops + size[y.second].loops;
+    const int lx = size[x.first].loops + size[x.second].loops,
+              ly = size[y.first].loops + size[y.second].loops;
     if (lx != ly) return lx > ly;
-    const int cx = size[x.first].curves + size[x.second].curves, cy = size[y.first].curves + size[y.second].curves;
+    const int cx = size[x.first].curves + size[x.second].curves,
+              cy = size[y.first].curves + size[y.second].curves;
     if (cx != cy) return cx > cy;
-    if (const int c = compare_area(size[x.first].area + size[x.second].area, size[y.first].area + size[y.second].area)) {
+    if (const int c = compare_area(size[x.first].area + size[x.second].area,
+                                   size[y.first].area + size[y.second].area)) {
       return c > 0;
     }
     return x < y;
@@ -189,9 +195,11 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
       if (hinted_source == tgt || hinted_target == src) std::swap(src, tgt);
       fixed = true;
     }
-    if (!fixed && size[src].holes > 0 && size[tgt].holes > kHoleGrowth * size[src].holes) std::swap(src, tgt);
+    if (!fixed && size[src].holes > 0 && size[tgt].holes > kHoleGrowth * size[src].holes)
+      std::swap(src, tgt);
     if (subcaps.count(tgt)) {  // a hint asks a composite to be the target
-      why = "hinted target surface " + std::to_string(tgt) + " has subcaps; a composite cap can only be the source";
+      why = "hinted target surface " + std::to_string(tgt) +
+            " has subcaps; a composite cap can only be the source";
       continue;
     }
     for (int flip = 0; flip < (fixed ? 1 : 2); ++flip) {
@@ -205,7 +213,8 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
         if (subcaps.count(h)) c.caps.insert(subcaps[h].begin(), subcaps[h].end());
       }
       c.anchor.upper_cap = c.source;
-      c.label = "one barrel from surface " + std::to_string(c.source) + " to surface " + std::to_string(c.target);
+      c.label = "one barrel from surface " + std::to_string(c.source) + " to surface " +
+                std::to_string(c.target);
       out.push_back(std::move(c));
     }
   }
@@ -217,7 +226,8 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
   return out;
 }
 
-std::vector<geom::Vec3> candidate_axes(const VolumeFacts& facts, const std::optional<geom::Vec3>& hint) {
+std::vector<geom::Vec3> candidate_axes(const VolumeFacts& facts,
+                                       const std::optional<geom::Vec3>& hint) {
   std::vector<geom::Vec3> axes;
   auto add = [&](geom::Vec3 d) {
     if (!(d.norm() > 0)) return;

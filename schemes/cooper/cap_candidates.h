@@ -30,11 +30,11 @@ struct CapCandidate {
   Kind kind = Kind::Pair;
   std::set<int> caps;
   OrderAnchor anchor;
-  int source = 0;          ///< Pair: the upper cap (its composite subcaps follow it)
-  int target = 0;          ///< Pair: the lower cap
+  int source = 0;  ///< Pair: the upper cap (its composite subcaps follow it)
+  int target = 0;  ///< Pair: the lower cap
   /// Pair: the orientation is fixed (hinted, composite): no flip.
   bool fixed = false;
-  std::string label;       ///< "caps 3 and 5", "axis (0, 0, 1)", ...
+  std::string label;  ///< "caps 3 and 5", "axis (0, 0, 1)", ...
 };
 
 /// Faces filling a hole loop of `host` (one outer loop equal to the hole's
@@ -48,7 +48,8 @@ std::vector<CapCandidate> pair_candidates(const VolumeFacts& facts, const std::v
 
 /// Axes in order: `hint` alone when given, else normals of planar faces with
 /// holes, then of planar faces. Unit vectors, deduplicated up to sign.
-std::vector<geom::Vec3> candidate_axes(const VolumeFacts& facts, const std::optional<geom::Vec3>& hint);
+std::vector<geom::Vec3> candidate_axes(const VolumeFacts& facts,
+                                       const std::optional<geom::Vec3>& hint);
 
 /// The caps of an axis: the faces facing it within kCapFacing degrees.
 std::set<int> caps_facing(const VolumeFacts& facts, const geom::Vec3& axis);

@@ -25,8 +25,7 @@ geom::Sense use_sense(const geom::Surface& surface, int curve) {
 
 }  // namespace
 
-double cap_dihedral_degrees(const geom::Model& model, int volume_id, int cap, int side,
-                            int curve) {
+double cap_dihedral_degrees(const geom::Model& model, int volume_id, int cap, int side, int curve) {
   const geom::Curve& c = model.curve(curve);
   const geom::Surface& sc = model.surface(cap);
   const geom::Surface& ss = model.surface(side);

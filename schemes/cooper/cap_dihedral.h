@@ -15,7 +15,6 @@ namespace cooperage::cooper {
 /// (N_f its natural normal, t_f the tangent along f's loop use); the angle
 /// between d_cap and d_side is the dihedral when d_side points against the
 /// cap's outward normal (convex edge), else its complement to 360.
-double cap_dihedral_degrees(const geom::Model& model, int volume_id, int cap, int side,
-                            int curve);
+double cap_dihedral_degrees(const geom::Model& model, int volume_id, int cap, int side, int curve);
 
 }  // namespace cooperage::cooper

@@ -44,7 +44,7 @@ CapRoles cap_roles(const VolumeFacts& facts, const SweepOrder& order, const Barr
 /// Footprint test used by cap_roles: the caps of `facts` into whose region
 /// (projected along `down`) a loop of another cap of `caps` reaches deeper
 /// than `tolerance`.
-std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps, const geom::Vec3& down,
-                          double tolerance);
+std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps,
+                          const geom::Vec3& down, double tolerance);
 
 }  // namespace cooperage::cooper

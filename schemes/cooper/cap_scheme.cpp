@@ -7,8 +7,8 @@ namespace {
 // name, so a plug-in scheme serving the role competes on its score.
 
 std::string no_scheme(int surface, const char* what, const std::string& reasons) {
-  return "no " + std::string(what) + " scheme meshes cap surface " + std::to_string(surface) + " (" +
-         reasons + ")";
+  return "no " + std::string(what) + " scheme meshes cap surface " + std::to_string(surface) +
+         " (" + reasons + ")";
 }
 
 // Mixed mode: the best-scoring scheme serving mixed caps, where an all-quad
@@ -17,8 +17,8 @@ std::string no_scheme(int surface, const char* what, const std::string& reasons)
 // face where it would squash a corner goes to quad_dominant (pave with its
 // quads below that quality split into triangles). Plain pave does not serve
 // mixed caps: it keeps a poor quad where mixed mode wants two triangles.
-std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
-                             std::string& why, const scheme::Settings* settings) {
+std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& registry,
+                             int surface, std::string& why, const scheme::Settings* settings) {
   const scheme::SurfaceView view{model, surface, nullptr, settings};
   const scheme::SurfaceScheme* best = nullptr;
   double best_score = -1.0;
@@ -37,8 +37,8 @@ std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& r
     }
   }
   if (best) return std::string(best->name());
-  why = no_scheme(surface, "mixed-cap", candidates.empty() ? "no registered surface scheme serves mixed caps"
-                                                            : reasons);
+  why = no_scheme(surface, "mixed-cap",
+                  candidates.empty() ? "no registered surface scheme serves mixed caps" : reasons);
   return {};
 }
 
@@ -52,9 +52,9 @@ std::string cap_scheme(const geom::Model& model, const scheme::Registry& registr
   // pave); ties keep the registration order map, submap, pave, plug-ins.
   // Wedge mode: the best triangle scheme (tri).
   const bool wedge = elements == Elements::Wedge;
-  const scheme::RoleChoice c = scheme::best_surface_scheme(
-      registry, wedge ? scheme::Role::TriCap : scheme::Role::QuadCap,
-      scheme::SurfaceView{model, surface, nullptr, settings});
+  const scheme::RoleChoice c =
+      scheme::best_surface_scheme(registry, wedge ? scheme::Role::TriCap : scheme::Role::QuadCap,
+                                  scheme::SurfaceView{model, surface, nullptr, settings});
   if (c.scheme) return std::string(c.scheme->name());
   why = no_scheme(surface, wedge ? "triangle" : "quad", c.reasons);
   return {};

@@ -39,7 +39,8 @@ std::pair<size_t, int> home(const Piece& p) {
 
 // Meshes a piece with the polygon mesher in its barrel's chart.
 void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
-  if (!s.mesher) fail(s.vid, "a cap stack without a meshed cap needs a polygon mesher, which is not available");
+  if (!s.mesher)
+    fail(s.vid, "a cap stack without a meshed cap needs a polygon mesher, which is not available");
   const auto [b, end] = home(p);
   const BarrelState& st = s.barrels[b];
   std::map<int, Vec2> xy;
@@ -53,7 +54,8 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   try {
     m = s.mesher->mesh(loops.points);
   } catch (const std::exception& e) {
-    fail(s.vid, "meshing a subcap of " + (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
+    fail(s.vid, "meshing a subcap of " +
+                    (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
                     " in " + s.barrel_name(b) + ": " + e.what());
   }
   if (m.boundary_count != static_cast<int>(boundary.size())) {
@@ -79,24 +81,32 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
                        node[static_cast<size_t>(q[2])], node[static_cast<size_t>(q[3])]});
   }
   for (const auto& t : m.tris) {
-    p.tris.push_back({node[static_cast<size_t>(t[0])], node[static_cast<size_t>(t[1])], node[static_cast<size_t>(t[2])]});
+    p.tris.push_back({node[static_cast<size_t>(t[0])], node[static_cast<size_t>(t[1])],
+                      node[static_cast<size_t>(t[2])]});
   }
   if (loops.pinches > 0) {
     // Both passes of a touching node are one node again: no element may hold it twice.
-    auto repeats = [](const auto& e) { return std::set<int>(e.begin(), e.end()).size() != e.size(); };
+    auto repeats = [](const auto& e) {
+      return std::set<int>(e.begin(), e.end()).size() != e.size();
+    };
     const bool bad = std::any_of(p.quads.begin(), p.quads.end(), repeats) ||
                      std::any_of(p.tris.begin(), p.tris.end(), repeats);
-    if (bad) fail(s.vid, "a subcap in " + s.barrel_name(b) + " touches itself at a node, and its mesh joins the two sides there");
+    if (bad)
+      fail(s.vid, "a subcap in " + s.barrel_name(b) +
+                      " touches itself at a node, and its mesh joins the two sides there");
   }
   p.meshed = true;
 }
 
 // The surface mesh of a cap meshed beforehand.
 void take_surface_mesh(SweepState& s, Piece& p) {
-  if (!s.db.surface_meshed(p.cap)) fail(s.vid, "cap surface " + std::to_string(p.cap) + " is not meshed");
+  if (!s.db.surface_meshed(p.cap))
+    fail(s.vid, "cap surface " + std::to_string(p.cap) + " is not meshed");
   const mesh::SurfaceMeshData& m = s.db.surface(p.cap);
-  for (const auto& q : m.quads) p.quads.push_back({s.existing(q[0]), s.existing(q[1]), s.existing(q[2]), s.existing(q[3])});
-  for (const auto& t : m.tris) p.tris.push_back({s.existing(t[0]), s.existing(t[1]), s.existing(t[2])});
+  for (const auto& q : m.quads)
+    p.quads.push_back({s.existing(q[0]), s.existing(q[1]), s.existing(q[2]), s.existing(q[3])});
+  for (const auto& t : m.tris)
+    p.tris.push_back({s.existing(t[0]), s.existing(t[1]), s.existing(t[2])});
   p.meshed = true;
 }
 
@@ -104,8 +114,9 @@ void take_surface_mesh(SweepState& s, Piece& p) {
 // outer loop stays), the projected subcap can fold next to its boundary:
 // then its new nodes are smoothed (sec. 6.1: "a smooth ... to optimize
 // element quality"), kept only if its worst corner improves.
-void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads, const std::vector<mesh::Tri>& tris,
-              const std::map<int, int>& index, const std::map<int, int>& image, const Piece& to) {
+void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
+              const std::vector<mesh::Tri>& tris, const std::map<int, int>& index,
+              const std::map<int, int>& image, const Piece& to) {
   const BarrelState& st = s.barrels[b];
   std::vector<int> node(index.size());
   for (const auto& [n, i] : index) node[static_cast<size_t>(i)] = n;
@@ -122,7 +133,9 @@ void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads, con
   std::vector<mesh::Tri> t = tris;
   auto orient = [&](auto& f) {
     Vec3 n = Vec3::Zero();
-    for (size_t k = 0; k < f.size(); ++k) n += before[static_cast<size_t>(f[k])].cross(before[static_cast<size_t>(f[(k + 1) % f.size()])]);
+    for (size_t k = 0; k < f.size(); ++k)
+      n += before[static_cast<size_t>(f[k])].cross(
+          before[static_cast<size_t>(f[(k + 1) % f.size()])]);
     if (n.dot(st.d) < 0) std::reverse(f.begin() + 1, f.end());
   };
   for (auto& f : q) orient(f);
@@ -138,8 +151,10 @@ void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads, con
     const auto a = across.find(node[i]);
     after[i] = a != across.end() ? s.pos(a->second) : before[i];
   }
-  const double q_before = std::min(min_quad_corner_quality(before, q, st.d), min_tri_corner_quality(before, t, st.d));
-  const double q_after = std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
+  const double q_before =
+      std::min(min_quad_corner_quality(before, q, st.d), min_tri_corner_quality(before, t, st.d));
+  const double q_after =
+      std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
   if (q_after >= std::min(0.5, q_before)) return;
   const auto& g = to.cap ? s.model.surface(to.cap).geometry : nullptr;
   auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
@@ -167,7 +182,8 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   for (const auto& l : from.loops) {
     for (int n : l) {
       const auto it = across.find(n);
-      if (it == across.end()) fail(s.vid, s.barrel_name(b) + ": a subcap boundary node has no rib across the barrel");
+      if (it == across.end())
+        fail(s.vid, s.barrel_name(b) + ": a subcap boundary node has no rib across the barrel");
       if (!seen.insert(n).second) continue;
       ring.push_back(n);
       residual.push_back(s.pos(it->second) - map.apply(s.pos(n)));
@@ -188,7 +204,8 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
     if (added) points.push_back(s.pos(n));
     return it->second;
   };
-  for (const auto& q : from.quads) quads.push_back({local(q[0]), local(q[1]), local(q[2]), local(q[3])});
+  for (const auto& q : from.quads)
+    quads.push_back({local(q[0]), local(q[1]), local(q[2]), local(q[3])});
   for (const auto& t : from.tris) tris.push_back({local(t[0]), local(t[1]), local(t[2])});
   // An affine motion leaves no residual: then the O(interior x boundary)
   // interpolation is skipped (a 4 x 40,000 cap took a minute).
@@ -217,8 +234,10 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
     image[n] = m;
     return m;
   };
-  for (const auto& q : from.quads) to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});
-  for (const auto& t : from.tris) to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
+  for (const auto& q : from.quads)
+    to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});
+  for (const auto& t : from.tris)
+    to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
   to.meshed = true;
   untangle(s, b, quads, tris, index, image, to);
 }
@@ -247,7 +266,8 @@ void mesh_stacks(SweepState& s) {
       const Piece& p = s.pieces[static_cast<size_t>(m)];
       if (!p.premeshed) continue;
       if (seed >= 0) {
-        fail(s.vid, "caps " + std::to_string(s.pieces[static_cast<size_t>(seed)].cap) + " and " + std::to_string(p.cap) +
+        fail(s.vid, "caps " + std::to_string(s.pieces[static_cast<size_t>(seed)].cap) + " and " +
+                        std::to_string(p.cap) +
                         " were both meshed by their surface schemes but lie in one cap stack");
       }
       seed = m;
@@ -281,7 +301,8 @@ void mesh_stacks(SweepState& s) {
       }
     }
     for (int m : members) {
-      if (!s.pieces[static_cast<size_t>(m)].meshed) fail(s.vid, "a subcap of a cap stack was not reached by its stack's mesh");
+      if (!s.pieces[static_cast<size_t>(m)].meshed)
+        fail(s.vid, "a subcap of a cap stack was not reached by its stack's mesh");
     }
   }
 }

@@ -17,7 +17,8 @@ Elements elements_of(const scheme::Settings& settings, int volume_id) {
 SweepHints hints_of(const scheme::Settings& settings, int volume_id) {
   const io::VolumeSetting* v = settings.volume(volume_id);
   if (!v || (v->sources.empty() && v->targets.empty() && !v->direction)) return {};
-  const std::string where = v->where.file.empty() ? std::string() : v->where.file + ":" + std::to_string(v->where.line);
+  const std::string where =
+      v->where.file.empty() ? std::string() : v->where.file + ":" + std::to_string(v->where.line);
   return {v->sources, v->targets, v->direction, where};
 }
 
@@ -53,7 +54,8 @@ scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) c
                  : scheme::Applicability::no(plan.why, std::move(p));
 }
 
-void CooperScheme::constrain(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const {
+void CooperScheme::constrain(const scheme::VolumeView& view,
+                             intervals::IntervalProblem& problem) const {
   const auto p = plan(view);
   if (p->plan.ok) add_rows(p->plan.rows, problem);
 }
@@ -83,7 +85,8 @@ std::vector<int> CooperScheme::takes_existing_mesh(const scheme::VolumeView& vie
 
 // cite: Blacker 1996, sec. 4-6 (barrels, subcaps, cap stacks, projection,
 // elements); the one-barrel sweep is the same path with one barrel.
-scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view, const scheme::Settings& settings) const {
+scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view,
+                                      const scheme::Settings& settings) const {
   scheme::VolumeView own = view;
   if (!own.job) own.job = &settings;
   const auto held = plan(own);
@@ -94,7 +97,8 @@ scheme::EntityMesh CooperScheme::mesh(const scheme::VolumeView& view, const sche
   return sweep_volume(own, p, polygon_mesher(p.elements));
 }
 
-std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry, CooperOptions options) {
+std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry,
+                                                  CooperOptions options) {
   return std::make_unique<CooperScheme>(registry, std::move(options));
 }
 

@@ -65,13 +65,15 @@ class CooperScheme final : public scheme::VolumeScheme {
   scheme::Applicability applicable(const scheme::VolumeView& view) const override;
   /// The plan's rows: every linking chain of a level the same count, at
   /// least one layer per barrel, even cap loops where pieces are paved.
-  void constrain(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const override;
+  void constrain(const scheme::VolumeView& view,
+                 intervals::IntervalProblem& problem) const override;
   /// Sides -> "submap"; caps meshed beforehand -> their scheme; the rest ->
   /// scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override;
   /// sweep_volume() on the plan. Throws MeshingError naming the volume.
-  scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::Settings& settings) const override;
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override;
 
   /// The plan view.plan carries (this scheme's applicable() for the same
   /// volume), else one computed now from the view's model and settings.
@@ -87,6 +89,7 @@ class CooperScheme final : public scheme::VolumeScheme {
 };
 
 /// The scheme; register it after the volume map.
-std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry, CooperOptions options = {});
+std::unique_ptr<scheme::VolumeScheme> make_cooper(const scheme::Registry& registry,
+                                                  CooperOptions options = {});
 
 }  // namespace cooperage::cooper

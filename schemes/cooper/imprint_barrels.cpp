@@ -20,7 +20,9 @@ BarrelEnds ends_of(const SweepState& s, size_t b) {
   const BarrelState& st = s.barrels[b];
   for (const Piece& p : s.pieces) {
     if (!p.alive) continue;
-    const int end = p.upper_of == static_cast<int>(b) ? 0 : p.lower_of == static_cast<int>(b) ? 1 : -1;
+    const int end = p.upper_of == static_cast<int>(b)   ? 0
+                    : p.lower_of == static_cast<int>(b) ? 1
+                                                        : -1;
     if (end < 0) continue;
     for (const auto& l : p.loops) {
       for (int n : l) {
@@ -107,8 +109,9 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
         for (const auto& l : loops) after.insert(l.begin(), l.end());
         if (before != after || p.loops.size() != loops.size()) {
           if (p.premeshed) {
-            fail(s.vid, s.barrel_name(b) + ": imprinting cuts cap " + std::to_string(p.cap) +
-                            ", which was meshed by its surface scheme (the plan did not foresee it)");
+            fail(s.vid,
+                 s.barrel_name(b) + ": imprinting cuts cap " + std::to_string(p.cap) +
+                     ", which was meshed by its surface scheme (the plan did not foresee it)");
           }
           changed = true;
         }
@@ -118,7 +121,8 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
         continue;
       }
       const auto o = r.origin.find(c.id);
-      if (o == r.origin.end()) fail(s.vid, s.barrel_name(b) + ": an imprinted subcap has no origin");
+      if (o == r.origin.end())
+        fail(s.vid, s.barrel_name(b) + ": an imprinted subcap has no origin");
       const Piece& parent = s.pieces[static_cast<size_t>(o->second)];
       if (parent.premeshed) {
         fail(s.vid, s.barrel_name(b) + ": imprinting cuts cap " + std::to_string(parent.cap) +
@@ -175,7 +179,8 @@ void imprint_barrels(SweepState& s) {
     }
     if (!changed) return;
   }
-  fail(s.vid, "subcap imprinting did not settle after " + std::to_string(passes) + " passes over the barrels");
+  fail(s.vid, "subcap imprinting did not settle after " + std::to_string(passes) +
+                  " passes over the barrels");
 }
 
 }  // namespace cooperage::cooper::detail

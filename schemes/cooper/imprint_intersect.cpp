@@ -41,10 +41,10 @@ bool Imprinter::free_crossing(int e, const Subcap& a) {
   const Loop& la = a.loops.front();
   const size_t na = la.size();
   struct Crossing {
-    size_t ia;     // segment la[ia] - la[ia + 1]
+    size_t ia;  // segment la[ia] - la[ia + 1]
     double ta;
-    Loop lb;       // the opposing loop
-    size_t kb;     // segment lb[kb] - lb[kb + 1]
+    Loop lb;    // the opposing loop
+    size_t kb;  // segment lb[kb] - lb[kb + 1]
     double tb;
     Vec2 x;
     int va = -1, vb = -1;
@@ -106,7 +106,8 @@ bool Imprinter::free_crossing(int e, const Subcap& a) {
   const std::vector<int> a_choice[2] = {chain(la, ca, 0, free_a), chain(la, ca, 1, free_a)};
   // Each opposing loop: its crossings in its own order, two choices each.
   std::map<std::set<int>, std::vector<size_t>> by_loop;
-  for (size_t j = 0; j < found.size(); ++j) by_loop[std::set<int>(found[j].lb.begin(), found[j].lb.end())].push_back(j);
+  for (size_t j = 0; j < found.size(); ++j)
+    by_loop[std::set<int>(found[j].lb.begin(), found[j].lb.end())].push_back(j);
   const auto free_b = [&](int v) { return !partner(1 - e, v).has_value() && !exterior_.count(v); };
   std::vector<std::vector<size_t>> loop_members;
   std::vector<std::array<std::vector<int>, 2>> b_choice;
@@ -132,7 +133,8 @@ bool Imprinter::free_crossing(int e, const Subcap& a) {
       const int a0 = ca[0][m & 1], a1 = ca[1][(m >> 1) & 1];
       const int b0 = lb[(found[0].kb + ((m >> 2) & 1)) % lb.size()];
       const int b1 = lb[(found[1].kb + ((m >> 3) & 1)) % lb.size()];
-      if (a0 == a1 || b0 == b1 || !free_a(a0) || !free_a(a1) || !free_b(b0) || !free_b(b1)) continue;
+      if (a0 == a1 || b0 == b1 || !free_a(a0) || !free_a(a1) || !free_b(b0) || !free_b(b1))
+        continue;
       if (options_.even_parity && (edges(la, a0, a1) + edges(lb, b0, b1)) % 2 != 0) continue;
       const double cost = (xy().at(a0) - xy().at(b0)).norm() + (xy().at(a1) - xy().at(b1)).norm();
       if (!(cost < best)) continue;
@@ -191,8 +193,12 @@ bool Imprinter::split_hole(int e, size_t bi, int x, const Loop& path, int y) {
     if (ix < 0 || iy < 0 || ix == iy) continue;
     const size_t n = H.size();
     Loop fwd, bwd;  // arcs of H from y to x, exclusive
-    for (size_t k = (static_cast<size_t>(iy) + 1) % n; k != static_cast<size_t>(ix); k = (k + 1) % n) fwd.push_back(H[k]);
-    for (size_t k = (static_cast<size_t>(iy) + n - 1) % n; k != static_cast<size_t>(ix); k = (k + n - 1) % n) bwd.push_back(H[k]);
+    for (size_t k = (static_cast<size_t>(iy) + 1) % n; k != static_cast<size_t>(ix);
+         k = (k + 1) % n)
+      fwd.push_back(H[k]);
+    for (size_t k = (static_cast<size_t>(iy) + n - 1) % n; k != static_cast<size_t>(ix);
+         k = (k + n - 1) % n)
+      bwd.push_back(H[k]);
     Loop base{x};
     base.insert(base.end(), path.begin(), path.end());
     base.push_back(y);
@@ -286,9 +292,11 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
     // A node inserted on an edge of a model curve would break its mesh.
     const int e0 = qi == 0 ? r0 : gap[qi - 1];
     const int e1 = qi < gap.size() ? gap[qi] : r1;
-    if (!(r_.ends.fixed.count(e0) && r_.ends.fixed.count(e1))) cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
+    if (!(r_.ends.fixed.count(e0) && r_.ends.fixed.count(e1)))
+      cands.push_back({-1, pj, (X - xy().at(p)).norm() + 1e-12});
   }
-  std::stable_sort(cands.begin(), cands.end(), [](const Cand& u, const Cand& v) { return u.d < v.d; });
+  std::stable_sort(cands.begin(), cands.end(),
+                   [](const Cand& u, const Cand& v) { return u.d < v.d; });
   for (const Cand& cand : cands) {
     const size_t pj = cand.pj;
     const int p = walk[pj];
@@ -317,7 +325,8 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
     }
     // Lower side: a^ = b split by p -> projected gap[first_b ..] -> y.
     Loop low_path;
-    for (size_t g = first_b; g < gap.size(); ++g) low_path.push_back(project(e, gap[g], a.loops.front()));
+    for (size_t g = first_b; g < gap.size(); ++g)
+      low_path.push_back(project(e, gap[g], a.loops.front()));
     // Upper side: project Gamma_bp (walk up to p) where it has no rib.
     Loop up_path;
     int ja = -1;
@@ -334,7 +343,8 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
     const size_t ai = index_of_cap(e, a.id);
     const Loop aouter = caps(e)[ai].loops.front();
     auto [a_left, a_right] = split_loop(aouter, ja, up_path, p_up);
-    auto [b_left, b_right] = split_loop(caps(o)[index_of_cap(o, b.id)].loops.front(), p, low_path, y);
+    auto [b_left, b_right] =
+        split_loop(caps(o)[index_of_cap(o, b.id)].loops.front(), p, low_path, y);
     const auto a_ids = replace(e, ai, {a_left, a_right});
     const auto b_ids = replace(o, index_of_cap(o, b.id), {b_left, b_right});
     if (!a_ids.empty() && !b_ids.empty()) {

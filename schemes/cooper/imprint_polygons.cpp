@@ -83,7 +83,8 @@ bool adjacent(const Loop& loop, int a, int b) {
   const int i = index_in(loop, a);
   if (i < 0) return false;
   const size_t n = loop.size();
-  return loop[(static_cast<size_t>(i) + 1) % n] == b || loop[(static_cast<size_t>(i) + n - 1) % n] == b;
+  return loop[(static_cast<size_t>(i) + 1) % n] == b ||
+         loop[(static_cast<size_t>(i) + n - 1) % n] == b;
 }
 
 // Splits a counter-clockwise loop by a path x -> interior -> y (x, y on the
@@ -198,10 +199,14 @@ std::vector<Loop> split_self_intersections(const Loop& input, const std::map<int
     const size_t n = loop.size();
     const auto [i, k] = *hit;
     // Candidate pairs (one node of each segment), closest first, even loops preferred.
-    struct Cand { size_t p, q; double d; };
+    struct Cand {
+      size_t p, q;
+      double d;
+    };
     std::vector<Cand> cands;
     for (size_t p : {i, (i + 1) % n}) {
-      for (size_t q : {k, (k + 1) % n}) cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
+      for (size_t q : {k, (k + 1) % n})
+        cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
     }
     std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) { return x.d < y.d; });
     const Cand* pick = &cands.front();

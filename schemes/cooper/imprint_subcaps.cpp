@@ -65,7 +65,9 @@ std::string Imprinter::unmatched_list() {
   std::string s;
   for (int e = 0; e < 2; ++e) {
     for (const Subcap& c : caps(e)) {
-      if (!matched(c.id)) s += std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
+      if (!matched(c.id))
+        s +=
+            std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
     }
   }
   return s;
@@ -119,8 +121,10 @@ bool Imprinter::try_matches() {
     for (const Loop& l : a.loops) {
       for (int v : l) {
         const auto p = partner(0, v);
-        if (!p) full = false;
-        else image.insert(*p);
+        if (!p)
+          full = false;
+        else
+          image.insert(*p);
       }
     }
     if (!full) continue;
@@ -263,7 +267,8 @@ void Imprinter::subtract_overlap(int e, const Loop& piece) {
     const size_t n = piece.size();
     int start = -1;
     for (size_t k = 0; k < n; ++k) {
-      if (index_in(outer, piece[k]) >= 0 && index_in(outer, piece[(k + 1) % n]) < 0) start = static_cast<int>(k);
+      if (index_in(outer, piece[k]) >= 0 && index_in(outer, piece[(k + 1) % n]) < 0)
+        start = static_cast<int>(k);
     }
     if (start < 0) {
       t.loops.push_back(Loop(piece.rbegin(), piece.rend()));  // fully inside: a hole
@@ -346,7 +351,8 @@ bool Imprinter::on_hole_only(int o, int node) {
 // either side form one path from the opposing outer loop through the hole's
 // node back to it, which splits the opposing subcap (a path from an outer
 // loop to a hole alone would not).
-std::vector<size_t> Imprinter::gap_anchors(int e, const Loop& outer, const std::vector<size_t>& ribbed) {
+std::vector<size_t> Imprinter::gap_anchors(int e, const Loop& outer,
+                                           const std::vector<size_t>& ribbed) {
   const size_t m = ribbed.size(), n = outer.size();
   if (m < 3) return ribbed;
   std::vector<char> hole_only(m);
@@ -422,7 +428,8 @@ bool Imprinter::free_loop(int e, const Subcap& a) {
       const std::set<int> img(images[h].begin(), images[h].end());
       const size_t hi = index_of_cap(1 - e, hat);
       bool present = false;
-      for (const Loop& l : caps(1 - e)[hi].loops) present = present || std::set<int>(l.begin(), l.end()) == img;
+      for (const Loop& l : caps(1 - e)[hi].loops)
+        present = present || std::set<int>(l.begin(), l.end()) == img;
       if (!present) subtract_inside(1 - e, hi, Loop(images[h].rbegin(), images[h].rend()));
     }
     r_.steps.push_back(ImprintStep::Subtract);
@@ -467,7 +474,8 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
   const Vec2 probe = 0.5 * (xy().at(x) + (gap.empty() ? xy().at(y) : xy().at(gap.front())));
   size_t bi = static_cast<size_t>(common.front());
   for (int c : common) {
-    if (point_in_subcap(probe, caps(1 - e)[static_cast<size_t>(c)], xy())) bi = static_cast<size_t>(c);
+    if (point_in_subcap(probe, caps(1 - e)[static_cast<size_t>(c)], xy()))
+      bi = static_cast<size_t>(c);
   }
   Loop path;
   for (int v : gap) path.push_back(project(e, v, a.loops.front()));
@@ -496,7 +504,6 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
   r_.steps.push_back(ImprintStep::Subtract);
   return true;
 }
-
 
 }  // namespace detail
 

@@ -45,7 +45,8 @@ std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::M
 std::vector<std::vector<int>> quad_boundary_loops(const std::vector<std::array<int, 4>>& quads) {
   std::map<std::pair<int, int>, int> count;
   for (const auto& q : quads) {
-    for (size_t k = 0; k < 4; ++k) ++count[{std::min(q[k], q[(k + 1) % 4]), std::max(q[k], q[(k + 1) % 4])}];
+    for (size_t k = 0; k < 4; ++k)
+      ++count[{std::min(q[k], q[(k + 1) % 4]), std::max(q[k], q[(k + 1) % 4])}];
   }
   std::map<int, int> next;  // directed boundary edges
   for (const auto& q : quads) {

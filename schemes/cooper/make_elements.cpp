@@ -67,7 +67,8 @@ double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<me
           double sj;
           if (e < nh) {
             quality::HexNodes h;
-            for (std::size_t c = 0; c < 8; ++c) h[c] = points[static_cast<std::size_t>(hexes[e][c])];
+            for (std::size_t c = 0; c < 8; ++c)
+              h[c] = points[static_cast<std::size_t>(hexes[e][c])];
             sj = quality::hex_scaled_jacobian(h);
           } else {
             quality::WedgeNodes p;

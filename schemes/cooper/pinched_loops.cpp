@@ -6,8 +6,8 @@
 namespace cooperage::cooper {
 namespace {
 
-using detail::Loop;
 using detail::index_in;
+using detail::Loop;
 
 // Joins loop b into loop a at node v (in both): a up to v, b around from v
 // back to v, the rest of a. Both keep the domain on their left, so does
@@ -38,8 +38,8 @@ bool join_one(std::vector<Loop>& loops) {
 
 }  // namespace
 
-UnpinchedLoops unpinch_loops(const std::vector<std::vector<int>>& loops, const std::map<int, Vec2>& xy,
-                             double nudge) {
+UnpinchedLoops unpinch_loops(const std::vector<std::vector<int>>& loops,
+                             const std::map<int, Vec2>& xy, double nudge) {
   std::vector<Loop> work = loops;
   while (join_one(work)) {
   }
@@ -61,7 +61,8 @@ UnpinchedLoops unpinch_loops(const std::vector<std::vector<int>>& loops, const s
         if (turn <= 0) turn += 2 * M_PI;
         const double c = std::cos(turn / 2), s = std::sin(turn / 2);
         const Vec2 u = d1.normalized();
-        p += nudge * std::min(d1.norm(), d2.norm()) * Vec2(c * u.x() - s * u.y(), s * u.x() + c * u.y());
+        p += nudge * std::min(d1.norm(), d2.norm()) *
+             Vec2(c * u.x() - s * u.y(), s * u.x() + c * u.y());
         pinched.insert(v);
       }
       out.points.back().push_back(p);

@@ -27,7 +27,7 @@ struct UnpinchedLoops {
 /// \param[in] xy node positions [model units].
 /// \param[in] nudge how far a repeated pass moves into its wedge, as a
 ///   fraction of its shorter boundary edge.
-UnpinchedLoops unpinch_loops(const std::vector<std::vector<int>>& loops, const std::map<int, Vec2>& xy,
-                             double nudge = 0.02);
+UnpinchedLoops unpinch_loops(const std::vector<std::vector<int>>& loops,
+                             const std::map<int, Vec2>& xy, double nudge = 0.02);
 
 }  // namespace cooperage::cooper

@@ -77,7 +77,8 @@ class LazyField {
   mutable std::unique_ptr<ResidualField> field_;
 };
 
-bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why, const LazyField& field);
+bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why,
+                const LazyField& field);
 
 }  // namespace
 
@@ -88,7 +89,8 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   points.assign(n * (J + 1), Vec3::Zero());
   const std::vector<Vec3> ring = layer_major_rings(in);
   for (std::size_t j = 0; j <= J; ++j) {
-    std::copy(ring.begin() + static_cast<long>(j * B), ring.begin() + static_cast<long>((j + 1) * B),
+    std::copy(ring.begin() + static_cast<long>(j * B),
+              ring.begin() + static_cast<long>((j + 1) * B),
               points.begin() + static_cast<long>(j * n));
   }
   std::copy(in.source.begin() + static_cast<long>(B), in.source.end(),
@@ -100,8 +102,9 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   // Target cap: the source map to the target loop, then onto the surface.
   const AffineMap to_target = least_squares_map(upper, lower, B, in.loop_starts);
   if (!to_target.ok) {
-    why = "the least-squares map from the source loops to the target loops is singular or "
-          "inverting (det A <= 0)";
+    why =
+        "the least-squares map from the source loops to the target loops is singular or "
+        "inverting (det A <= 0)";
     return false;
   }
   const double tolerance = residual_tolerance(ring.data(), ring.size());
@@ -138,7 +141,8 @@ bool blend_layers(const SweepInput& in, std::vector<Vec3>& points, std::string& 
 
 namespace {
 
-bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why, const LazyField& field) {
+bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& why,
+                const LazyField& field) {
   const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
   const std::size_t B = static_cast<std::size_t>(in.boundary);
   const std::size_t J = static_cast<std::size_t>(in.layers);

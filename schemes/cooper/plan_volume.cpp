@@ -21,20 +21,24 @@ std::string join(const std::vector<int>& ids) {
   return s;
 }
 
-std::string hint_place(const SweepHints& h) { return h.where.empty() ? std::string() : " (" + h.where + ")"; }
+std::string hint_place(const SweepHints& h) {
+  return h.where.empty() ? std::string() : " (" + h.where + ")";
+}
 
 // The hints a plan must honour; empty when it does, else why not.
 std::string check_hints(const VolumePlan& p, const SweepHints& hints) {
   for (int s : hints.sources) {
     const auto it = p.order.upper.find(s);
     if (it == p.order.upper.end() || !it->second) {
-      return "the hinted source surface " + std::to_string(s) + hint_place(hints) + " is not a cap the sweep starts from";
+      return "the hinted source surface " + std::to_string(s) + hint_place(hints) +
+             " is not a cap the sweep starts from";
     }
   }
   for (int t : hints.targets) {
     const auto it = p.order.upper.find(t);
     if (it == p.order.upper.end() || it->second) {
-      return "the hinted target surface " + std::to_string(t) + hint_place(hints) + " is not a cap the sweep ends on";
+      return "the hinted target surface " + std::to_string(t) + hint_place(hints) +
+             " is not a cap the sweep ends on";
     }
   }
   if (hints.direction && hints.direction->norm() > 0) {
@@ -72,8 +76,8 @@ std::string summary(const VolumePlan& p) {
       const auto it = p.roles.scheme.find(c);
       if (it != p.roles.scheme.end()) w << " (" << c << ": " << it->second << ")";
     }
-    w << " to surface" << (lo.size() > 1 ? "s " : " ") << join(lo) << " along " << p.lattice.sides.size()
-      << " side faces";
+    w << " to surface" << (lo.size() > 1 ? "s " : " ") << join(lo) << " along "
+      << p.lattice.sides.size() << " side faces";
   } else {
     w << "many-to-one sweep";
     if (p.down) w << " along " << direction_text(*p.down);
@@ -84,8 +88,8 @@ std::string summary(const VolumePlan& p) {
 }
 
 // Runs the steps for one sorting of the faces.
-VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry, const VolumeFacts& facts,
-                    const PlanInputs& in, const CapCandidate& cand) {
+VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
+                    const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
   VolumePlan p;
   p.volume = facts.volume;
   p.elements = in.elements;
@@ -108,17 +112,20 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry, 
   const CapSchemeOf scheme_of = [&](int cap, std::string& why) {
     return cap_scheme(model, registry, cap, why, in.elements, in.settings);
   };
-  p.roles = cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
+  p.roles =
+      cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
   if (const std::string h = check_hints(p, in.hints); !h.empty()) return fail(6, h);
   std::set<int> even;
   for (const auto& [cap, upper] : p.order.upper) {
     const auto it = p.roles.scheme.find(cap);
-    const bool paved = it != p.roles.scheme.end() && (it->second == "pave" || it->second == "quad_dominant");
+    const bool paved =
+        it != p.roles.scheme.end() && (it->second == "pave" || it->second == "quad_dominant");
     const bool imprinted = p.roles.needs_polygon_mesher && in.elements != Elements::Wedge;
     if (imprinted || (paved && facts.face(cap)->loops.size() > 1)) even.insert(cap);
   }
-  p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even, volume_name(p.volume) + " (cooper)");
+  p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even,
+                              volume_name(p.volume) + " (cooper)");
   if (p.one_barrel()) {
     p.source = cand.source;
     p.target = cand.target;
@@ -170,10 +177,13 @@ std::string fig3a(const VolumeFacts& facts) {
   for (size_t i = 0; i < dirs.size(); ++i) {
     for (size_t j = i + 1; j < dirs.size(); ++j) {
       if (std::abs(dirs[i].second.dot(dirs[j].second)) >= c) continue;
-      return volume_name(facts.volume) + " is not cooperable: the virtual faces in the hole loops of surfaces " +
-             std::to_string(dirs[i].first) + " (projecting along " + direction_text(dirs[i].second) + ") and " +
-             std::to_string(dirs[j].first) + " (along " + direction_text(dirs[j].second) +
-             ") project in different directions (Blacker 1996, sec. 3, Fig. 3a); decompose it, e.g. with "
+      return volume_name(facts.volume) +
+             " is not cooperable: the virtual faces in the hole loops of surfaces " +
+             std::to_string(dirs[i].first) + " (projecting along " +
+             direction_text(dirs[i].second) + ") and " + std::to_string(dirs[j].first) +
+             " (along " + direction_text(dirs[j].second) +
+             ") project in different directions (Blacker 1996, sec. 3, Fig. 3a); decompose it, "
+             "e.g. with "
              "<webcut>, into pieces that sweep in one direction each";
     }
   }
@@ -200,7 +210,8 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
   }
   const VolumeFacts facts = gather_facts(model, volume_id, registry, in.settings);
   if (facts.faces.size() < 3) {
-    refused.why = vname + ": " + std::to_string(facts.faces.size()) + " surfaces, a sweep needs at least 3";
+    refused.why =
+        vname + ": " + std::to_string(facts.faces.size()) + " surfaces, a sweep needs at least 3";
     return refused;
   }
   for (const auto* list : {&in.hints.sources, &in.hints.targets}) {
@@ -224,7 +235,8 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
   };
   // 1. One barrel between a pair of caps.
   std::string pair_why;
-  for (const CapCandidate& c : pair_candidates(facts, in.hints.sources, in.hints.targets, pair_why)) {
+  for (const CapCandidate& c :
+       pair_candidates(facts, in.hints.sources, in.hints.targets, pair_why)) {
     VolumePlan p = evaluate(model, registry, facts, in, c);
     if (p.ok && p.one_barrel()) return p;
     if (!p.ok) note(p);
@@ -281,11 +293,14 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
     return refused;
   }
   if (in.hints.direction) {
-    refused.why = vname + ": the direction hint " + direction_text(*in.hints.direction) + hint_place(in.hints) +
-                  " cannot be honoured: " + (first_failure.empty() ? "no sorting fits it" : first_failure);
+    refused.why = vname + ": the direction hint " + direction_text(*in.hints.direction) +
+                  hint_place(in.hints) + " cannot be honoured: " +
+                  (first_failure.empty() ? "no sorting fits it" : first_failure);
   } else {
-    refused.why = vname + ": no sorting of its faces into caps and sides gives barrels (the one that got furthest: " +
-                  (first_failure.empty() ? std::string("none") : first_failure) + ")";
+    refused.why =
+        vname +
+        ": no sorting of its faces into caps and sides gives barrels (the one that got furthest: " +
+        (first_failure.empty() ? std::string("none") : first_failure) + ")";
   }
   return refused;
 }
@@ -321,7 +336,8 @@ std::string describe_plan(const VolumePlan& p) {
     std::ostringstream t;
     if (e.cap) {
       const auto it = p.roles.scheme.find(e.cap);
-      t << "surface " << e.cap << " (" << (it != p.roles.scheme.end() ? it->second : std::string("by the sweep")) << ")";
+      t << "surface " << e.cap << " ("
+        << (it != p.roles.scheme.end() ? it->second : std::string("by the sweep")) << ")";
     } else {
       const BarrelInterface& v = p.tree.interfaces[static_cast<size_t>(e.interface)];
       const int other = upper_end ? v.above : v.below;
@@ -332,11 +348,14 @@ std::string describe_plan(const VolumePlan& p) {
   };
   for (size_t b = 0; b < p.tree.barrels.size(); ++b) {
     const BarrelNode& n = p.tree.barrels[b];
-    s << "  barrel " << b + 1 << ": sides " << join(n.sides) << "; " << imprint_operation(n) << "\n";
+    s << "  barrel " << b + 1 << ": sides " << join(n.sides) << "; " << imprint_operation(n)
+      << "\n";
     s << "    upper:";
-    for (const EndPiece& e : n.upper) s << " " << piece(e, true, b) << (&e == &n.upper.back() ? "" : ",");
+    for (const EndPiece& e : n.upper)
+      s << " " << piece(e, true, b) << (&e == &n.upper.back() ? "" : ",");
     s << "\n    lower:";
-    for (const EndPiece& e : n.lower) s << " " << piece(e, false, b) << (&e == &n.lower.back() ? "" : ",");
+    for (const EndPiece& e : n.lower)
+      s << " " << piece(e, false, b) << (&e == &n.lower.back() ? "" : ",");
     s << "\n";
   }
   return s.str();

@@ -37,8 +37,8 @@ struct PlanInputs {
 
 struct VolumePlan {
   bool ok = false;
-  std::string why;        ///< a sentence: the plan, or the reason for refusing
-  double score = 0;       ///< one barrel in [0.5, 0.9], several in [0.3, 0.45]
+  std::string why;   ///< a sentence: the plan, or the reason for refusing
+  double score = 0;  ///< one barrel in [0.5, 0.9], several in [0.3, 0.45]
   /// The refusal is the paper's Fig. 3a (virtual faces projecting in
   /// different directions): decompose the volume.
   bool needs_decomposition = false;

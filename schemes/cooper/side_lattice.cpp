@@ -91,7 +91,8 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   for (int c : caps) {
     const FaceFact* f = facts.face(c);
     if (!f) {
-      out.why = "surface " + std::to_string(c) + " does not bound volume " + std::to_string(facts.volume);
+      out.why =
+          "surface " + std::to_string(c) + " does not bound volume " + std::to_string(facts.volume);
       return out;
     }
     for (size_t l = 0; l < f->loops.size(); ++l) {
@@ -134,10 +135,12 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
         const bool along = d[k] % 2 == parity;
         const auto [it, added] = curve_along.emplace(loop[k].curve, along);
         if (!added && it->second != along) {
-          out.why = "curve " + std::to_string(loop[k].curve) + " runs " +
-                    (it->second ? "along the caps" : "between the caps") + " for a neighbour of side surface " +
-                    std::to_string(s) + " but " + (along ? "along" : "between") +
-                    " them in its lattice; the sides are not jointly submappable (Blacker 1996, Fig. 5)";
+          out.why =
+              "curve " + std::to_string(loop[k].curve) + " runs " +
+              (it->second ? "along the caps" : "between the caps") +
+              " for a neighbour of side surface " + std::to_string(s) + " but " +
+              (along ? "along" : "between") +
+              " them in its lattice; the sides are not jointly submappable (Blacker 1996, Fig. 5)";
           return out;
         }
       }
@@ -180,7 +183,8 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   }
   out.classes = static_cast<int>(dense.size());
   for (int c : caps) {
-    out.cap_class[c] = out.vertex_class.at(facts.curves.at(facts.face(c)->loops.front().front().curve).start);
+    out.cap_class[c] =
+        out.vertex_class.at(facts.curves.at(facts.face(c)->loops.front().front().curve).start);
   }
   // Chains, contacts, stacked curves.
   for (int s : out.sides) {
@@ -216,14 +220,15 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
         const auto dh = facts.dihedral.find(u.curve);
         for (const auto& [cap, cap_loop] : cc->second) {
           if (dh == facts.dihedral.end()) {
-            out.why = "curve " + std::to_string(u.curve) + " between side surface " + std::to_string(s) +
-                      " and cap " + std::to_string(cap) + " has no dihedral angle";
+            out.why = "curve " + std::to_string(u.curve) + " between side surface " +
+                      std::to_string(s) + " and cap " + std::to_string(cap) +
+                      " has no dihedral angle";
             return out;
           }
           const double a = dh->second;
           if (a >= kMaxCapDihedral && a <= kReentrantMin) {
-            out.why = "side surface " + std::to_string(s) + " meets cap " + std::to_string(cap) + " at " + text(a) +
-                      " degrees along curve " + std::to_string(u.curve) +
+            out.why = "side surface " + std::to_string(s) + " meets cap " + std::to_string(cap) +
+                      " at " + text(a) + " degrees along curve " + std::to_string(u.curve) +
                       " (tangent: neither an end nor a re-entrant shoulder)";
             return out;
           }
@@ -245,9 +250,10 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
         chain.from_class = out.vertex_class.at(chain.from_vertex);
         chain.to_class = out.vertex_class.at(chain.to_vertex);
         if (chain.from_class == chain.to_class) {
-          out.why = "side surface " + std::to_string(s) + ": the curves " + std::to_string(chain.curves.front()) +
-                    (chain.curves.size() > 1 ? "..." : "") +
-                    " link one level to itself (both ends lie on one cap or on one run along the caps)";
+          out.why =
+              "side surface " + std::to_string(s) + ": the curves " +
+              std::to_string(chain.curves.front()) + (chain.curves.size() > 1 ? "..." : "") +
+              " link one level to itself (both ends lie on one cap or on one run along the caps)";
           return out;
         }
         out.chains.push_back(std::move(chain));

@@ -24,25 +24,25 @@ namespace cooperage::cooper {
 /// A maximal run of linking uses in one side face loop.
 struct LinkChain {
   int face = 0;
-  std::vector<int> curves;  ///< loop order
+  std::vector<int> curves;    ///< loop order
   std::vector<bool> forward;  ///< per curve: walked from its start vertex
-  int from_vertex = 0;      ///< where the run starts (loop order)
+  int from_vertex = 0;        ///< where the run starts (loop order)
   int to_vertex = 0;
-  int from_class = -1;      ///< level classes of the two ends
+  int from_class = -1;  ///< level classes of the two ends
   int to_class = -1;
   /// +1 or -1: the chain's direction in its face's lattice (the same for
   /// every chain of a face that runs the same way).
   int lattice_sign = 1;
-  double length = 0;        ///< summed curve lengths
+  double length = 0;  ///< summed curve lengths
 };
 
 /// Where a side face meets a cap (a curve of the cap's loop `cap_loop`).
 struct CapContact {
   int face = 0;
   int cap = 0;
-  int cap_loop = 0;         ///< 0 the cap's outer loop, >= 1 a hole loop
+  int cap_loop = 0;  ///< 0 the cap's outer loop, >= 1 a hole loop
   int curve = 0;
-  bool convex = true;       ///< dihedral below pi (else re-entrant)
+  bool convex = true;  ///< dihedral below pi (else re-entrant)
   /// The side face lies on this side (+1: +j, -1: -j) of the run in its
   /// lattice (it lies on the left of its loop).
   int leaving_sign = 1;
@@ -68,7 +68,7 @@ struct SideLattice {
   std::vector<StackedCurve> stacked;
   std::map<int, int> vertex_class;  ///< vertex id -> level class
   int classes = 0;
-  std::map<int, int> cap_class;     ///< cap face -> level class
+  std::map<int, int> cap_class;  ///< cap face -> level class
   /// Per side face: its level classes (those of its runs along).
   std::map<int, std::vector<int>> face_classes;
 };

@@ -37,7 +37,8 @@ int region_of_cycle(const Slab& slab, int c) {
 
 // cite: Blacker 1996, sec. 4 (a complete layer of ribs at a time; barrels
 // bounded by ribs on the sides and caps on the ends).
-SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order) {
+SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
+                         const SweepOrder& order) {
   SlabRegions out;
   const double scale = order.straight ? facts.size() : std::max(1.0, [&] {
     double lo = 0, hi = 0;
@@ -97,7 +98,8 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
     const bool outer = k.convex == (k.cap_loop == 0);
     const auto [it, added] = out.outer_face.emplace(k.face, outer);
     if (!added && it->second != outer) {
-      out.why = "side surface " + std::to_string(k.face) + " walls the volume in at one cap and a hole at another";
+      out.why = "side surface " + std::to_string(k.face) +
+                " walls the volume in at one cap and a hole at another";
       return out;
     }
   }
@@ -116,14 +118,16 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
   }
   for (int s : lattice.sides) {
     if (!out.outer_face.count(s)) {
-      out.why = "side surface " + std::to_string(s) + " cannot be told an outer wall or a hole wall";
+      out.why =
+          "side surface " + std::to_string(s) + " cannot be told an outer wall or a hole wall";
       return out;
     }
   }
   // Curve spans (linking curves) and heights (curves running along).
   auto curve_lo_hi = [&](int curve) {
     const CurveFact& c = facts.curves.at(curve);
-    const double a = height(lattice.vertex_class.at(c.start)), b = height(lattice.vertex_class.at(c.end));
+    const double a = height(lattice.vertex_class.at(c.start)),
+                 b = height(lattice.vertex_class.at(c.end));
     return std::make_pair(std::min(a, b), std::max(a, b));
   };
   std::set<int> cap_curves;
@@ -146,8 +150,9 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
       for (const UseFact& u : facts.face(s)->loops.front()) {
         if (cap_curves.count(u.curve)) continue;
         const auto [lo, hi] = curve_lo_hi(u.curve);
-        const bool joins = lattice.along.count(u.curve) ? (lo > slab.bottom + tol && lo < slab.top - tol)
-                                                        : (hi > slab.bottom + tol && lo < slab.top - tol);
+        const bool joins = lattice.along.count(u.curve)
+                               ? (lo > slab.bottom + tol && lo < slab.top - tol)
+                               : (hi > slab.bottom + tol && lo < slab.top - tol);
         if (joins) by_curve[u.curve].push_back(s);
       }
     }
@@ -181,7 +186,8 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
   auto cycle_of_face = [&](size_t k, int face) -> int {
     const auto& cycles = out.slabs[k].cycles;
     for (size_t c = 0; c < cycles.size(); ++c) {
-      if (std::binary_search(cycles[c].faces.begin(), cycles[c].faces.end(), face)) return static_cast<int>(c);
+      if (std::binary_search(cycles[c].faces.begin(), cycles[c].faces.end(), face))
+        return static_cast<int>(c);
     }
     return -1;
   };
@@ -207,21 +213,24 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
   for (size_t k = 0; k + 1 < out.slabs.size(); ++k) {
     for (size_t a = 0; a < out.slabs[k].cycles.size(); ++a) {
       for (size_t b = 0; b < out.slabs[k + 1].cycles.size(); ++b) {
-        if (out.slabs[k].cycles[a].faces == out.slabs[k + 1].cycles[b].faces) ds.unite(node(k, a), node(k + 1, b));
+        if (out.slabs[k].cycles[a].faces == out.slabs[k + 1].cycles[b].faces)
+          ds.unite(node(k, a), node(k + 1, b));
       }
     }
   }
   for (size_t k = 0; k < out.slabs.size(); ++k) {
     Slab& slab = out.slabs[k];
     std::map<int, std::vector<int>> classes;
-    for (size_t c = 0; c < slab.cycles.size(); ++c) classes[ds.find(node(k, c))].push_back(static_cast<int>(c));
+    for (size_t c = 0; c < slab.cycles.size(); ++c)
+      classes[ds.find(node(k, c))].push_back(static_cast<int>(c));
     std::vector<std::vector<int>> with_outer, holes_only;
     for (auto& [root, list] : classes) {
       int outers = 0;
       for (int c : list) outers += slab.cycles[static_cast<size_t>(c)].outer ? 1 : 0;
       if (outers > 1) {
         out.why = "two outer cycles of side faces (" +
-                  std::to_string(slab.cycles[static_cast<size_t>(list.front())].faces.front()) + ", ...) bound one region";
+                  std::to_string(slab.cycles[static_cast<size_t>(list.front())].faces.front()) +
+                  ", ...) bound one region";
         return out;
       }
       (outers ? with_outer : holes_only).push_back(list);
@@ -238,7 +247,8 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, c
     }
     for (auto& list : with_outer) {
       std::stable_sort(list.begin(), list.end(), [&](int a, int b) {
-        const bool oa = slab.cycles[static_cast<size_t>(a)].outer, ob = slab.cycles[static_cast<size_t>(b)].outer;
+        const bool oa = slab.cycles[static_cast<size_t>(a)].outer,
+                   ob = slab.cycles[static_cast<size_t>(b)].outer;
         return oa != ob ? oa : a < b;
       });
       slab.regions.push_back(list);

@@ -22,8 +22,8 @@ struct Cycle {
 };
 
 struct Slab {
-  double top = 0, bottom = 0;             ///< heights of the cap levels around it
-  std::vector<Cycle> cycles;              ///< ascending by first face
+  double top = 0, bottom = 0;  ///< heights of the cap levels around it
+  std::vector<Cycle> cycles;   ///< ascending by first face
   /// Regions: cycle indices, the outer cycle first, then holes ascending.
   std::vector<std::vector<int>> regions;
 };
@@ -40,7 +40,8 @@ struct SlabRegions {
   std::map<int, bool> outer_face;
 };
 
-SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order);
+SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
+                         const SweepOrder& order);
 
 /// Index of the slab's region holding cycle `c`, or -1.
 int region_of_cycle(const Slab& slab, int c);

@@ -83,7 +83,8 @@ bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& 
 
 // cite: Blacker 1996, sec. 6.1 (a smooth to optimize element quality).
 bool smart_smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
-                      const std::vector<mesh::Tri>& tris, const std::vector<char>& movable, const mesh::Vec3& normal,
+                      const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
+                      const mesh::Vec3& normal,
                       const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations) {
   const size_t n = points.size();
   std::vector<std::vector<int>> nbr(n), around_q(n), around_t(n);
@@ -109,11 +110,16 @@ bool smart_smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Q
   }
   auto local = [&](size_t v) {
     double worst = 1.0;
-    for (int f : around_q[v]) worst = std::min(worst, mesh::min_corner_sine(points, quads[static_cast<size_t>(f)].data(), 4, normal));
-    for (int f : around_t[v]) worst = std::min(worst, mesh::min_corner_sine(points, tris[static_cast<size_t>(f)].data(), 3, normal));
+    for (int f : around_q[v])
+      worst = std::min(
+          worst, mesh::min_corner_sine(points, quads[static_cast<size_t>(f)].data(), 4, normal));
+    for (int f : around_t[v])
+      worst = std::min(
+          worst, mesh::min_corner_sine(points, tris[static_cast<size_t>(f)].data(), 3, normal));
     return worst;
   };
-  const double before = std::min(min_quad_corner_quality(points, quads, normal), min_tri_corner_quality(points, tris, normal));
+  const double before = std::min(min_quad_corner_quality(points, quads, normal),
+                                 min_tri_corner_quality(points, tris, normal));
   const std::vector<mesh::Vec3> start = points;
   for (int it = 0; it < iterations; ++it) {
     bool moved = false;
@@ -134,7 +140,8 @@ bool smart_smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Q
     }
     if (!moved) break;
   }
-  const double after = std::min(min_quad_corner_quality(points, quads, normal), min_tri_corner_quality(points, tris, normal));
+  const double after = std::min(min_quad_corner_quality(points, quads, normal),
+                                min_tri_corner_quality(points, tris, normal));
   if (after > before) return true;
   points = start;
   return false;

@@ -42,7 +42,9 @@ bool smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& 
 /// where a plain Laplacian pulls nodes into a concave boundary. Returns
 /// whether the worst corner over the mesh improved.
 bool smart_smooth_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
-                      const std::vector<mesh::Tri>& tris, const std::vector<char>& movable, const mesh::Vec3& normal,
-                      const std::function<mesh::Vec3(const mesh::Vec3&)>& project, int iterations = 40);
+                      const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
+                      const mesh::Vec3& normal,
+                      const std::function<mesh::Vec3(const mesh::Vec3&)>& project,
+                      int iterations = 40);
 
 }  // namespace cooperage::cooper

@@ -54,7 +54,8 @@ void smooth_ends(SweepState& s) {
       for (const Piece* p : ends[e]) {
         for (auto q : p->quads) {
           q = ccw(q);
-          quads.push_back({local(q[0], p->cap), local(q[1], p->cap), local(q[2], p->cap), local(q[3], p->cap)});
+          quads.push_back(
+              {local(q[0], p->cap), local(q[1], p->cap), local(q[2], p->cap), local(q[3], p->cap)});
         }
         for (auto t : p->tris) {
           t = ccw(t);

@@ -18,10 +18,12 @@ void cap_adjacency(const SweepInput& in, std::vector<int>& start, std::vector<in
     edges.emplace_back(b, a);
   };
   for (const auto& q : in.quads) {
-    for (int k = 0; k < 4; ++k) add(q[static_cast<std::size_t>(k)], q[static_cast<std::size_t>((k + 1) % 4)]);
+    for (int k = 0; k < 4; ++k)
+      add(q[static_cast<std::size_t>(k)], q[static_cast<std::size_t>((k + 1) % 4)]);
   }
   for (const auto& t : in.tris) {
-    for (int k = 0; k < 3; ++k) add(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]);
+    for (int k = 0; k < 3; ++k)
+      add(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]);
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
@@ -38,7 +40,8 @@ std::string describe_bad(const SweepInput& in, long bad, double worst) {
   const long per_layer_h = static_cast<long>(in.quads.size());
   const long total_h = per_layer_h * in.layers;
   if (bad < total_h) {
-    s << "hex " << bad % std::max(1L, per_layer_h) << " of layer " << bad / std::max(1L, per_layer_h);
+    s << "hex " << bad % std::max(1L, per_layer_h) << " of layer "
+      << bad / std::max(1L, per_layer_h);
   } else {
     const long w = bad - total_h;
     const long per_layer_w = std::max(1L, static_cast<long>(in.tris.size()));
@@ -95,7 +98,8 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
   SweepResult out;
   if (in.layers < 1 || in.boundary < 3 || in.cap_nodes < in.boundary ||
       in.source.size() != static_cast<std::size_t>(in.cap_nodes) ||
-      in.ribs.size() != static_cast<std::size_t>(in.boundary) * static_cast<std::size_t>(in.layers + 1)) {
+      in.ribs.size() !=
+          static_cast<std::size_t>(in.boundary) * static_cast<std::size_t>(in.layers + 1)) {
     out.why = "inconsistent sweep input (layers, boundary, source or rib sizes)";
     return out;
   }
@@ -104,8 +108,8 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
   make_elements(in, out.hexes, out.wedges);
   long bad = -1;
   if (placed) {
-    out.min_scaled_jacobian = min_scaled_jacobian(out.points, out.hexes, out.wedges,
-                                                  options.min_scaled_jacobian, &bad);
+    out.min_scaled_jacobian =
+        min_scaled_jacobian(out.points, out.hexes, out.wedges, options.min_scaled_jacobian, &bad);
     if (bad < 0 && out.min_scaled_jacobian >= options.improve_below) {
       out.ok = true;
       return out;

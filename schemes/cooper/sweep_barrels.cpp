@@ -41,13 +41,14 @@ double area_2d(const SweepState& s, size_t b, const std::array<int, N>& f) {
 // Node under each node of the upper piece: the faces of matched pieces
 // correspond one for one (one was projected from the other).
 template <size_t N>
-void correspond(const std::vector<std::array<int, N>>& up, const std::vector<std::array<int, N>>& lo,
-                std::map<int, int>& below, int vid) {
+void correspond(const std::vector<std::array<int, N>>& up,
+                const std::vector<std::array<int, N>>& lo, std::map<int, int>& below, int vid) {
   if (up.size() != lo.size()) fail(vid, "matched subcaps carry different meshes");
   for (size_t k = 0; k < up.size(); ++k) {
     for (size_t c = 0; c < N; ++c) {
       const auto [it, added] = below.emplace(up[k][c], lo[k][c]);
-      if (!added && it->second != lo[k][c]) fail(vid, "a cap node has two images across its barrel");
+      if (!added && it->second != lo[k][c])
+        fail(vid, "a cap node has two images across its barrel");
     }
   }
 }
@@ -104,7 +105,8 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
       in.source.push_back(s.pos(cap[i]));
       if (static_cast<int>(i) < in.boundary) continue;
       const auto it = below.find(cap[i]);
-      if (it == below.end()) fail(s.vid, s.barrel_name(b) + ": a node of its upper cap has no image on its lower cap");
+      if (it == below.end())
+        fail(s.vid, s.barrel_name(b) + ": a node of its upper cap has no image on its lower cap");
       in.has_fixed_target[i] = 1;
       in.fixed_target[i] = s.pos(it->second);
     }
@@ -113,8 +115,10 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
     }
     if (log::threshold() <= log::Level::Debug) {
       std::vector<Vec3> lo(in.source);
-      for (size_t i = 0; i < cap.size(); ++i) lo[i] = i < st.ribs.size() ? s.db.node(st.ribs[i].back()) : in.fixed_target[i];
-      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + s.barrel_name(b) + ": worst corner sine of its caps " +
+      for (size_t i = 0; i < cap.size(); ++i)
+        lo[i] = i < st.ribs.size() ? s.db.node(st.ribs[i].back()) : in.fixed_target[i];
+      log::debug("cooper, volume " + std::to_string(s.vid) + ", " + s.barrel_name(b) +
+                 ": worst corner sine of its caps " +
                  std::to_string(min_quad_corner_quality(in.source, in.quads, st.d)) + " (upper), " +
                  std::to_string(min_quad_corner_quality(lo, in.quads, st.d)) + " (lower)");
     }
@@ -122,9 +126,10 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
     if (!sweep.ok) fail(s.vid, s.barrel_name(b) + ": " + sweep.why);
     if (log::threshold() <= log::Level::Debug) {
       char line[200];
-      std::snprintf(line, sizeof line, "%s: %d layers, %zu quads, %zu triangles per layer, min scaled Jacobian %.4f%s",
-                    s.barrel_name(b).c_str(), st.layers, in.quads.size(), in.tris.size(), sweep.min_scaled_jacobian,
-                    sweep.smoothed ? " (smoothed)" : "");
+      std::snprintf(line, sizeof line,
+                    "%s: %d layers, %zu quads, %zu triangles per layer, min scaled Jacobian %.4f%s",
+                    s.barrel_name(b).c_str(), st.layers, in.quads.size(), in.tris.size(),
+                    sweep.min_scaled_jacobian, sweep.smoothed ? " (smoothed)" : "");
       log::debug("cooper, volume " + std::to_string(s.vid) + ", " + line);
     }
     const size_t n = cap.size();

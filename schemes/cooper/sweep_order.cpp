@@ -32,7 +32,8 @@ std::string node_name(int key) {
 
 // cite: Blacker 1996, sec. 4 (ribs progress from the upper cap down the
 // sides; upper/lower designations are arbitrary but consistent per barrel).
-SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, const OrderAnchor& anchor) {
+SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice,
+                       const OrderAnchor& anchor) {
   SweepOrder out;
   ParityGraph g;
   for (int s : lattice.sides) g.adj[side_key(s)];
@@ -56,8 +57,8 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
     for (size_t i = 1; i < list.size(); ++i) {
       if (list[i].first == list[0].first) continue;  // a seam walked up and down in one face
       g.add(side_key(list[0].first), side_key(list[i].first), list[0].second ^ list[i].second,
-            "curve " + std::to_string(curve) + " links the sides " + std::to_string(list[0].first) + " and " +
-                std::to_string(list[i].first));
+            "curve " + std::to_string(curve) + " links the sides " + std::to_string(list[0].first) +
+                " and " + std::to_string(list[i].first));
     }
   }
   // A curve running along between two stacked sides: one above, one below.
@@ -68,8 +69,8 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
       if (list[i]->face == list[0]->face) continue;
       const int a = list[0]->leaving_sign > 0 ? 1 : 0, b = list[i]->leaving_sign > 0 ? 1 : 0;
       g.add(side_key(list[0]->face), side_key(list[i]->face), 1 ^ a ^ b,
-            "curve " + std::to_string(curve) + " joins the stacked sides " + std::to_string(list[0]->face) +
-                " and " + std::to_string(list[i]->face));
+            "curve " + std::to_string(curve) + " joins the stacked sides " +
+                std::to_string(list[0]->face) + " and " + std::to_string(list[i]->face));
     }
   }
   // Anchors, then propagation (deterministic: ascending keys).
@@ -87,10 +88,13 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
   if (anchor.down) {
     const geom::Vec3 d = anchor.down->normalized();
     for (int c : lattice.caps) {
-      if (!fix(cap_key(c), facts.face(c)->normal.dot(d) < 0 ? 1 : 0, "its normal against the sweep axis")) return out;
+      if (!fix(cap_key(c), facts.face(c)->normal.dot(d) < 0 ? 1 : 0,
+               "its normal against the sweep axis"))
+        return out;
     }
   } else if (anchor.upper_cap) {
-    if (!fix(cap_key(anchor.upper_cap), anchor.flip ? 0 : 1, "the cap the sweep starts from")) return out;
+    if (!fix(cap_key(anchor.upper_cap), anchor.flip ? 0 : 1, "the cap the sweep starts from"))
+      return out;
   }
   if (queue.empty()) {
     out.why = "no anchor for the sweep direction";
@@ -105,8 +109,9 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
       if (added) {
         queue.push_back(e.to);
       } else if (it->second != want) {
-        out.why = "the sweep cannot run one way through " + node_name(key) + " and " + node_name(e.to) + " (" +
-                  e.why + "; Blacker 1996, sec. 3: one projection direction along every shared face)";
+        out.why = "the sweep cannot run one way through " + node_name(key) + " and " +
+                  node_name(e.to) + " (" + e.why +
+                  "; Blacker 1996, sec. 3: one projection direction along every shared face)";
         return out;
       }
     }
@@ -138,8 +143,10 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
     }
     const double tol = 1e-6 * facts.size();
     for (size_t i = 0; i < lattice.chains.size(); ++i) {
-      if (out.height[static_cast<size_t>(out.chain_upper[i])] <= out.height[static_cast<size_t>(out.chain_lower[i])] + tol) {
-        out.why = "side surface " + std::to_string(lattice.chains[i].face) + " links its levels against the sweep axis";
+      if (out.height[static_cast<size_t>(out.chain_upper[i])] <=
+          out.height[static_cast<size_t>(out.chain_lower[i])] + tol) {
+        out.why = "side surface " + std::to_string(lattice.chains[i].face) +
+                  " links its levels against the sweep axis";
         return out;
       }
     }
@@ -150,7 +157,8 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
     std::vector<int> indegree(n, 0);
     std::set<std::pair<int, int>> seen;
     for (size_t i = 0; i < lattice.chains.size(); ++i) {
-      below[static_cast<size_t>(out.chain_upper[i])].push_back({out.chain_lower[i], lattice.chains[i].length});
+      below[static_cast<size_t>(out.chain_upper[i])].push_back(
+          {out.chain_lower[i], lattice.chains[i].length});
       ++indegree[static_cast<size_t>(out.chain_lower[i])];
     }
     std::vector<double> depth(n, 0.0);
@@ -164,7 +172,8 @@ SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, con
       ready.pop_front();
       ++done;
       for (const auto& [w, len] : below[static_cast<size_t>(u)]) {
-        depth[static_cast<size_t>(w)] = std::max(depth[static_cast<size_t>(w)], depth[static_cast<size_t>(u)] + len);
+        depth[static_cast<size_t>(w)] =
+            std::max(depth[static_cast<size_t>(w)], depth[static_cast<size_t>(u)] + len);
         if (--indegree[static_cast<size_t>(w)] == 0) ready.push_back(w);
       }
     }

@@ -34,17 +34,18 @@ struct OrderAnchor {
 struct SweepOrder {
   bool ok = false;
   std::string why;
-  std::map<int, bool> upper;          ///< cap -> upper cap (the volume below it)
-  std::map<int, int> face_up;         ///< side -> +1 when its lattice +j runs up, else -1
-  std::vector<int> chain_upper;       ///< per chain of the lattice: its upper level class
-  std::vector<int> chain_lower;       ///< ... and its lower one
-  std::vector<double> height;         ///< per level class; larger is upstream
-  bool straight = false;              ///< heights are projections on `down`
+  std::map<int, bool> upper;     ///< cap -> upper cap (the volume below it)
+  std::map<int, int> face_up;    ///< side -> +1 when its lattice +j runs up, else -1
+  std::vector<int> chain_upper;  ///< per chain of the lattice: its upper level class
+  std::vector<int> chain_lower;  ///< ... and its lower one
+  std::vector<double> height;    ///< per level class; larger is upstream
+  bool straight = false;         ///< heights are projections on `down`
 };
 
 /// Orients the lattice. Not ok when the parities contradict each other, a
 /// part is not connected to the anchor, or (axis mode) a chain runs
 /// against the axis.
-SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice, const OrderAnchor& anchor);
+SweepOrder sweep_order(const VolumeFacts& facts, const SideLattice& lattice,
+                       const OrderAnchor& anchor);
 
 }  // namespace cooperage::cooper

@@ -30,12 +30,12 @@ namespace cooperage::cooper::detail {
 /// barrel (a real cap) or two (a virtual cap between them).
 struct Piece {
   int id = 0;
-  int cap = 0;              ///< real cap face, or 0
-  int interface = -1;       ///< virtual: index into the tree's interfaces
-  int upper_of = -1;        ///< barrel whose upper end holds it, or -1
-  int lower_of = -1;        ///< barrel whose lower end holds it, or -1
-  bool premeshed = false;   ///< its cap was meshed by a surface scheme
-  bool alive = true;        ///< false once split into other pieces
+  int cap = 0;                          ///< real cap face, or 0
+  int interface = -1;                   ///< virtual: index into the tree's interfaces
+  int upper_of = -1;                    ///< barrel whose upper end holds it, or -1
+  int lower_of = -1;                    ///< barrel whose lower end holds it, or -1
+  bool premeshed = false;               ///< its cap was meshed by a surface scheme
+  bool alive = true;                    ///< false once split into other pieces
   std::vector<std::vector<int>> loops;  ///< node loops, outer first
   /// Its mesh once the stack is meshed (node ids; faces counter-clockwise
   /// about the natural normal of its cap for a real piece, arbitrary else).
@@ -47,8 +47,8 @@ struct Piece {
 /// A barrel while it is being swept.
 struct BarrelState {
   int layers = 0;
-  std::vector<std::vector<int>> ribs;     ///< MeshDB nodes, upper to lower, layers + 1 each
-  std::vector<std::size_t> loop_starts;   ///< first rib of every rib loop
+  std::vector<std::vector<int>> ribs;         ///< MeshDB nodes, upper to lower, layers + 1 each
+  std::vector<std::size_t> loop_starts;       ///< first rib of every rib loop
   std::vector<std::vector<int>> upper_loops;  ///< rib starts by loop (node ids)
   std::vector<std::vector<int>> lower_loops;  ///< rib ends by loop (node ids)
   // Chart: both ends in one plane, the lower end mapped onto the upper.
@@ -57,7 +57,7 @@ struct BarrelState {
   geom::Vec3 d = geom::Vec3::UnitZ();  ///< from the upper ring's centre to the lower one's
   geom::Vec3 u = geom::Vec3::UnitX();
   geom::Vec3 v = geom::Vec3::UnitY();
-  double level = 0;                    ///< the upper centre along d
+  double level = 0;  ///< the upper centre along d
   /// Ribs between the ends (exterior and interior), node ids (upper, lower).
   std::vector<std::pair<int, int>> rib_pairs;
   /// Matched pieces (upper, lower) after imprinting.
@@ -69,8 +69,13 @@ struct BarrelState {
 };
 
 struct SweepState {
-  SweepState(const scheme::VolumeView& view, const VolumePlan& volume_plan, const scheme::PolygonMesher* polygon_mesher)
-      : vid(view.volume_id), model(view.model), db(*view.mesh), plan(volume_plan), mesher(polygon_mesher) {}
+  SweepState(const scheme::VolumeView& view, const VolumePlan& volume_plan,
+             const scheme::PolygonMesher* polygon_mesher)
+      : vid(view.volume_id),
+        model(view.model),
+        db(*view.mesh),
+        plan(volume_plan),
+        mesher(polygon_mesher) {}
 
   int vid;
   const geom::Model& model;
@@ -80,7 +85,7 @@ struct SweepState {
   scheme::EntityMesh out;
   std::unordered_map<int, int> local;  ///< MeshDB node -> out node
   std::vector<BarrelState> barrels;
-  std::vector<Piece> pieces;           ///< by id
+  std::vector<Piece> pieces;  ///< by id
   /// Interface -> its rib-end loops and the caps inside them (node ids).
   std::vector<std::vector<std::vector<int>>> interface_loops;
 

@@ -7,9 +7,11 @@ namespace cooperage::cooper {
 // cite: Blacker 1996, sec. 2 (the process: sides meshed, barrels formed,
 // subcaps imprinted, cap stacks meshed, interior nodes projected, elements).
 scheme::EntityMesh sweep_volume(const scheme::VolumeView& view, const VolumePlan& plan,
-                                const scheme::PolygonMesher* polygon_mesher, std::vector<BarrelReport>* reports) {
+                                const scheme::PolygonMesher* polygon_mesher,
+                                std::vector<BarrelReport>* reports) {
   if (!view.mesh) detail::fail(view.volume_id, "cooper needs the meshed side and cap surfaces");
-  if (!plan.ok) throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(view.volume_id), plan.why);
+  if (!plan.ok)
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(view.volume_id), plan.why);
   detail::SweepState s(view, plan, polygon_mesher);
   detail::form_ribs(s);
   detail::make_charts(s);

@@ -19,8 +19,8 @@ namespace cooperage::cooper {
 
 /// What happened in one barrel.
 struct BarrelReport {
-  int barrel = 0;                 ///< index in the plan's tree
-  std::vector<int> upper_caps;    ///< its real upper caps
+  int barrel = 0;               ///< index in the plan's tree
+  std::vector<int> upper_caps;  ///< its real upper caps
   int layers = 0;
   double min_scaled_jacobian = 1.0;
   bool smoothed = false;

@@ -71,9 +71,11 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
       }
     }
     if (s.loops.size() == 1) {
-      for (const auto& corner : scheme::loop_corners(model, id, 0)) f.angles.push_back(corner.angle);
+      for (const auto& corner : scheme::loop_corners(model, id, 0))
+        f.angles.push_back(corner.angle);
       if (submap) {
-        const scheme::Applicability a = submap->applicable(scheme::SurfaceView{model, id, nullptr, settings});
+        const scheme::Applicability a =
+            submap->applicable(scheme::SurfaceView{model, id, nullptr, settings});
         f.submappable = a.ok;
         f.submap_score = a.score;
         f.submap_why = a.why;
@@ -94,11 +96,13 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     cf.length = c.length;
     const auto [t0, t1] = c.geometry->range();
     constexpr int kSamples = 16;
-    for (int k = 0; k <= kSamples; ++k) cf.samples.push_back(c.geometry->point(t0 + (t1 - t0) * k / kSamples));
+    for (int k = 0; k <= kSamples; ++k)
+      cf.samples.push_back(c.geometry->point(t0 + (t1 - t0) * k / kSamples));
     out.curves[curve] = std::move(cf);
     for (int v : {c.start_vertex, c.end_vertex}) out.vertices[v] = model.vertex(v).point;
     if (faces.size() == 2) {
-      out.dihedral[curve] = cap_dihedral_degrees(model, volume_id, *faces.begin(), *faces.rbegin(), curve);
+      out.dihedral[curve] =
+          cap_dihedral_degrees(model, volume_id, *faces.begin(), *faces.rbegin(), curve);
     }
   }
   return out;

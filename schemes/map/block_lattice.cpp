@@ -56,7 +56,8 @@ class Recovery {
   BlockLattice run() {
     std::vector<int> corners;
     for (const auto& [node, count] : valence_) {
-      if (count == 3) corners.push_back(node);
+      if (count == 3)
+        corners.push_back(node);
       else if (count != 4) {
         throw Failure{"node " + std::to_string(node) + " is in " + std::to_string(count) +
                       " boundary quads; a mapped block has 3 at its 8 corners and 4 elsewhere"};
@@ -77,8 +78,7 @@ class Recovery {
     out_.nj = static_cast<int>(lj.size()) - 1;
     out_.nk = static_cast<int>(lk.size()) - 1;
     const int ni = out_.ni, nj = out_.nj, nk = out_.nk;
-    const size_t expected =
-        2 * static_cast<size_t>(ni * nj + nj * nk + ni * nk);
+    const size_t expected = 2 * static_cast<size_t>(ni * nj + nj * nk + ni * nk);
     if (expected != quads_.size()) {
       throw Failure{"block lines of " + std::to_string(ni) + ", " + std::to_string(nj) + ", " +
                     std::to_string(nk) + " intervals need " + std::to_string(expected) +
@@ -95,11 +95,14 @@ class Recovery {
     fill(li, lj, [&](int a, int b) { return index(a, b, 0); });
     fill(li, lk, [&](int a, int b) { return index(a, 0, b); });
     fill(lj, lk, [&](int a, int b) { return index(0, a, b); });
-    fill(line(nj, [&](int j) { return get(ni, j, 0); }), line(nk, [&](int k) { return get(ni, 0, k); }),
+    fill(line(nj, [&](int j) { return get(ni, j, 0); }),
+         line(nk, [&](int k) { return get(ni, 0, k); }),
          [&](int a, int b) { return index(ni, a, b); });
-    fill(line(ni, [&](int i) { return get(i, nj, 0); }), line(nk, [&](int k) { return get(0, nj, k); }),
+    fill(line(ni, [&](int i) { return get(i, nj, 0); }),
+         line(nk, [&](int k) { return get(0, nj, k); }),
          [&](int a, int b) { return index(a, nj, b); });
-    fill(line(ni, [&](int i) { return get(i, 0, nk); }), line(nj, [&](int j) { return get(0, j, nk); }),
+    fill(line(ni, [&](int i) { return get(i, 0, nk); }),
+         line(nj, [&](int j) { return get(0, j, nk); }),
          [&](int a, int b) { return index(a, b, nk); });
     out_.ok = true;
     return out_;
@@ -133,8 +136,10 @@ class Recovery {
       int next = -1;
       for (int r : neighbours_.at(q)) {
         if (r == p) continue;
-        if (quad_has_edge(quads_[around[0]], q, r) || quad_has_edge(quads_[around[1]], q, r)) continue;
-        if (next >= 0) throw Failure{"node " + std::to_string(q) + " has no unique straight continuation"};
+        if (quad_has_edge(quads_[around[0]], q, r) || quad_has_edge(quads_[around[1]], q, r))
+          continue;
+        if (next >= 0)
+          throw Failure{"node " + std::to_string(q) + " has no unique straight continuation"};
         next = r;
       }
       if (next < 0) throw Failure{"node " + std::to_string(q) + " has no straight continuation"};

@@ -61,9 +61,9 @@ MapSides analyse_map_surface(const geom::Model& model, int surface_id) {
     if (*c.type == scheme::VertexType::End) end_vertices.push_back(c.vertex);
   }
   if (end_vertices.size() != 4) {
-    std::vector<int> shown(end_vertices.begin(),
-                           end_vertices.begin() + static_cast<long>(std::min<size_t>(
-                                                      end_vertices.size(), 6)));
+    std::vector<int> shown(
+        end_vertices.begin(),
+        end_vertices.begin() + static_cast<long>(std::min<size_t>(end_vertices.size(), 6)));
     out.why = name + ": " + std::to_string(end_vertices.size()) + " END vertices";
     if (!shown.empty()) {
       out.why += " (" + join_ids(shown, ", ") + (end_vertices.size() > 6 ? ", ...)" : ")");
@@ -100,8 +100,8 @@ void add_map_constraints(int surface_id, const MapSides& sides,
     std::sort(b.begin(), b.end());
     if (a == b) continue;  // e.g. a cylinder's seam against itself: always true
     problem.add_equal(lhs, rhs,
-                      "surface " + std::to_string(surface_id) + " (map): curves " +
-                          join_ids(lhs) + " = " + join_ids(rhs));
+                      "surface " + std::to_string(surface_id) + " (map): curves " + join_ids(lhs) +
+                          " = " + join_ids(rhs));
   }
 }
 

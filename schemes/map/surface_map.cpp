@@ -25,7 +25,8 @@ std::vector<int> side_chain(const mesh::MeshDB& db, int surface_id,
       fail(surface_id, "curve " + std::to_string(use.curve) + " is not meshed");
     }
     std::vector<int> nodes = db.curve_nodes(use.curve);
-    if (nodes.size() < 2) fail(surface_id, "curve " + std::to_string(use.curve) + " has no intervals");
+    if (nodes.size() < 2)
+      fail(surface_id, "curve " + std::to_string(use.curve) + " has no intervals");
     if (use.sense == geom::Sense::Reversed) std::reverse(nodes.begin(), nodes.end());
     if (!chain.empty()) {
       if (chain.back() != nodes.front()) {
@@ -53,10 +54,9 @@ scheme::Applicability SurfaceMap::applicable(const scheme::SurfaceView& view) co
   const MapSides sides = analyse_map_surface(view.model, view.surface_id);
   if (!sides.ok) return scheme::Applicability::no(sides.why);
   return scheme::Applicability::yes(
-      sides.score, "surface " + std::to_string(view.surface_id) + ": 4 END vertices (" +
-                       join_ids({sides.corner_vertices.begin(), sides.corner_vertices.end()},
-                                ", ") +
-                       ")");
+      sides.score,
+      "surface " + std::to_string(view.surface_id) + ": 4 END vertices (" +
+          join_ids({sides.corner_vertices.begin(), sides.corner_vertices.end()}, ", ") + ")");
 }
 
 void SurfaceMap::constrain(const scheme::SurfaceView& view,
@@ -85,9 +85,9 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
   const int n = static_cast<int>(chains[0].size()) - 1;
   const int m = static_cast<int>(chains[1].size()) - 1;
   if (static_cast<int>(chains[2].size()) - 1 != n || static_cast<int>(chains[3].size()) - 1 != m) {
-    fail(sid, "opposite sides differ in intervals: curves " + join_ids(side_curves(sides.sides[0])) +
-                  " have " + std::to_string(n) + ", curves " +
-                  join_ids(side_curves(sides.sides[2])) + " have " +
+    fail(sid, "opposite sides differ in intervals: curves " +
+                  join_ids(side_curves(sides.sides[0])) + " have " + std::to_string(n) +
+                  ", curves " + join_ids(side_curves(sides.sides[2])) + " have " +
                   std::to_string(chains[2].size() - 1) + "; curves " +
                   join_ids(side_curves(sides.sides[1])) + " have " + std::to_string(m) +
                   ", curves " + join_ids(side_curves(sides.sides[3])) + " have " +
@@ -96,10 +96,10 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
 
   // Lattice (i, j): i along side 0, j along side 1; the loop runs
   // counter-clockwise about the natural normal, so i x j follows it.
-  std::vector<int> bottom = chains[0];                              // (i, 0)
-  std::vector<int> right = chains[1];                               // (n, j)
-  std::vector<int> top(chains[2].rbegin(), chains[2].rend());       // (i, m)
-  std::vector<int> left(chains[3].rbegin(), chains[3].rend());      // (0, j)
+  std::vector<int> bottom = chains[0];                          // (i, 0)
+  std::vector<int> right = chains[1];                           // (n, j)
+  std::vector<int> top(chains[2].rbegin(), chains[2].rend());   // (i, m)
+  std::vector<int> left(chains[3].rbegin(), chains[3].rend());  // (0, j)
   const Grid2 grid =
       tfi_2d(points_of(db, bottom), points_of(db, top), points_of(db, left), points_of(db, right));
 
@@ -116,7 +116,8 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
   // 65,536 intervals (issue 21); local node ids are int, so refuse beyond.
   const size_t grid_nodes = (static_cast<size_t>(n) + 1) * (static_cast<size_t>(m) + 1);
   if (grid_nodes > static_cast<size_t>(std::numeric_limits<int>::max()))
-    fail(sid, std::to_string(n) + " x " + std::to_string(m) + " intervals are more than a mesh can hold");
+    fail(sid, std::to_string(n) + " x " + std::to_string(m) +
+                  " intervals are more than a mesh can hold");
   const geom::SurfaceGeometry& geometry = *view.surface().geometry;
   std::vector<int> local(grid_nodes);
   auto at = [&](int i, int j) -> int& {
@@ -125,11 +126,16 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= m; ++j) {
       const size_t ui = static_cast<size_t>(i), uj = static_cast<size_t>(j);
-      if (j == 0) at(i, j) = boundary_local(bottom[ui]);
-      else if (j == m) at(i, j) = boundary_local(top[ui]);
-      else if (i == 0) at(i, j) = boundary_local(left[uj]);
-      else if (i == n) at(i, j) = boundary_local(right[uj]);
-      else at(i, j) = out.add(geometry.project(grid(i, j)).point);
+      if (j == 0)
+        at(i, j) = boundary_local(bottom[ui]);
+      else if (j == m)
+        at(i, j) = boundary_local(top[ui]);
+      else if (i == 0)
+        at(i, j) = boundary_local(left[uj]);
+      else if (i == n)
+        at(i, j) = boundary_local(right[uj]);
+      else
+        at(i, j) = out.add(geometry.project(grid(i, j)).point);
     }
   }
   out.quads.reserve(static_cast<size_t>(n) * static_cast<size_t>(m));

@@ -36,10 +36,22 @@ Grid2 tfi_2d(const std::vector<Vec3>& bottom, const std::vector<Vec3>& top,
     const size_t ui = static_cast<size_t>(i);
     for (int j = 0; j <= g.m; ++j) {
       const size_t uj = static_cast<size_t>(j);
-      if (j == 0) { g(i, j) = bottom[ui]; continue; }
-      if (j == g.m) { g(i, j) = top[ui]; continue; }
-      if (i == 0) { g(i, j) = left[uj]; continue; }
-      if (i == g.n) { g(i, j) = right[uj]; continue; }
+      if (j == 0) {
+        g(i, j) = bottom[ui];
+        continue;
+      }
+      if (j == g.m) {
+        g(i, j) = top[ui];
+        continue;
+      }
+      if (i == 0) {
+        g(i, j) = left[uj];
+        continue;
+      }
+      if (i == g.n) {
+        g(i, j) = right[uj];
+        continue;
+      }
       // u = fb + v (ft - fb), v = fl + u (fr - fl), solved together.
       const double du = ft[ui] - fb[ui];
       const double dv = fr[uj] - fl[uj];

@@ -38,8 +38,8 @@ std::string block_problem(const geom::Model& model, int volume_id, double* score
   for (const auto& use : shell) {
     const MapSides sides = analyse_map_surface(model, use.surface);
     if (!sides.ok) {
-      return name + ": surface " + std::to_string(use.surface) + " is not mappable (" +
-             sides.why + ")";
+      return name + ": surface " + std::to_string(use.surface) + " is not mappable (" + sides.why +
+             ")";
     }
     worst = std::min(worst, sides.score);
     for (const auto& side : sides.sides) {
@@ -80,8 +80,8 @@ scheme::Applicability VolumeMap::applicable(const scheme::VolumeView& view) cons
   double score = 0.0;
   const std::string why = block_problem(view.model, view.volume_id, &score);
   if (!why.empty()) return scheme::Applicability::no(why);
-  return scheme::Applicability::yes(score, volume_name(view.volume_id) +
-                                               ": 6 mappable surfaces forming a block");
+  return scheme::Applicability::yes(
+      score, volume_name(view.volume_id) + ": 6 mappable surfaces forming a block");
 }
 
 void VolumeMap::constrain(const scheme::VolumeView& view,
@@ -148,9 +148,9 @@ scheme::EntityMesh VolumeMap::mesh(const scheme::VolumeView& view,
     const int kt = flip ? k : k + 1;
     for (int j = 0; j < grid.nj; ++j) {
       for (int i = 0; i < grid.ni; ++i) {
-        const size_t ids[8] = {grid.index(i, j, kb),     grid.index(i + 1, j, kb),
+        const size_t ids[8] = {grid.index(i, j, kb),         grid.index(i + 1, j, kb),
                                grid.index(i + 1, j + 1, kb), grid.index(i, j + 1, kb),
-                               grid.index(i, j, kt),     grid.index(i + 1, j, kt),
+                               grid.index(i, j, kt),         grid.index(i + 1, j, kt),
                                grid.index(i + 1, j + 1, kt), grid.index(i, j + 1, kt)};
         mesh::Hex hex;
         std::array<Vec3, 8> x;

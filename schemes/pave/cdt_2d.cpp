@@ -16,10 +16,9 @@
 namespace cooperage::pave::detail {
 
 using cdt::Cdt;
-using cdt::Tri;
 using cdt::edge_key;
+using cdt::Tri;
 using V2 = Eigen::Vector2d;
-
 
 Triangulation2D constrained_delaunay(const CdtInput& input) {
   const int n = static_cast<int>(input.points.size());
@@ -49,7 +48,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
   }
   int hint = super;
   for (int i : order) {
-    int loc = cdt.locate(cdt.pt(i), cdt.tri(hint).alive ? hint : cdt.vt[static_cast<size_t>(n)], false);
+    int loc =
+        cdt.locate(cdt.pt(i), cdt.tri(hint).alive ? hint : cdt.vt[static_cast<size_t>(n)], false);
     if (loc < 0) throw std::runtime_error("point location failed");
     cdt.tri(loc).inside = false;
     if (!cdt.insert(i, loc, false)) throw std::runtime_error("duplicate or degenerate loop points");
@@ -67,7 +67,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
   }
   cdt.mark_loop_edges(keys);
   for (const auto& loop : input.loops) {
-    for (size_t k = 0; k < loop.size(); ++k) cdt.mark_constrained(loop[k], loop[(k + 1) % loop.size()]);
+    for (size_t k = 0; k < loop.size(); ++k)
+      cdt.mark_constrained(loop[k], loop[(k + 1) % loop.size()]);
   }
   cdt.legalize_all();
 
@@ -132,9 +133,11 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
       const V2 center = a + off;
       const double R = off.norm();
       const double h = cdt.mean_size(T);
-      const double lmin = std::sqrt(std::min({ab.squaredNorm(), ac.squaredNorm(), (cc - b).squaredNorm()}));
+      const double lmin =
+          std::sqrt(std::min({ab.squaredNorm(), ac.squaredNorm(), (cc - b).squaredNorm()}));
       // Too big, or fairly big with a short edge (input.max_radius).
-      const bool bad = R > input.max_radius * h || (R > 0.7 * input.max_radius * h && R > 1.1 * lmin);
+      const bool bad =
+          R > input.max_radius * h || (R > 0.7 * input.max_radius * h && R > 1.1 * lmin);
       if (!bad) continue;
       const int loc = cdt.locate(center, ti, true);
       if (loc < 0 || !cdt.tri(loc).inside) continue;
@@ -164,7 +167,8 @@ Triangulation2D constrained_delaunay(const CdtInput& input) {
           const Tri& T = cdt.tri(ti);
           size_t i = 0;
           while (T.v[i] != v) ++i;
-          const V2 e0 = cdt.pt(T.v[(i + 1) % 3]) - cdt.pt(v), e1 = cdt.pt(T.v[(i + 2) % 3]) - cdt.pt(v);
+          const V2 e0 = cdt.pt(T.v[(i + 1) % 3]) - cdt.pt(v),
+                   e1 = cdt.pt(T.v[(i + 2) % 3]) - cdt.pt(v);
           const double ang = std::atan2(e0.x() * e1.y() - e0.y() * e1.x(), e0.dot(e1));
           if (ang > widest) {
             widest = ang;

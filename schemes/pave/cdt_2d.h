@@ -22,15 +22,16 @@ namespace cooperage::pave::detail {
 
 /// A triangulation as plain arrays.
 struct Triangulation2D {
-  std::vector<Eigen::Vector2d> points;   ///< input points first (in input order), then Steiner points
+  std::vector<Eigen::Vector2d>
+      points;  ///< input points first (in input order), then Steiner points
   std::vector<std::array<int, 3>> tris;  ///< counter-clockwise, inside the loops only
 };
 
 struct CdtInput {
-  std::vector<Eigen::Vector2d> points;   ///< all loop points
-  std::vector<double> sizes;             ///< target edge length at each point, > 0
-  std::vector<std::vector<int>> loops;   ///< closed rings of point indices: outer CCW, holes CW
-  bool refine = true;                    ///< insert interior points at the local size
+  std::vector<Eigen::Vector2d> points;  ///< all loop points
+  std::vector<double> sizes;            ///< target edge length at each point, > 0
+  std::vector<std::vector<int>> loops;  ///< closed rings of point indices: outer CCW, holes CW
+  bool refine = true;                   ///< insert interior points at the local size
   /// Refinement splits a triangle whose circumradius R exceeds max_radius
   /// times the local size h, or 0.7 max_radius h with an edge shorter than
   /// R / 1.1. Delaunay refinement leaves triangles well below the bound, so

@@ -21,7 +21,6 @@
 
 namespace cooperage::pave::detail::cdt {
 
-
 using V2 = Eigen::Vector2d;
 
 // The predicates are framework/mesh2d's (exact signs, Shewchuk's adaptive
@@ -41,7 +40,8 @@ inline bool circumcentre_offset(const V2& a, const V2& b, const V2& c, V2& offse
   const double d = 2.0 * (ab.x() * ac.y() - ab.y() * ac.x());
   if (!(d > 0)) return false;
   offset = V2(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
-              ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d;
+              ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) /
+           d;
   return true;
 }
 
@@ -52,8 +52,8 @@ inline std::uint64_t edge_key(int a, int b) {
 }
 
 struct Tri {
-  std::array<int, 3> v{};          // counter-clockwise
-  std::array<int, 3> n{-1, -1, -1};  // neighbour across the edge opposite v[i]
+  std::array<int, 3> v{};                      // counter-clockwise
+  std::array<int, 3> n{-1, -1, -1};            // neighbour across the edge opposite v[i]
   std::array<bool, 3> c{false, false, false};  // that edge is a loop edge
   bool alive = true;
   bool inside = true;
@@ -94,7 +94,8 @@ class Cdt {
   Tri& tri(int i) { return t[static_cast<size_t>(i)]; }
   /// Mean target size at the corners of T.
   double mean_size(const Tri& T) const {
-    return (size[static_cast<size_t>(T.v[0])] + size[static_cast<size_t>(T.v[1])] + size[static_cast<size_t>(T.v[2])]) /
+    return (size[static_cast<size_t>(T.v[0])] + size[static_cast<size_t>(T.v[1])] +
+            size[static_cast<size_t>(T.v[2])]) /
            3.0;
   }
   const V2& pt(int i) const { return p[static_cast<size_t>(i)]; }
@@ -104,7 +105,8 @@ class Cdt {
     if (nb < 0) return;
     Tri& N = tri(nb);
     for (int k = 0; k < 3; ++k) {
-      const int x = N.v[static_cast<size_t>((k + 1) % 3)], y = N.v[static_cast<size_t>((k + 2) % 3)];
+      const int x = N.v[static_cast<size_t>((k + 1) % 3)],
+                y = N.v[static_cast<size_t>((k + 2) % 3)];
       if ((x == a && y == b) || (x == b && y == a)) {
         N.n[static_cast<size_t>(k)] = neu;
         return;
@@ -402,7 +404,9 @@ class Cdt {
         const Tri& S = tri(si);
         int y = -1;
         for (int k : S.v) {
-          if (k != T.v[static_cast<size_t>((i + 1) % 3)] && k != T.v[static_cast<size_t>((i + 2) % 3)]) y = k;
+          if (k != T.v[static_cast<size_t>((i + 1) % 3)] &&
+              k != T.v[static_cast<size_t>((i + 2) % 3)])
+            y = k;
         }
         if (incircle(pt(T.v[0]), pt(T.v[1]), pt(T.v[2]), pt(y)) > 1e-14 && flip(ti, i)) {
           stack.push_back(ti);
@@ -413,6 +417,5 @@ class Cdt {
     }
   }
 };
-
 
 }  // namespace cooperage::pave::detail::cdt

@@ -33,11 +33,14 @@ struct QuadsOf {
       }
     }
   }
-  Row operator[](size_t i) const { return Row{items.data() + start[i], items.data() + start[i + 1]}; }
+  Row operator[](size_t i) const {
+    return Row{items.data() + start[i], items.data() + start[i + 1]};
+  }
 };
 
 /// Drops nodes no quad uses (never fixed ones), keeping the node order.
-void compact(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::vector<char>& fixed) {
+void compact(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads,
+             std::vector<char>& fixed) {
   const size_t n = pts.size();
   std::vector<int> used(n, 0);
   for (const Quad& q : quads) {
@@ -62,7 +65,8 @@ void compact(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::v
 
 }  // namespace
 
-int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads, std::vector<char>& fixed) {
+int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads,
+                      std::vector<char>& fixed) {
   const size_t n = pts.size();
   const QuadsOf of(n, quads);
   std::vector<Quad> trial;
@@ -76,10 +80,14 @@ int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quad
       const int c = q[static_cast<size_t>(r + 2)], d = q[static_cast<size_t>((r + 3) % 4)];
       const QuadsOf::Row qa = of[static_cast<size_t>(a)];
       const QuadsOf::Row qc = of[static_cast<size_t>(c)];
-      if (fixed[static_cast<size_t>(a)] || fixed[static_cast<size_t>(c)] || qa.size() != 3 || qc.size() != 3) continue;
+      if (fixed[static_cast<size_t>(a)] || fixed[static_cast<size_t>(c)] || qa.size() != 3 ||
+          qc.size() != 3)
+        continue;
       if (of[static_cast<size_t>(b)].size() + of[static_cast<size_t>(d)].size() < 9) continue;
       bool free_ok = true;
-      for (int x : qa) free_ok = free_ok && !touched[static_cast<size_t>(x)] && (x == k || std::find(qc.begin(), qc.end(), x) == qc.end());
+      for (int x : qa)
+        free_ok = free_ok && !touched[static_cast<size_t>(x)] &&
+                  (x == k || std::find(qc.begin(), qc.end(), x) == qc.end());
       for (int x : qc) free_ok = free_ok && !touched[static_cast<size_t>(x)];
       if (!free_ok) continue;
       // Merge c into a at the middle of the diagonal; keep it only if a's
@@ -128,7 +136,6 @@ int collapse_diamonds(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quad
   return collapsed;
 }
 
-
 int remove_doublets(std::vector<Eigen::Vector2d>& pts, std::vector<Quad>& quads,
                     std::vector<char>& fixed) {
   const size_t n = pts.size();
@@ -175,8 +182,10 @@ int irregular_nodes(const std::vector<Eigen::Vector2d>& pts, const std::vector<Q
     for (int c = 0; c < 4; ++c) {
       const size_t v = static_cast<size_t>(q[static_cast<size_t>(c)]);
       ++valence[v];
-      const Eigen::Vector2d e0 = pts[static_cast<size_t>(q[static_cast<size_t>((c + 1) % 4)])] - pts[v];
-      const Eigen::Vector2d e1 = pts[static_cast<size_t>(q[static_cast<size_t>((c + 3) % 4)])] - pts[v];
+      const Eigen::Vector2d e0 =
+          pts[static_cast<size_t>(q[static_cast<size_t>((c + 1) % 4)])] - pts[v];
+      const Eigen::Vector2d e1 =
+          pts[static_cast<size_t>(q[static_cast<size_t>((c + 3) % 4)])] - pts[v];
       angle[v] += std::atan2(cross2(e0, e1), e0.dot(e1));
     }
   }

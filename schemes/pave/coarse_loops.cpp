@@ -19,9 +19,11 @@ constexpr double kHoleReflexLimit = 250.0 * M_PI / 180.0;
 constexpr size_t kOddFullSizeFrom = 8;
 }  // namespace
 
-double skipped_quality(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
+double skipped_quality(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                       size_t offset) {
   double worst = 1.0;
-  for (size_t k = 1 - offset; k < L.size(); k += 2) worst = std::min(worst, std::sin(0.5 * interior_angle(P, L, k)));
+  for (size_t k = 1 - offset; k < L.size(); k += 2)
+    worst = std::min(worst, std::sin(0.5 * interior_angle(P, L, k)));
   return worst;
 }
 
@@ -38,7 +40,8 @@ size_t choose_parity(const std::vector<Eigen::Vector2d>& P, const std::vector<in
 }
 
 std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int first_new,
-                                  std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads, double corner_angle) {
+                                  std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads,
+                                  double corner_angle) {
   const size_t n = L.size();
   if (n % 2 != 0) return L;  // odd loops are left as they are
   // The nodes coarse_boundary() will skip (it picks the same way).
@@ -52,8 +55,8 @@ std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int f
   bool any = false;
   for (size_t k = 0; k < n; ++k) {
     // Neighbouring tips share a node: wrap one per pass.
-    if (skipped[k] && L[k] < first_new && interior_angle(P, L, k) > limit && !(k >= 2 && wrap[k - 2]) &&
-        !(k + 2 >= n && wrap[(k + 2) % n])) {
+    if (skipped[k] && L[k] < first_new && interior_angle(P, L, k) > limit &&
+        !(k >= 2 && wrap[k - 2]) && !(k + 2 >= n && wrap[(k + 2) % n])) {
       wrap[k] = any = true;
     }
   }
@@ -67,12 +70,14 @@ std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int f
     // Paving's corner template: three quads around the tip p, each taking a
     // third of its angle; the loop a, p, b becomes a, a', q1, q2, q3, b', b.
     const int ia = L[(k + n - 1) % n], ip = L[k], ib = L[(k + 1) % n];
-    const Eigen::Vector2d a = P[static_cast<size_t>(ia)], p = P[static_cast<size_t>(ip)], b = P[static_cast<size_t>(ib)];
+    const Eigen::Vector2d a = P[static_cast<size_t>(ia)], p = P[static_cast<size_t>(ip)],
+                          b = P[static_cast<size_t>(ib)];
     const double theta = interior_angle(P, L, k);
     const double h = 0.5 * ((a - p).norm() + (b - p).norm());
     const Eigen::Vector2d u = (b - p).normalized();
     auto dir = [&](double ang) {
-      return Eigen::Vector2d(u.x() * std::cos(ang) - u.y() * std::sin(ang), u.x() * std::sin(ang) + u.y() * std::cos(ang));
+      return Eigen::Vector2d(u.x() * std::cos(ang) - u.y() * std::sin(ang),
+                             u.x() * std::sin(ang) + u.y() * std::cos(ang));
     };
     const Eigen::Vector2d q3 = p + h * dir(theta / 3), q1 = p + h * dir(2 * theta / 3);
     const Eigen::Vector2d q2 = p + 1.3 * h * dir(theta / 2);
@@ -91,7 +96,8 @@ std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int f
   return out;
 }
 
-bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, size_t offset) {
+bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                       size_t offset) {
   double fine = 0.0, coarse = 0.0;
   const size_t n = L.size();
   for (size_t k = 0; k < n; ++k) {
@@ -107,10 +113,12 @@ bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& P, const std::vector<
 namespace {
 
 /// Signed area of the polygon of the picked loop nodes, times 2.
-double picked_area(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, const std::vector<size_t>& picks) {
+double picked_area(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                   const std::vector<size_t>& picks) {
   double a = 0.0;
   for (size_t j = 0; j < picks.size(); ++j) {
-    a += cross2(P[static_cast<size_t>(L[picks[j]])], P[static_cast<size_t>(L[picks[(j + 1) % picks.size()]])]);
+    a += cross2(P[static_cast<size_t>(L[picks[j]])],
+                P[static_cast<size_t>(L[picks[(j + 1) % picks.size()]])]);
   }
   return a;
 }
@@ -118,12 +126,14 @@ double picked_area(const std::vector<Eigen::Vector2d>& P, const std::vector<int>
 /// Coarse vertices of an odd loop: s, s + 2, ..., s + n - 1; the last coarse
 /// edge spans one fine edge (an odd edge). s is the rank-th best start by
 /// the worst skipped node (rank > 0: retries move the odd edge).
-std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, int rank) {
+std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                                   int rank) {
   const size_t n = L.size();
   std::vector<double> q(n);
   for (size_t k = 0; k < n; ++k) q[k] = std::sin(0.5 * interior_angle(P, L, k));
   double fine = 0.0;
-  for (size_t k = 0; k < n; ++k) fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
+  for (size_t k = 0; k < n; ++k)
+    fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
   const size_t stride = std::max<size_t>(1, n / 400);
   std::vector<std::pair<double, size_t>> ranked;
   for (size_t s = 0; s < n; s += stride) {
@@ -132,14 +142,17 @@ std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const 
     std::vector<size_t> picks;
     for (size_t k = s; k < s + n; k += 2) picks.push_back(k % n);
     const double coarse = picked_area(P, L, picks);
-    if (fine * coarse > 0 && std::abs(coarse) > 0.05 * std::abs(fine)) ranked.emplace_back(-worst, s);
+    if (fine * coarse > 0 && std::abs(coarse) > 0.05 * std::abs(fine))
+      ranked.emplace_back(-worst, s);
   }
   if (ranked.empty()) {
-    throw std::runtime_error("an odd loop of " + std::to_string(n) +
-                             " nodes is too coarse for its shape (its every-other-node polygon folds)");
+    throw std::runtime_error(
+        "an odd loop of " + std::to_string(n) +
+        " nodes is too coarse for its shape (its every-other-node polygon folds)");
   }
   std::stable_sort(ranked.begin(), ranked.end());
-  const size_t best = ranked[std::min(static_cast<size_t>(std::max(rank, 0)) * 3, ranked.size() - 1)].second;
+  const size_t best =
+      ranked[std::min(static_cast<size_t>(std::max(rank, 0)) * 3, ranked.size() - 1)].second;
   std::vector<size_t> picks;
   for (size_t k = best; k < best + n; k += 2) picks.push_back(k % n);
   return picks;
@@ -147,8 +160,8 @@ std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const 
 
 }  // namespace
 
-std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, int odd_rank,
-                               double corner_angle) {
+std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                               int odd_rank, double corner_angle) {
   const size_t n = L.size();
   std::vector<size_t> picks;
   if (n % 2 == 0) {
@@ -156,8 +169,9 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
     if (!coarse_loop_valid(P, L, offset)) {
       offset = 1 - offset;
       if (!coarse_loop_valid(P, L, offset)) {
-        throw std::runtime_error("a loop of " + std::to_string(n) +
-                                 " nodes is too coarse for its shape (its every-other-node polygon folds)");
+        throw std::runtime_error(
+            "a loop of " + std::to_string(n) +
+            " nodes is too coarse for its shape (its every-other-node polygon folds)");
       }
     }
     for (size_t k = offset; k < n; k += 2) picks.push_back(k);
@@ -166,7 +180,8 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
   }
   if (corner_angle <= 0) return picks;
   double fine = 0.0;
-  for (size_t k = 0; k < n; ++k) fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
+  for (size_t k = 0; k < n; ++k)
+    fine += cross2(P[static_cast<size_t>(L[k])], P[static_cast<size_t>(L[(k + 1) % n])]);
   // Holes (clockwise) leave reflex tips sharper than paving's corner template
   // angle to the template (measured: a stepped hole's 270 deg corners as
   // coarse vertices spoilt a cooper sweep through that face, 0.70 -> 0.22).
@@ -186,8 +201,8 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
 }
 
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
-                               const std::vector<std::vector<int>>& loops, bool seed_rows, int odd_rank,
-                               double corner_angle, bool odd_full_size) {
+                               const std::vector<std::vector<int>>& loops, bool seed_rows,
+                               int odd_rank, double corner_angle, bool odd_full_size) {
   CoarseBoundary out;
   for (const auto& L : loops) {
     const size_t n = L.size();
@@ -229,9 +244,11 @@ CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& P,
                                  ln * (odd_after[j] ? odd_weight : 1.0));
       out.sizes.push_back(size);
       const double interior = M_PI - std::atan2(cross2(x - xp, xn - x), (x - xp).dot(xn - x));
-      if (seed_rows && m >= 3 && interior > 150.0 * M_PI / 180.0 && interior < 210.0 * M_PI / 180.0) {
+      if (seed_rows && m >= 3 && interior > 150.0 * M_PI / 180.0 &&
+          interior < 210.0 * M_PI / 180.0) {
         const Eigen::Vector2d tin = (x - xp) / lp, tout = (xn - x) / ln;
-        const Eigen::Vector2d nrm = Eigen::Vector2d(-tin.y() - tout.y(), tin.x() + tout.x()).normalized();
+        const Eigen::Vector2d nrm =
+            Eigen::Vector2d(-tin.y() - tout.y(), tin.x() + tout.x()).normalized();
         out.seeds.push_back(x + 0.72 * size * nrm);
         out.seed_from.push_back(coarse[j]);
         out.seed_sizes.push_back(size);
@@ -252,8 +269,8 @@ std::vector<int> ring_around_small_hole(const std::vector<int>& loop, double wid
   for (int i = 0; i < 4; ++i) {
     for (int j = 0; j < 4; ++j) {
       const double s = s_of[i], t = s_of[j];
-      const Eigen::Vector2d x = (1 - s) * (1 - t) * q[0] + s * (1 - t) * q[1] + s * t * q[2] +
-                                (1 - s) * t * q[3];
+      const Eigen::Vector2d x =
+          (1 - s) * (1 - t) * q[0] + s * (1 - t) * q[1] + s * t * q[2] + (1 - s) * t * q[3];
       if ((i == 1 || i == 2) && (j == 1 || j == 2)) continue;
       g[i][j] = static_cast<int>(P.size());
       P.push_back(x);

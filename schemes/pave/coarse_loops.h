@@ -22,13 +22,13 @@
 namespace cooperage::pave::detail {
 
 struct CoarseBoundary {
-  std::vector<int> fine_of_coarse;             ///< fine node of each coarse vertex
-  std::vector<Eigen::Vector2d> points;         ///< coarse vertex positions
-  std::vector<double> sizes;                   ///< target coarse edge length at each
+  std::vector<int> fine_of_coarse;      ///< fine node of each coarse vertex
+  std::vector<Eigen::Vector2d> points;  ///< coarse vertex positions
+  std::vector<double> sizes;            ///< target coarse edge length at each
   /// Fewest coarse cells each coarse vertex needs, by FASTQ's node class of
   /// its interior angle: END < 135 deg 1, SIDE < 225 2, CORNER < 315 3, else 4.
   std::vector<int> min_cells;
-  std::vector<std::vector<int>> loops;         ///< coarse loops (coarse ids)
+  std::vector<std::vector<int>> loops;              ///< coarse loops (coarse ids)
   std::unordered_map<std::uint64_t, int> midpoint;  ///< coarse loop edge -> skipped fine node
   /// Coarse loop edges spanning a single fine edge (odd loops have an odd
   /// number, loops whose parity switches at corners any number): no
@@ -39,13 +39,14 @@ struct CoarseBoundary {
   /// inward along the bisector; recombination then finds rectangles along
   /// the boundary, and the split gives two rows of quads parallel to it.
   std::vector<Eigen::Vector2d> seeds;
-  std::vector<int> seed_from;     ///< coarse vertex of each seed
+  std::vector<int> seed_from;  ///< coarse vertex of each seed
   std::vector<double> seed_sizes;
 };
 
 /// True when the coarse polygon of parity `offset` has the orientation of the
 /// loop and at least 5% of its area (it does not fold).
-bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop, size_t offset);
+bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
+                       size_t offset);
 
 /// Loop positions of the coarse vertices of `loop`. A single parity: even
 /// loops choose_parity(), odd loops one odd edge where the worst skipped
@@ -55,8 +56,8 @@ bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& points, const std::ve
 /// when that lifts the worst skipped node by at least 0.2 and its coarse
 /// polygon does not fold. Throws
 /// std::runtime_error when no single parity gives a valid coarse loop.
-std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
-                               int odd_rank, double corner_angle);
+std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points,
+                               const std::vector<int>& loop, int odd_rank, double corner_angle);
 
 /// Builds the coarse loops of the fine loops (fine node ids into `points`),
 /// their vertices by loop_picks(). Throws std::runtime_error when a loop has
@@ -67,7 +68,8 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points, const
 /// parity paths of small faces need).
 CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& points,
                                const std::vector<std::vector<int>>& loops, bool seed_rows = true,
-                               int odd_rank = 0, double corner_angle = 0.0, bool odd_full_size = false);
+                               int odd_rank = 0, double corner_angle = 0.0,
+                               bool odd_full_size = false);
 
 /// The parity (0: even nodes, 1: odd nodes are coarse vertices) of loop L:
 /// the one whose worst skipped node is best (a skipped node's angle is split
@@ -76,7 +78,8 @@ CoarseBoundary coarse_boundary(const std::vector<Eigen::Vector2d>& points,
 size_t choose_parity(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop);
 
 /// Worst sin(angle / 2) over the nodes that parity `offset` skips.
-double skipped_quality(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop, size_t offset);
+double skipped_quality(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
+                       size_t offset);
 
 /// Paving's corner template at every skipped node (loop_picks() with
 /// `corner_angle`; even loops only)

@@ -40,7 +40,8 @@ size_t odd_edge_offset(const std::vector<double>& q, size_t c, size_t g) {
   const size_t n = q.size();
   // Skipped with the odd edge at s: odd offsets below s, even offsets above s + 1.
   std::vector<double> before(g + 2, 1.0), after(g + 2, 1.0);
-  for (size_t s = 0; s + 2 <= g + 1; s += 2) before[s + 2] = std::min(before[s], s + 1 < g ? q[(c + s + 1) % n] : 1.0);
+  for (size_t s = 0; s + 2 <= g + 1; s += 2)
+    before[s + 2] = std::min(before[s], s + 1 < g ? q[(c + s + 1) % n] : 1.0);
   for (size_t t = g - 1; t >= 2; t -= 2) after[t - 2] = std::min(after[t], q[(c + t) % n]);
   double best = -1.0;
   for (size_t s = 0; s < g; s += 2) best = std::max(best, std::min(before[s], after[s]));
@@ -59,8 +60,8 @@ size_t odd_edge_offset(const std::vector<double>& q, size_t c, size_t g) {
 
 }  // namespace
 
-std::vector<size_t> corner_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L, double sharp,
-                                 double reflex_limit) {
+std::vector<size_t> corner_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                                 double sharp, double reflex_limit) {
   const size_t n = L.size();
   std::vector<double> q(n);
   std::vector<size_t> corners;

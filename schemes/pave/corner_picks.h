@@ -18,7 +18,8 @@
 namespace cooperage::pave::detail {
 
 /// Interior angle [rad] of the face at position k of `loop` (face on the left), in (0, 2 pi).
-double interior_angle(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop, size_t k);
+double interior_angle(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
+                      size_t k);
 
 /// True for a node that must be a coarse vertex: interior angle below
 /// `sharp` or in (2 pi - `sharp`, `reflex_limit`] [rad] (sin(angle / 2)
@@ -30,11 +31,12 @@ bool is_corner(double interior, double sharp, double reflex_limit = 2 * M_PI);
 /// and a run of an odd number of fine edges holds one odd edge. Empty when
 /// the loop has no corner. Depends only on the loop's geometry and order,
 /// not on its starting node (rotation invariant in the canonical frame).
-std::vector<size_t> corner_picks(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
-                                 double sharp, double reflex_limit = 2 * M_PI);
+std::vector<size_t> corner_picks(const std::vector<Eigen::Vector2d>& points,
+                                 const std::vector<int>& loop, double sharp,
+                                 double reflex_limit = 2 * M_PI);
 
 /// Worst sin(angle / 2) over the nodes that `picks` skips (1 when none).
-double skipped_quality_of_picks(const std::vector<Eigen::Vector2d>& points, const std::vector<int>& loop,
-                                const std::vector<size_t>& picks);
+double skipped_quality_of_picks(const std::vector<Eigen::Vector2d>& points,
+                                const std::vector<int>& loop, const std::vector<size_t>& picks);
 
 }  // namespace cooperage::pave::detail

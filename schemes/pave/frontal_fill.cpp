@@ -65,12 +65,14 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
     if (!(area > 0)) return cdt.size[static_cast<size_t>(near)];
     const double wa = cdt::orient(x, b, c) / area, wb = cdt::orient(a, x, c) / area;
     const double wc = 1.0 - wa - wb;
-    return wa * background.size[static_cast<size_t>(T.v[0])] + wb * background.size[static_cast<size_t>(T.v[1])] +
+    return wa * background.size[static_cast<size_t>(T.v[0])] +
+           wb * background.size[static_cast<size_t>(T.v[1])] +
            wc * background.size[static_cast<size_t>(T.v[2])];
   };
   auto accepted = [&](int ti) {
     const Tri& T = cdt.tri(ti);
-    return circumradius(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2])) <= accept_radius * cdt.mean_size(T);
+    return circumradius(cdt.pt(T.v[0]), cdt.pt(T.v[1]), cdt.pt(T.v[2])) <=
+           accept_radius * cdt.mean_size(T);
   };
   auto live_inside = [&](int ti) { return ti >= 0 && cdt.tri(ti).alive && cdt.tri(ti).inside; };
 
@@ -96,7 +98,8 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
       if (live_inside(nb) && accepted(nb)) front = i;
     }
     if (front < 0) continue;  // queued again when a neighbour is accepted
-    const int a = T.v[static_cast<size_t>((front + 1) % 3)], b = T.v[static_cast<size_t>((front + 2) % 3)];
+    const int a = T.v[static_cast<size_t>((front + 1) % 3)],
+              b = T.v[static_cast<size_t>((front + 2) % 3)];
     const V2 pa = cdt.pt(a), pb = cdt.pt(b);
     const double len = (pb - pa).norm();
     if (!(len > 0)) continue;
@@ -165,7 +168,8 @@ int frontal_fill(Cdt& cdt, const std::vector<std::vector<int>>& loops, double ac
         cdt.vt.pop_back();
         continue;
       }
-      home.push_back(where >= 0 ? where : home[static_cast<size_t>(a)]);  // a walk's start, at worst near
+      home.push_back(where >= 0 ? where
+                                : home[static_cast<size_t>(a)]);  // a walk's start, at worst near
       frame.push_back(cross);
       done = true;
     }

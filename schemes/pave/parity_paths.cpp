@@ -13,10 +13,10 @@ namespace {
 /// large mesh, and hash maps there cost more than the recombination):
 /// edges numbered in order of first use, each with its one or two cells.
 struct CellEdges {
-  std::vector<std::array<int, 2>> cells_of;    ///< edge -> its cells (second -1 on a loop edge)
-  std::vector<std::uint64_t> key;              ///< edge -> undirected_key
-  std::vector<std::array<int, 4>> edges_of;    ///< cell -> its edges (-1 past a triangle's third)
-  std::vector<int> first;                      ///< CSR by smaller vertex: rows of (larger vertex, edge)
+  std::vector<std::array<int, 2>> cells_of;  ///< edge -> its cells (second -1 on a loop edge)
+  std::vector<std::uint64_t> key;            ///< edge -> undirected_key
+  std::vector<std::array<int, 4>> edges_of;  ///< cell -> its edges (-1 past a triangle's third)
+  std::vector<int> first;  ///< CSR by smaller vertex: rows of (larger vertex, edge)
   std::vector<std::pair<int, int>> row;
   std::vector<int> fill;
 
@@ -39,7 +39,10 @@ CellEdges cell_edges(const std::vector<Cell>& cells) {
   g.first.assign(static_cast<size_t>(nv) + 1, 0);
   for (const Cell& c : cells) {
     const int n = c[3] < 0 ? 3 : 4;
-    for (int k = 0; k < n; ++k) ++g.first[static_cast<size_t>(std::min(c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % n)])) + 1];
+    for (int k = 0; k < n; ++k)
+      ++g.first[static_cast<size_t>(
+                    std::min(c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % n)])) +
+                1];
   }
   for (size_t i = 0; i + 1 < g.first.size(); ++i) g.first[i + 1] += g.first[i];
   g.row.resize(static_cast<size_t>(g.first.back()));
@@ -122,7 +125,8 @@ std::unordered_set<std::uint64_t> parity_paths(const std::vector<Cell>& cells,
       }
       if (found >= 0) break;
       for (int e : g.edges_of[static_cast<size_t>(st.cell)]) {
-        if (e < 0 || e == st.edge || is_loop_edge(e) || seen_in[static_cast<size_t>(e)] == static_cast<int>(p) ||
+        if (e < 0 || e == st.edge || is_loop_edge(e) ||
+            seen_in[static_cast<size_t>(e)] == static_cast<int>(p) ||
             !may_cross(st.cell, st.edge, e)) {
           continue;
         }
@@ -133,7 +137,8 @@ std::unordered_set<std::uint64_t> parity_paths(const std::vector<Cell>& cells,
     }
     if (found < 0) throw std::runtime_error("no path joins two odd loop edges");
     unpaired[static_cast<size_t>(found_edge)] = 0;
-    for (int k = found; states[static_cast<size_t>(k)].parent >= 0; k = states[static_cast<size_t>(k)].parent) {
+    for (int k = found; states[static_cast<size_t>(k)].parent >= 0;
+         k = states[static_cast<size_t>(k)].parent) {
       const std::uint64_t key = g.key[static_cast<size_t>(states[static_cast<size_t>(k)].edge)];
       if (!odd.erase(key)) odd.insert(key);
     }

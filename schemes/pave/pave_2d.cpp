@@ -34,7 +34,8 @@ using V2 = Eigen::Vector2d;
 double signed_area(const std::vector<V2>& P, const std::vector<int>& loop) {
   double a = 0.0;
   for (size_t k = 0; k < loop.size(); ++k) {
-    a += detail::cross2(P[static_cast<size_t>(loop[k])], P[static_cast<size_t>(loop[(k + 1) % loop.size()])]);
+    a += detail::cross2(P[static_cast<size_t>(loop[k])],
+                        P[static_cast<size_t>(loop[(k + 1) % loop.size()])]);
   }
   return 0.5 * a;
 }
@@ -134,8 +135,8 @@ void check_tiling(const std::vector<V2>& P, const std::vector<std::vector<int>>&
 
 /// Steps (b)-(f) on the canonical points P (the nb loop nodes first) with
 /// one set of options; returns the quads and extends P.
-std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::vector<int>>& ids, int nb,
-                                    const PaveOptions& options) {
+std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::vector<int>>& ids,
+                                    int nb, const PaveOptions& options) {
   Laps laps(options.stats);
   std::vector<detail::Quad> quads;
   if (ids.size() == 1 && ids[0].size() == 4) {
@@ -149,8 +150,9 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     }
     for (auto& loop : work) {
       for (int pass = 0; pass < 4; ++pass) {
-        std::vector<int> wrapped = detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads,
-                                                                    options.corner_angle * M_PI / 180.0);
+        std::vector<int> wrapped =
+            detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads,
+                                     options.corner_angle * M_PI / 180.0);
         if (wrapped.size() == loop.size()) break;
         loop = std::move(wrapped);
       }
@@ -185,10 +187,12 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     }
     laps.lap(&PaveStats::triangulate);
     // (d) recombination, (e) all-quad split.
-    const std::vector<detail::Cell> cells = detail::recombine(tri, options.recombine_quality, coarse.min_cells);
+    const std::vector<detail::Cell> cells =
+        detail::recombine(tri, options.recombine_quality, coarse.min_cells);
 
     std::vector<int> fine_of_coarse(tri.points.size(), -1);
-    for (size_t c = 0; c < coarse.fine_of_coarse.size(); ++c) fine_of_coarse[c] = coarse.fine_of_coarse[c];
+    for (size_t c = 0; c < coarse.fine_of_coarse.size(); ++c)
+      fine_of_coarse[c] = coarse.fine_of_coarse[c];
     std::unordered_set<std::uint64_t> no_midpoint;
     try {
       no_midpoint = detail::parity_paths(cells, coarse.odd_edges);
@@ -196,7 +200,8 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
       failed(err.what());
     }
     laps.lap(&PaveStats::recombine);
-    detail::split_to_quads(cells, tri.points, fine_of_coarse, coarse.midpoint, P, quads, no_midpoint);
+    detail::split_to_quads(cells, tri.points, fine_of_coarse, coarse.midpoint, P, quads,
+                           no_midpoint);
     laps.lap(&PaveStats::split);
   }
 
@@ -297,7 +302,8 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   const int nb = static_cast<int>(P0.size());
   if (signed_area(P0, ids[0]) <= 0) invalid("the outer loop is not counter-clockwise");
   for (size_t l = 1; l < ids.size(); ++l) {
-    if (signed_area(P0, ids[l]) >= 0) invalid("hole loop " + std::to_string(l) + " is not clockwise");
+    if (signed_area(P0, ids[l]) >= 0)
+      invalid("hole loop " + std::to_string(l) + " is not clockwise");
   }
 
   for (size_t l = 1; l < ids.size(); ++l) {
@@ -307,14 +313,16 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
     const auto& o = ids[0];
     for (size_t k = 0, j = o.size() - 1; k < o.size(); j = k++) {
       const V2 a = P0[static_cast<size_t>(o[k])], b = P0[static_cast<size_t>(o[j])];
-      if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      if ((a.y() > q.y()) != (b.y() > q.y()) &&
+          q.x() < (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y()) + a.x()) {
         in = !in;
       }
     }
     if (!in) invalid("hole loop " + std::to_string(l) + " lies outside the outer loop");
   }
 
-  if (ids.size() > 1 && ids[0].size() == 4) invalid("an outer loop of 4 nodes cannot surround holes; give it at least 6");
+  if (ids.size() > 1 && ids[0].size() == 4)
+    invalid("an outer loop of 4 nodes cannot surround holes; give it at least 6");
 
   // Two coarse triangulations first: the frontal one (rows of right
   // triangles, near-structured where the loops allow) and plain

@@ -64,29 +64,34 @@ struct PaveStats {
   double cleanup = 0;      ///< (f) doublets and diamonds
   double smooth = 0;       ///< (f) untangling, Laplacian sweeps, optimisation
   double check = 0;        ///< (f) inversion and tiling checks
-  int attempts = 0;        ///< settings tried (1 if the frontal mesh is very good, 2 if not, more when retried)
-  int kept = 0;            ///< index of the attempt kept (with PaveOptions::frontal: 0 frontal, 1 circumcentre, 2.. retries)
-  int sweeps = 0;          ///< Laplacian sweeps of the last attempt made (not necessarily the kept one)
+  int attempts =
+      0;  ///< settings tried (1 if the frontal mesh is very good, 2 if not, more when retried)
+  int kept = 0;    ///< index of the attempt kept (with PaveOptions::frontal: 0 frontal, 1
+                   ///< circumcentre, 2.. retries)
+  int sweeps = 0;  ///< Laplacian sweeps of the last attempt made (not necessarily the kept one)
 };
 
 struct PaveOptions {
-  detail::SmoothOptions smooth;      ///< the final smoothing
-  double recombine_quality = 0.35;   ///< worst scaled Jacobian of a recombined coarse quad
-  double max_radius = 0.9;           ///< coarse triangles' circumradius bound, in local sizes (CdtInput)
-  bool frontal = true;               ///< rows of right triangles from the loops first (frontal_fill.h)
-  double accept_radius = 0.8;        ///< circumradius a frontal triangle may keep, in local sizes
-  double ring_width = 0.75;          ///< ring around a 4-node hole, in hole widths
-  double tip_angle = 250.0;          ///< skipped nodes above this interior angle [deg] get paving's corner template
-  bool cleanup = true;               ///< remove doublets
-  bool boundary_rows = true;         ///< seed a coarse row along flat boundary stretches
-  double retry_below = 0.5;          ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
-  int odd_edge_rank = 0;             ///< where odd loops put their odd edge (0: best place; retries use others)
+  detail::SmoothOptions smooth;     ///< the final smoothing
+  double recombine_quality = 0.35;  ///< worst scaled Jacobian of a recombined coarse quad
+  double max_radius = 0.9;     ///< coarse triangles' circumradius bound, in local sizes (CdtInput)
+  bool frontal = true;         ///< rows of right triangles from the loops first (frontal_fill.h)
+  double accept_radius = 0.8;  ///< circumradius a frontal triangle may keep, in local sizes
+  double ring_width = 0.75;    ///< ring around a 4-node hole, in hole widths
+  double tip_angle =
+      250.0;  ///< skipped nodes above this interior angle [deg] get paving's corner template
+  bool cleanup = true;        ///< remove doublets
+  bool boundary_rows = true;  ///< seed a coarse row along flat boundary stretches
+  double retry_below =
+      0.5;  ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
+  int odd_edge_rank =
+      0;  ///< where odd loops put their odd edge (0: best place; retries use others)
   /// Loop nodes with an interior angle below this or above 360 minus this
   /// [deg] are corners: the parity may switch along a loop (odd edges) so
   /// they become coarse vertices (corner_picks.h); 0 keeps one parity per loop.
   double corner_angle = 140.0;
-  bool check_inversion = true;       ///< throw on an inverted quad (off: inspect a failed mesh)
-  PaveStats* stats = nullptr;        ///< [out] step timings when set (reset by pave_2d)
+  bool check_inversion = true;  ///< throw on an inverted quad (off: inspect a failed mesh)
+  PaveStats* stats = nullptr;   ///< [out] step timings when set (reset by pave_2d)
 };
 
 /// A 2D quad mesh: boundary nodes first, in the input order (loop by loop),

@@ -40,7 +40,8 @@ int fewest_intervals(const geom::Model& model, int surface_id, size_t l) {
 scheme::Applicability PaveScheme::applicable(const scheme::SurfaceView& view) const {
   const geom::Surface& s = view.surface();
   const std::string name = "surface " + std::to_string(view.surface_id);
-  if (s.loops.empty()) return scheme::Applicability::no(name + ": no boundary loop, pave needs one");
+  if (s.loops.empty())
+    return scheme::Applicability::no(name + ": no boundary loop, pave needs one");
   for (size_t l = 0; l < s.loops.size(); ++l) {
     if (s.loops[l].uses.empty()) {
       return scheme::Applicability::no(name + ": loop " + std::to_string(l) + " has no curves");
@@ -71,11 +72,12 @@ scheme::Applicability PaveScheme::applicable(const scheme::SurfaceView& view) co
   // element is typically 0.56-0.79 on the benchmark faces, so a map or submap
   // face with a corner squashed below ~0.6 goes to pave instead.
   return scheme::Applicability::yes(
-      0.6, name + ": pave meshes any face (" + std::to_string(s.loops.size()) +
-               " loop" + (s.loops.size() > 1 ? "s" : "") + ") given an even boundary interval count");
+      0.6, name + ": pave meshes any face (" + std::to_string(s.loops.size()) + " loop" +
+               (s.loops.size() > 1 ? "s" : "") + ") given an even boundary interval count");
 }
 
-void PaveScheme::constrain(const scheme::SurfaceView& view, intervals::IntervalProblem& problem) const {
+void PaveScheme::constrain(const scheme::SurfaceView& view,
+                           intervals::IntervalProblem& problem) const {
   const geom::Surface& s = view.surface();
   const std::string name = "surface " + std::to_string(view.surface_id) + " (pave)";
   std::vector<int> all;
@@ -87,13 +89,15 @@ void PaveScheme::constrain(const scheme::SurfaceView& view, intervals::IntervalP
     all.insert(all.end(), ids.begin(), ids.end());
     all_text += (all_text.empty() ? "" : "+") + loop_curve_list(s.loops[l]);
     const int least = fewest_intervals(view.model, view.surface_id, l);
-    problem.add_at_least(ids, least, name + ": loop " + std::to_string(l) + " curves " +
-                                         loop_curve_list(s.loops[l]) + " >= " + std::to_string(least));
+    problem.add_at_least(ids, least,
+                         name + ": loop " + std::to_string(l) + " curves " +
+                             loop_curve_list(s.loops[l]) + " >= " + std::to_string(least));
   }
   if (!all.empty()) problem.add_even(all, name + ": boundary curves " + all_text + " even");
 }
 
-scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const scheme::Settings& /*params*/) const {
+scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view,
+                                    const scheme::Settings& /*params*/) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, ErrorCode::Internal, "mesh() needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;
@@ -113,8 +117,9 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
   for (size_t l = 0; l < rings.size(); ++l) {
     if (rings[l].size() < 4) {
       fail(sid, ErrorCode::InvalidInput,
-           "loop " + std::to_string(l) + " (curves " + loop_curve_list(surface.loops[l]) + ") has " +
-               std::to_string(rings[l].size()) + " intervals; pave needs at least 4 per loop");
+           "loop " + std::to_string(l) + " (curves " + loop_curve_list(surface.loops[l]) +
+               ") has " + std::to_string(rings[l].size()) +
+               " intervals; pave needs at least 4 per loop");
     }
   }
 
@@ -143,7 +148,8 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
     for (const mesh2d::LoopPointRef& r : loop) {
       const int g = rings[static_cast<size_t>(r.loop)][static_cast<size_t>(r.index)];
       auto it = local_of_global.find(g);
-      if (it == local_of_global.end()) it = local_of_global.emplace(g, out.add(db.node(g), g)).first;
+      if (it == local_of_global.end())
+        it = local_of_global.emplace(g, out.add(db.node(g), g)).first;
       local[i++] = it->second;
     }
   }
@@ -159,15 +165,18 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
     for (int a = 0; a < 4; ++a) {
       for (int b = a + 1; b < 4; ++b) {
         if (quad[static_cast<size_t>(a)] == quad[static_cast<size_t>(b)]) {
-          fail(sid, ErrorCode::MeshingFailed, "a quad uses one node twice (too few intervals across a seam)");
+          fail(sid, ErrorCode::MeshingFailed,
+               "a quad uses one node twice (too few intervals across a seam)");
         }
       }
     }
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (int v : q) c += m.points[static_cast<size_t>(v)];
     const geom::Vec3 n = map.normal_at(c / 4.0);
-    const geom::Vec3 d = (out.coords[static_cast<size_t>(quad[2])] - out.coords[static_cast<size_t>(quad[0])])
-                             .cross(out.coords[static_cast<size_t>(quad[3])] - out.coords[static_cast<size_t>(quad[1])]);
+    const geom::Vec3 d =
+        (out.coords[static_cast<size_t>(quad[2])] - out.coords[static_cast<size_t>(quad[0])])
+            .cross(out.coords[static_cast<size_t>(quad[3])] -
+                   out.coords[static_cast<size_t>(quad[1])]);
     if (d.dot(n) < 0) ++negative;
     normals.push_back(n);
     out.quads.push_back(quad);
@@ -177,11 +186,13 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view, const schem
   }
   for (size_t k = 0; k < out.quads.size(); ++k) {
     const auto& q = out.quads[k];
-    const quality::QuadNodes p{out.coords[static_cast<size_t>(q[0])], out.coords[static_cast<size_t>(q[1])],
-                               out.coords[static_cast<size_t>(q[2])], out.coords[static_cast<size_t>(q[3])]};
+    const quality::QuadNodes p{
+        out.coords[static_cast<size_t>(q[0])], out.coords[static_cast<size_t>(q[1])],
+        out.coords[static_cast<size_t>(q[2])], out.coords[static_cast<size_t>(q[3])]};
     if (!(quality::quad_scaled_jacobian(p, normals[k]) > 0)) {
       fail(sid, ErrorCode::MeshingFailed,
-           "quad " + std::to_string(k) + " is inverted on the surface (distortion of the parameter space)");
+           "quad " + std::to_string(k) +
+               " is inverted on the surface (distortion of the parameter space)");
     }
   }
   return out;

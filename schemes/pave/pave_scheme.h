@@ -29,8 +29,10 @@ class PaveScheme : public scheme::SurfaceScheme {
   std::string_view name() const override { return "pave"; }
   scheme::Role serves() const override { return scheme::Role::QuadCap; }
   scheme::Applicability applicable(const scheme::SurfaceView& view) const override;
-  void constrain(const scheme::SurfaceView& view, intervals::IntervalProblem& problem) const override;
-  scheme::EntityMesh mesh(const scheme::SurfaceView& view, const scheme::Settings& params) const override;
+  void constrain(const scheme::SurfaceView& view,
+                 intervals::IntervalProblem& problem) const override;
+  scheme::EntityMesh mesh(const scheme::SurfaceView& view,
+                          const scheme::Settings& params) const override;
 
  private:
   PaveOptions options_;

@@ -39,7 +39,8 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     }
   }
   auto find_half = [&](int a, int b) -> const Half* {
-    for (int k = half_start[static_cast<size_t>(a)]; k < half_start[static_cast<size_t>(a) + 1]; ++k) {
+    for (int k = half_start[static_cast<size_t>(a)]; k < half_start[static_cast<size_t>(a) + 1];
+         ++k) {
       if (half[static_cast<size_t>(k)].b == b) return &half[static_cast<size_t>(k)];
     }
     return nullptr;
@@ -79,7 +80,8 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
   std::vector<int> match(T.size(), -1);
   auto can_merge = [&](const Candidate& c) {
     const int x = c.quad[0], y = c.quad[2];  // the shared edge: both lose a cell
-    return cells_at[static_cast<size_t>(x)] - 1 >= floor_of(x) && cells_at[static_cast<size_t>(y)] - 1 >= floor_of(y);
+    return cells_at[static_cast<size_t>(x)] - 1 >= floor_of(x) &&
+           cells_at[static_cast<size_t>(y)] - 1 >= floor_of(y);
   };
   auto merge = [&](int k, int sign) {
     const Candidate& c = cands[static_cast<size_t>(k)];
@@ -89,7 +91,9 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
   };
   for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
     const Candidate& c = cands[static_cast<size_t>(k)];
-    if (match[static_cast<size_t>(c.t)] >= 0 || match[static_cast<size_t>(c.s)] >= 0 || !can_merge(c)) continue;
+    if (match[static_cast<size_t>(c.t)] >= 0 || match[static_cast<size_t>(c.s)] >= 0 ||
+        !can_merge(c))
+      continue;
     merge(k, +1);
   }
   // Augmenting paths of length 3: a free triangle t next to s, whose partner
@@ -105,8 +109,10 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
   {
     std::vector<int> fill(of_start.begin(), of_start.end() - 1);
     for (int k = 0; k < static_cast<int>(cands.size()); ++k) {
-      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].t)]++)] = k;
-      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].s)]++)] = k;
+      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].t)]++)] =
+          k;
+      of_items[static_cast<size_t>(fill[static_cast<size_t>(cands[static_cast<size_t>(k)].s)]++)] =
+          k;
     }
   }
   struct Row {
@@ -116,44 +122,45 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
     const int* end() const { return e; }
   };
   auto of = [&](int t) {
-    return Row{of_items.data() + of_start[static_cast<size_t>(t)], of_items.data() + of_start[static_cast<size_t>(t) + 1]};
+    return Row{of_items.data() + of_start[static_cast<size_t>(t)],
+               of_items.data() + of_start[static_cast<size_t>(t) + 1]};
   };
   auto other = [&](int k, int t) {
     const Candidate& c = cands[static_cast<size_t>(k)];
     return c.t == t ? c.s : c.t;
   };
   auto augment = [&]() {
-  for (int pass = 0; pass < 6; ++pass) {
-    bool changed = false;
-    for (int t = 0; t < static_cast<int>(T.size()); ++t) {
-      if (match[static_cast<size_t>(t)] >= 0) continue;
-      bool done = false;
-      for (int kts : of(t)) {
-        const int s2 = other(kts, t);
-        const int kss = match[static_cast<size_t>(s2)];
-        if (kss < 0) continue;  // s2 free too: cannot happen after greedy unless blocked
-        const int sp = other(kss, s2);
-        for (int ku : of(sp)) {
-          const int u = other(ku, sp);
-          if (u == t || u == s2 || match[static_cast<size_t>(u)] >= 0) continue;
-          merge(kss, -1);
-          if (can_merge(cands[static_cast<size_t>(kts)])) {
-            merge(kts, +1);
-            if (can_merge(cands[static_cast<size_t>(ku)])) {
-              merge(ku, +1);
-              done = true;
-              break;
+    for (int pass = 0; pass < 6; ++pass) {
+      bool changed = false;
+      for (int t = 0; t < static_cast<int>(T.size()); ++t) {
+        if (match[static_cast<size_t>(t)] >= 0) continue;
+        bool done = false;
+        for (int kts : of(t)) {
+          const int s2 = other(kts, t);
+          const int kss = match[static_cast<size_t>(s2)];
+          if (kss < 0) continue;  // s2 free too: cannot happen after greedy unless blocked
+          const int sp = other(kss, s2);
+          for (int ku : of(sp)) {
+            const int u = other(ku, sp);
+            if (u == t || u == s2 || match[static_cast<size_t>(u)] >= 0) continue;
+            merge(kss, -1);
+            if (can_merge(cands[static_cast<size_t>(kts)])) {
+              merge(kts, +1);
+              if (can_merge(cands[static_cast<size_t>(ku)])) {
+                merge(ku, +1);
+                done = true;
+                break;
+              }
+              merge(kts, -1);
             }
-            merge(kts, -1);
+            merge(kss, +1);
           }
-          merge(kss, +1);
+          if (done) break;
         }
-        if (done) break;
+        changed = changed || done;
       }
-      changed = changed || done;
+      if (!changed) break;
     }
-    if (!changed) break;
-  }
   };
   augment();
   // A triangle left on the boundary spoils the boundary row (its split puts
@@ -197,7 +204,8 @@ std::vector<Cell> recombine(const Triangulation2D& tri, double min_quality,
   for (int t = 0; t < static_cast<int>(T.size()); ++t) {
     const int k = match[static_cast<size_t>(t)];
     if (k < 0) {
-      cells.push_back({T[static_cast<size_t>(t)][0], T[static_cast<size_t>(t)][1], T[static_cast<size_t>(t)][2], -1});
+      cells.push_back({T[static_cast<size_t>(t)][0], T[static_cast<size_t>(t)][1],
+                       T[static_cast<size_t>(t)][2], -1});
     } else if (cands[static_cast<size_t>(k)].t == t) {
       cells.push_back(cands[static_cast<size_t>(k)].quad);
     }

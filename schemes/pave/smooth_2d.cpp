@@ -85,11 +85,12 @@ Local cached_quality(const std::vector<double>& quality, const Ring& ring, size_
 }
 
 /// Moves node i to x and stores its quads' qualities (computed at x).
-void move_node(std::vector<V2>& pts, std::vector<double>& quality, const Ring& ring, size_t i, const V2& x,
-               const double* values) {
+void move_node(std::vector<V2>& pts, std::vector<double>& quality, const Ring& ring, size_t i,
+               const V2& x, const double* values) {
   pts[i] = x;
   const Ring::Corner* b = ring.begin(i);
-  for (const Ring::Corner* c = b; c != ring.end(i); ++c) quality[static_cast<size_t>(c->quad)] = values[c - b];
+  for (const Ring::Corner* c = b; c != ring.end(i); ++c)
+    quality[static_cast<size_t>(c->quad)] = values[c - b];
 }
 
 V2 target(const std::vector<V2>& pts, const Ring& ring, size_t i, double w) {
@@ -123,12 +124,13 @@ double worst_corner_area(const std::vector<V2>& pts, const Ring& ring, size_t i,
     const V2& b = pts[static_cast<size_t>(c->opp)];
     const V2& d = pts[static_cast<size_t>(c->prev)];
     // Corner v with next n and previous p: cross(n - v, p - v).
-    worst = std::min({worst, cross2(a - x, d - x), cross2(b - a, x - a), cross2(d - b, a - b), cross2(x - d, b - d)});
+    worst = std::min({worst, cross2(a - x, d - x), cross2(b - a, x - a), cross2(d - b, a - b),
+                      cross2(x - d, b - d)});
   }
   return worst;
 }
 
-const double kDirs[8][2] = {{1, 0}, {0.7071, 0.7071}, {0, 1}, {-0.7071, 0.7071},
+const double kDirs[8][2] = {{1, 0},  {0.7071, 0.7071},   {0, 1},  {-0.7071, 0.7071},
                             {-1, 0}, {-0.7071, -0.7071}, {0, -1}, {0.7071, -0.7071}};
 
 double mean_edge_at(const std::vector<V2>& pts, const Ring& ring, size_t i) {
@@ -182,8 +184,8 @@ void untangle(std::vector<V2>& pts, const std::vector<Quad>& quads, const std::v
 
 }  // namespace
 
-int smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const std::vector<char>& fixed,
-                    const SmoothOptions& opt) {
+int smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads,
+                    const std::vector<char>& fixed, const SmoothOptions& opt) {
   const size_t n = pts.size();
   if (quads.empty()) return 0;
   const Ring ring = build_ring(n, quads);
@@ -191,7 +193,8 @@ int smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads, const 
   for (const Quad& q : quads) {
     for (int c = 0; c < 4; ++c) {
       mean_edge += (pts[static_cast<size_t>(q[static_cast<size_t>(c)])] -
-                    pts[static_cast<size_t>(q[static_cast<size_t>((c + 1) % 4)])]).norm();
+                    pts[static_cast<size_t>(q[static_cast<size_t>((c + 1) % 4)])])
+                       .norm();
     }
   }
   mean_edge /= 4.0 * static_cast<double>(quads.size());

@@ -30,10 +30,11 @@
 namespace cooperage::pave::detail {
 
 struct SmoothOptions {
-  int sweeps = 12;             ///< maximum Gauss-Seidel sweeps (more hardly change the quality)
-  double tolerance = 0.005;    ///< stop when the largest move < tolerance * mean edge length
-  double keep_quality = 0.6;   ///< a move may lower the worst quality down to this if the mean improves
-  double optimise_below = 0.8; ///< nodes of quads worse than this get the pattern search
+  int sweeps = 12;           ///< maximum Gauss-Seidel sweeps (more hardly change the quality)
+  double tolerance = 0.005;  ///< stop when the largest move < tolerance * mean edge length
+  double keep_quality =
+      0.6;  ///< a move may lower the worst quality down to this if the mean improves
+  double optimise_below = 0.8;  ///< nodes of quads worse than this get the pattern search
   int optimise_rounds = 10;
   /// Rounds of the polish: nodes of quads worse than polish_below maximise
   /// the mean quality of their quads without lowering their worst.
@@ -47,6 +48,6 @@ struct SmoothOptions {
 /// Moves the free nodes (fixed[i] == 0) of the counter-clockwise quads.
 /// \return the number of Laplacian sweeps made
 int smooth_quads_2d(std::vector<Eigen::Vector2d>& points, const std::vector<Quad>& quads,
-                     const std::vector<char>& fixed, const SmoothOptions& options = {});
+                    const std::vector<char>& fixed, const SmoothOptions& options = {});
 
 }  // namespace cooperage::pave::detail

@@ -4,7 +4,8 @@
 
 namespace cooperage::pave::detail {
 
-void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vector2d>& coarse_points,
+void split_to_quads(const std::vector<Cell>& cells,
+                    const std::vector<Eigen::Vector2d>& coarse_points,
                     std::vector<int> fine_of_coarse,
                     const std::unordered_map<std::uint64_t, int>& edge_midpoint,
                     std::vector<Eigen::Vector2d>& fine_points, std::vector<Quad>& quads,
@@ -26,7 +27,9 @@ void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vec
   for (const Cell& c : cells) {
     const int n = c[3] < 0 ? 3 : 4;
     for (int k = 0; k < n; ++k) {
-      ++row[static_cast<size_t>(std::min(c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % n)])) + 1];
+      ++row[static_cast<size_t>(
+                std::min(c[static_cast<size_t>(k)], c[static_cast<size_t>((k + 1) % n)])) +
+            1];
     }
   }
   for (size_t i = 0; i < n_coarse; ++i) row[i + 1] += row[i];
@@ -57,7 +60,8 @@ void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vec
     if (!no_midpoint.empty() && no_midpoint.count(k)) return m = -1;
     auto it = edge_midpoint.find(k);
     if (it != edge_midpoint.end()) return m = it->second;
-    return m = add(0.5 * (coarse_points[static_cast<size_t>(a)] + coarse_points[static_cast<size_t>(b)]));
+    return m = add(0.5 *
+                   (coarse_points[static_cast<size_t>(a)] + coarse_points[static_cast<size_t>(b)]));
   };
   quads.reserve(quads.size() + cells.size() * 4);
   for (const Cell& c : cells) {
@@ -84,7 +88,8 @@ void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vec
       int mids[2], count = 0;
       for (int k = 0; k < 6; ++k) {
         bool is_corner = false;
-        for (int j = 0; j < n; ++j) is_corner = is_corner || ring[k] == node(c[static_cast<size_t>(j)]);
+        for (int j = 0; j < n; ++j)
+          is_corner = is_corner || ring[k] == node(c[static_cast<size_t>(j)]);
         if (!is_corner && count < 2) mids[count++] = k;
       }
       if (count == 2 && mids[1] - mids[0] == 3) {

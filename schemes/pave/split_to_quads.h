@@ -34,7 +34,8 @@ inline std::uint64_t undirected_key(int a, int b) {
 /// \param[out]    quads           counter-clockwise fine quads
 /// \param[in]     no_midpoint     coarse edges without midpoint (parity_paths.h); their
 ///                                cells become 1, 2 or 3 quads
-void split_to_quads(const std::vector<Cell>& cells, const std::vector<Eigen::Vector2d>& coarse_points,
+void split_to_quads(const std::vector<Cell>& cells,
+                    const std::vector<Eigen::Vector2d>& coarse_points,
                     std::vector<int> fine_of_coarse,
                     const std::unordered_map<std::uint64_t, int>& edge_midpoint,
                     std::vector<Eigen::Vector2d>& fine_points, std::vector<Quad>& quads,

@@ -81,8 +81,10 @@ SurfaceTo2D::SurfaceTo2D(const geom::SurfaceGeometry& surface,
   const double hu = 1e-5 * std::max(period[0], 1e-12), hv = 1e-5 * std::max(period[1], 1e-12);
   for (const auto& l : uv) {
     for (const auto& x : l) {
-      const geom::Vec3 du = (surface.point(x + geom::Vec2(hu, 0)) - surface.point(x - geom::Vec2(hu, 0))) / (2 * hu);
-      const geom::Vec3 dv = (surface.point(x + geom::Vec2(0, hv)) - surface.point(x - geom::Vec2(0, hv))) / (2 * hv);
+      const geom::Vec3 du =
+          (surface.point(x + geom::Vec2(hu, 0)) - surface.point(x - geom::Vec2(hu, 0))) / (2 * hu);
+      const geom::Vec3 dv =
+          (surface.point(x + geom::Vec2(0, hv)) - surface.point(x - geom::Vec2(0, hv))) / (2 * hv);
       su += du.norm();
       sv += dv.norm();
       orient += du.cross(dv).dot(surface.normal(x));

@@ -27,7 +27,8 @@ class SurfaceTo2D {
   /// \param[in] surface  the face's geometry
   /// \param[in] loops    boundary node positions, loop by loop (closed rings,
   ///                     outer first, face on the left against the natural normal)
-  SurfaceTo2D(const geom::SurfaceGeometry& surface, const std::vector<std::vector<geom::Vec3>>& loops);
+  SurfaceTo2D(const geom::SurfaceGeometry& surface,
+              const std::vector<std::vector<geom::Vec3>>& loops);
 
   /// The loops in the plane (same order as given).
   const std::vector<std::vector<Eigen::Vector2d>>& loops_2d() const { return loops_2d_; }

@@ -66,12 +66,15 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   auto consider = [&](Candidate c) -> bool {
     const bool valid = c.quality.inverted == 0;
     if (!valid) {
-      given_up.push_back(c.what + " has " + std::to_string(c.quality.inverted) + " inverted elements");
+      given_up.push_back(c.what + " has " + std::to_string(c.quality.inverted) +
+                         " inverted elements");
       return false;
     }
-    if (c.mesh.tris.empty() && (!best_quads || c.quality.min > best_quads->quality.min)) best_quads = c;
+    if (c.mesh.tris.empty() && (!best_quads || c.quality.min > best_quads->quality.min))
+      best_quads = c;
     const bool good = c.quality.min >= min_quality_;
-    if (!good) given_up.push_back(c.what + " reaches a scaled Jacobian of only " + number(c.quality.min));
+    if (!good)
+      given_up.push_back(c.what + " reaches a scaled Jacobian of only " + number(c.quality.min));
     if (!best || c.quality.min > best->quality.min) best = std::move(c);
     return good;
   };
@@ -81,7 +84,8 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
       scheme::SurfaceView own = view;
       if (&s != primary_.get()) own.plan = nullptr;
       scheme::EntityMesh m = s.mesh(own, params);
-      const mesh::SurfaceMeshQuality q = mesh::surface_mesh_quality(m.coords, m.quads, m.tris, normal_at);
+      const mesh::SurfaceMeshQuality q =
+          mesh::surface_mesh_quality(m.coords, m.quads, m.tris, normal_at);
       return consider({what, std::move(m), q});
     } catch (const MeshingError& e) {
       given_up.push_back(what + " failed (" + e.message() + ")");
@@ -95,12 +99,13 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
       for (const std::string& g : given_up) text += (text.empty() ? "" : "; ") + g;
       std::string kept = best->what + " instead";
       if (!out.tris.empty()) {
-        kept += " (" + std::to_string(out.quads.size()) + " quads, " + std::to_string(out.tris.size()) +
-                " triangles)";
+        kept += " (" + std::to_string(out.quads.size()) + " quads, " +
+                std::to_string(out.tris.size()) + " triangles)";
       }
       if (best->quality.min < min_quality_) {
         const double corner = sharpest_corner(view);
-        kept += "; no mesh reaches " + floor + ", the best has worst element " + number(best->quality.min);
+        kept += "; no mesh reaches " + floor + ", the best has worst element " +
+                number(best->quality.min);
         if (corner < 90.0 && std::sin(corner * M_PI / 180.0) < min_quality_ + 0.05) {
           kept += " (the face has a corner of " + number(corner) +
                   " degrees: no element at it can exceed sin of that angle)";

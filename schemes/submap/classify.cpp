@@ -22,14 +22,10 @@ double change_cost(double theta, int t0, int t, bool pinned, const ClassifyOptio
 
 VertexType type_of(int t) {
   switch (t) {
-    case 1:
-      return VertexType::End;
-    case 0:
-      return VertexType::Side;
-    case -1:
-      return VertexType::Corner;
-    default:
-      return VertexType::Reversal;
+    case 1: return VertexType::End;
+    case 0: return VertexType::Side;
+    case -1: return VertexType::Corner;
+    default: return VertexType::Reversal;
   }
 }
 

@@ -9,14 +9,10 @@ const char* direction_name(int d) {
 
 std::array<int, 2> direction_step(int d) {
   switch (((d % 4) + 4) % 4) {
-    case kPlusI:
-      return {1, 0};
-    case kPlusJ:
-      return {0, 1};
-    case kMinusI:
-      return {-1, 0};
-    default:
-      return {0, -1};
+    case kPlusI: return {1, 0};
+    case kPlusJ: return {0, 1};
+    case kMinusI: return {-1, 0};
+    default: return {0, -1};
   }
 }
 

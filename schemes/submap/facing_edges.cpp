@@ -18,9 +18,9 @@ using Expr = std::map<int, int>;  // curve id -> coefficient
 
 struct Edge {
   int curve = 0;
-  int axis = 0;          // 0: runs along i, 1: along j
-  double a0 = 0, a1 = 0; // extent along its axis (geometric, a0 < a1)
-  double b = 0;          // geometric coordinate across its axis
+  int axis = 0;            // 0: runs along i, 1: along j
+  double a0 = 0, a1 = 0;   // extent along its axis (geometric, a0 < a1)
+  double b = 0;            // geometric coordinate across its axis
   std::array<Expr, 2> at;  // lattice (i, j) of its start, in curve counts
 };
 
@@ -51,7 +51,8 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
     start[k] = model.vertex(forward ? c.start_vertex : c.end_vertex).point;
     end[k] = model.vertex(forward ? c.end_vertex : c.start_vertex).point;
     const double chord = (end[k] - start[k]).norm();
-    if (c.start_vertex == c.end_vertex || std::abs(c.length - chord) > 1e-6 * c.length + 1e-12) return;
+    if (c.start_vertex == c.end_vertex || std::abs(c.length - chord) > 1e-6 * c.length + 1e-12)
+      return;
     scale = std::max(scale, chord);
   }
   const double aligned = std::cos(20.0 * 3.14159265358979323846 / 180.0);
@@ -73,7 +74,9 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
   // rectilinear polygon, whose facing curves the lattice must keep apart.
   for (size_t k = 0; k < n; ++k) {
     const Vec3 chord = end[k] - start[k];
-    if (std::abs(chord.dot(axis[static_cast<size_t>(loop.directions[k] % 2)])) < aligned * chord.norm()) return;
+    if (std::abs(chord.dot(axis[static_cast<size_t>(loop.directions[k] % 2)])) <
+        aligned * chord.norm())
+      return;
   }
   std::vector<std::array<double, 2>> poly(n);
   for (size_t k = 0; k < n; ++k) poly[k] = {start[k].dot(axis[0]), start[k].dot(axis[1])};
@@ -126,8 +129,9 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
       }
       if (terms.empty()) continue;
       problem.add_linear(std::move(terms), intervals::Sense::GreaterEqual, 1,
-                         "surface " + std::to_string(surface_id) + " (submap) curves " + std::to_string(near.curve) +
-                             " and " + std::to_string(far.curve) + " keep a row of cells between them");
+                         "surface " + std::to_string(surface_id) + " (submap) curves " +
+                             std::to_string(near.curve) + " and " + std::to_string(far.curve) +
+                             " keep a row of cells between them");
     }
   }
 }

@@ -148,18 +148,30 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
   auto slot = [&](int i, int j) { return static_cast<size_t>(gat(i, j)) - boundary_count; };
   for (int j = jmin; j <= jmax; ++j) {
     for (int i = imin, last = imin - 1; i <= imax; ++i) {
-      if (is_interior(i, j)) hit[0][slot(i, j)] = last; else last = i;
+      if (is_interior(i, j))
+        hit[0][slot(i, j)] = last;
+      else
+        last = i;
     }
     for (int i = imax, last = imax + 1; i >= imin; --i) {
-      if (is_interior(i, j)) hit[1][slot(i, j)] = last; else last = i;
+      if (is_interior(i, j))
+        hit[1][slot(i, j)] = last;
+      else
+        last = i;
     }
   }
   for (int i = imin; i <= imax; ++i) {
     for (int j = jmin, last = jmin - 1; j <= jmax; ++j) {
-      if (is_interior(i, j)) hit[2][slot(i, j)] = last; else last = j;
+      if (is_interior(i, j))
+        hit[2][slot(i, j)] = last;
+      else
+        last = j;
     }
     for (int j = jmax, last = jmax + 1; j >= jmin; --j) {
-      if (is_interior(i, j)) hit[3][slot(i, j)] = last; else last = j;
+      if (is_interior(i, j))
+        hit[3][slot(i, j)] = last;
+      else
+        last = j;
     }
   }
   for (size_t p = boundary_count; p < out.ij.size(); ++p) {
@@ -167,7 +179,8 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
     double wsum = 0.0;
     Vec2 acc = Vec2::Zero();
     for (int axis = 0; axis < 2; ++axis) {
-      const int ends[2] = {hit[2 * axis][p - boundary_count], hit[2 * axis + 1][p - boundary_count]};
+      const int ends[2] = {hit[2 * axis][p - boundary_count],
+                           hit[2 * axis + 1][p - boundary_count]};
       for (int a : ends) {
         const int bi = axis == 0 ? a : i, bj = axis == 0 ? j : a;
         if (!inside_box(bi, bj) || gat(bi, bj) < 0) {

@@ -11,14 +11,10 @@ namespace {
 
 VertexType from_journal(io::VertexType t) {
   switch (t) {
-    case io::VertexType::End:
-      return VertexType::End;
-    case io::VertexType::Side:
-      return VertexType::Side;
-    case io::VertexType::Corner:
-      return VertexType::Corner;
-    case io::VertexType::Reversal:
-      return VertexType::Reversal;
+    case io::VertexType::End: return VertexType::End;
+    case io::VertexType::Side: return VertexType::Side;
+    case io::VertexType::Corner: return VertexType::Corner;
+    case io::VertexType::Reversal: return VertexType::Reversal;
   }
   return VertexType::Side;
 }

@@ -111,7 +111,8 @@ std::shared_ptr<const SubmapPlanData> SurfaceSubmap::plan(const scheme::SurfaceV
   }
   auto p = std::make_shared<SubmapPlanData>();
   p->surface_id = view.surface_id;
-  p->plan = plan_submap(view.model, view.surface_id, view.settings().vertex_types(), options_.classify);
+  p->plan =
+      plan_submap(view.model, view.surface_id, view.settings().vertex_types(), options_.classify);
   return p;
 }
 

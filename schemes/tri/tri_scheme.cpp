@@ -55,7 +55,8 @@ scheme::EntityMesh TriScheme::mesh(const scheme::SurfaceView& view,
   if (view.surface().loops.empty()) fail(sid, "no boundary loops");
   const std::vector<std::vector<int>> rings = mesh::surface_loop_nodes(view.model, sid, *view.mesh);
   for (size_t l = 0; l < rings.size(); ++l) {
-    if (rings[l].size() < 3) fail(sid, "tri: loop " + std::to_string(l) + " has fewer than 3 intervals");
+    if (rings[l].size() < 3)
+      fail(sid, "tri: loop " + std::to_string(l) + " has fewer than 3 intervals");
   }
   std::vector<std::vector<geom::Vec3>> loops3d;
   for (const auto& ring : rings) {
@@ -83,7 +84,8 @@ scheme::EntityMesh TriScheme::mesh(const scheme::SurfaceView& view,
       local[k++] = it->second;
     }
   }
-  for (size_t i = t.boundary_count; i < t.points.size(); ++i) local[i] = out.add(chart->to_3d(t.points[i]));
+  for (size_t i = t.boundary_count; i < t.points.size(); ++i)
+    local[i] = out.add(chart->to_3d(t.points[i]));
   out.tris.reserve(t.triangles.size());
   for (const auto& tri : t.triangles) {
     mesh::Tri e{local[static_cast<size_t>(tri[0])], local[static_cast<size_t>(tri[1])],

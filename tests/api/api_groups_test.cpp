@@ -43,13 +43,15 @@ TEST(ApiGroups, NamedBlockAndNodeSetReachTheAbaqusFile) {
   o.groups.node_sets.push_back({4, "", {}, {}, {1}, {}});  // default name nodeset_4
   const Result r = mesh_file(kPart, 2.0, o);
   ASSERT_EQ(r.written, o.exports);
-  if (std::system((std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import meshio' 2>/dev/null").c_str()) != 0)
+  if (std::system(
+          (std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import meshio' 2>/dev/null").c_str()) != 0)
     GTEST_SKIP() << "meshio missing: read-back skipped";
   const std::string out = scratch("readback.txt");
-  ASSERT_EQ(std::system((std::string(COOPERAGE_DEBIAN_PYTHON) + " " + COOPERAGE_SOURCE_DIR +
-                         "/tests/framework/io/export/groups_readback.py " + o.exports[0] + " > " +
-                         out).c_str()),
-            0);
+  ASSERT_EQ(
+      std::system((std::string(COOPERAGE_DEBIAN_PYTHON) + " " + COOPERAGE_SOURCE_DIR +
+                   "/tests/framework/io/export/groups_readback.py " + o.exports[0] + " > " + out)
+                      .c_str()),
+      0);
   std::stringstream text;
   text << std::ifstream(out).rdbuf();
   const std::string lines = text.str();

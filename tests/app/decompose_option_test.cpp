@@ -36,8 +36,8 @@ class DecomposeOption : public testing::TempDirTest {
 
 TEST_F(DecomposeOption, OffRefusesTheVolumeWithExitTwoAndNoFile) {
   const std::string step = fig3a_step();
-  const auto r = run_command(kCli + " mesh -q " + step + " --size 0.25 --decompose off -o " +
-                             path("out.vtu"));
+  const auto r =
+      run_command(kCli + " mesh -q " + step + " --size 0.25 --decompose off -o " + path("out.vtu"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("volume 1: no hex scheme applies"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("automatic decomposition"), std::string::npos) << r.err;

@@ -54,8 +54,7 @@ TEST_F(InfoCommand, JsonIsValidAndComplete) {
   std::ofstream(json) << r.out;
   // An independent JSON parser checks the document and its counts.
   const auto check = run_command(
-      std::string(COOPERAGE_DEBIAN_PYTHON) +
-      " -c \"import json,sys; d=json.load(open('" + json +
+      std::string(COOPERAGE_DEBIAN_PYTHON) + " -c \"import json,sys; d=json.load(open('" + json +
       "')); print(len(d['volumes']), len(d['surfaces']) > 0, d['volumes'][0]['volume'] > 0)\"");
   ASSERT_EQ(check.exit_code, 0) << check.err;
   EXPECT_EQ(check.out, "1 True True\n");

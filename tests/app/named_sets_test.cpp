@@ -52,22 +52,23 @@ class NamedSets : public testing::TempDirTest {};
 
 TEST_F(NamedSets, TheExamplesGroupsReachEveryFormatWithTheirNames) {
   if (!python_has("meshio, gmsh, netCDF4"))
-    GTEST_SKIP() << kPython << " lacks meshio, gmsh or netCDF4 (python3-meshio python3-gmsh "
-                               "python3-netcdf4)";
+    GTEST_SKIP() << kPython
+                 << " lacks meshio, gmsh or netCDF4 (python3-meshio python3-gmsh "
+                    "python3-netcdf4)";
   fs::copy_file(kSource + "/examples/named_sets.xml", path("named_sets.xml"));
   const auto r = run_command(kCli + " run -q " + path("named_sets.xml"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // left brick 1x1x1, right 2x1x1 at size 0.25: 64 and 128 hexes; each
   // named surface is 4x4 faces; the clamped end 5x5 nodes.
   const auto exo = readback("groups_readback.py", path("named_sets.exo"));
-  for (const char* line : {"EXO_BLOCK 1 steel HEX8 64", "EXO_BLOCK 2 rubber HEX8 128",
-                           "EXO_SIDESET 10 fixed_end 16", "EXO_SIDESET 11 load_end 16",
-                           "EXO_SIDESET 12 interface 16", "EXO_NODESET 20 clamp 25"})
+  for (const char* line :
+       {"EXO_BLOCK 1 steel HEX8 64", "EXO_BLOCK 2 rubber HEX8 128", "EXO_SIDESET 10 fixed_end 16",
+        "EXO_SIDESET 11 load_end 16", "EXO_SIDESET 12 interface 16", "EXO_NODESET 20 clamp 25"})
     EXPECT_TRUE(has(exo, line)) << line << "\n" << joined(exo);
   const auto msh = readback("groups_readback.py", path("named_sets.msh"));
-  for (const char* line : {"MESHIO_PHYS 3 1 steel", "MESHIO_PHYS 2 11 load_end",
-                           "GMSH_PHYS 3 1 steel 64", "GMSH_PHYS 3 2 rubber 128",
-                           "GMSH_PHYS 2 10 fixed_end 16", "GMSH_PHYS 2 12 interface 16"})
+  for (const char* line :
+       {"MESHIO_PHYS 3 1 steel", "MESHIO_PHYS 2 11 load_end", "GMSH_PHYS 3 1 steel 64",
+        "GMSH_PHYS 3 2 rubber 128", "GMSH_PHYS 2 10 fixed_end 16", "GMSH_PHYS 2 12 interface 16"})
     EXPECT_TRUE(has(msh, line)) << line << "\n" << joined(msh);
   const auto inp = readback("groups_readback.py", path("named_sets.inp"));
   for (const char* line : {"INP_ELSET steel 64", "INP_ELSET rubber 128", "INP_NSET clamp 25",
@@ -94,7 +95,8 @@ TEST_F(NamedSets, AnUnknownIdNamesTheJournalLineAndWritesNothing) {
 )";
   const auto r = run_command(kCli + " run -q " + path("bad.xml"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("bad.xml:5: <block>: the model has no volume 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bad.xml:5: <block>: the model has no volume 2"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(path("bad.exo")));
 }
 
@@ -126,11 +128,11 @@ TEST_F(SurfaceOutput, MeshDim2OfThePartReadsBackWithMeshioInEverySurfaceFormat) 
   const std::string mesh = kCli + " mesh " + part + " --size 2 --dim 2 -q -o ";
   const auto r = run_command(mesh + path("part.msh"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto ref = run_command(
-      kPython + " -c \"import meshio; m = meshio.read('" + path("part.msh") +
-      "'); c = {b.type: 0 for b in m.cells}\n"
-      "for b in m.cells: c[b.type] += len(b.data)\n"
-      "print(c.get('quad', 0), c.get('triangle', 0))\"");
+  const auto ref =
+      run_command(kPython + " -c \"import meshio; m = meshio.read('" + path("part.msh") +
+                  "'); c = {b.type: 0 for b in m.cells}\n"
+                  "for b in m.cells: c[b.type] += len(b.data)\n"
+                  "print(c.get('quad', 0), c.get('triangle', 0))\"");
   ASSERT_EQ(ref.exit_code, 0) << ref.err;
   std::istringstream words(ref.out);
   size_t quads = 0, tris = 0;

@@ -31,7 +31,9 @@ std::string prism_journal(const std::string& plugin_line, const std::string& mes
   return "<cooperage version=\"1\">\n" + plugin_line +
          "<geometry><prism name=\"p\" direction=\"0 0 1\">"
          "<profile points=\"0 0 0, 2 0 0, 1 1.7320508075688772 0\"/></prism></geometry>\n"
-         "<mesh size=\"0.3\">" + mesh_lines + "</mesh>\n<export file=\"prism.vtu\"/>\n"
+         "<mesh size=\"0.3\">" +
+         mesh_lines +
+         "</mesh>\n<export file=\"prism.vtu\"/>\n"
          "</cooperage>\n";
 }
 
@@ -50,8 +52,8 @@ TEST_F(PluginOption, SchemesListsTheBuiltInsAndThePluginsOrigin) {
   EXPECT_TRUE(contains(r.out, "built in")) << r.out;
   EXPECT_FALSE(contains(r.out, "triprimitive")) << r.out;
   const std::string canonical = fs::canonical(kPlugin).string();
-  for (const std::string& args : std::vector<std::string>{" --plugin " + kPlugin + " schemes --json",
-                                  " schemes --json --plugin " + kPlugin}) {
+  for (const std::string& args : std::vector<std::string>{
+           " --plugin " + kPlugin + " schemes --json", " schemes --json --plugin " + kPlugin}) {
     r = run_command(kCli + args);
     ASSERT_EQ(r.exit_code, 0) << args << ": " << r.err;
     EXPECT_TRUE(contains(r.out, "\"triprimitive\"")) << r.out;
@@ -102,8 +104,7 @@ TEST_F(PluginOption, AJournalLoadsItRelativeToItselfAndPinsItsScheme) {
 TEST_F(PluginOption, ThePluginPathVariableLoadsADirectory) {
   fs::create_directories(path("plugins"));
   fs::copy_file(kPlugin, path("plugins/libtri.so"));
-  const auto r =
-      run_command("COOPERAGE_PLUGIN_PATH=" + path("plugins") + " " + kCli + " schemes");
+  const auto r = run_command("COOPERAGE_PLUGIN_PATH=" + path("plugins") + " " + kCli + " schemes");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "triprimitive")) << r.out;
   EXPECT_TRUE(contains(r.out, fs::canonical(path("plugins/libtri.so")).string())) << r.out;
@@ -112,8 +113,9 @@ TEST_F(PluginOption, ThePluginPathVariableLoadsADirectory) {
 TEST_F(PluginOption, ABrokenPluginIsExitCodeTwoOnEverySubcommandAndNoMesh) {
   write("fake.so", "not a library\n");
   write("job.xml", prism_journal(""));
-  for (const std::string& sub : std::vector<std::string>{"schemes", "info " + path("job.xml"), "plan " + path("job.xml"),
-        "run -q " + path("job.xml")}) {
+  for (const std::string& sub :
+       std::vector<std::string>{"schemes", "info " + path("job.xml"), "plan " + path("job.xml"),
+                                "run -q " + path("job.xml")}) {
     const auto r = run_command(kCli + " --plugin " + path("fake.so") + " " + sub);
     EXPECT_EQ(r.exit_code, 2) << sub;
     EXPECT_TRUE(contains(r.err, "plug-in " + fs::canonical(path("fake.so")).string() +

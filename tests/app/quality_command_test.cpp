@@ -66,8 +66,9 @@ TEST(QualityCommand, JsonReport) {
   EXPECT_NE(s.find("\"name\":\"block_one\""), std::string::npos) << s;
   EXPECT_NE(s.find("\"type\":\"hex\""), std::string::npos) << s;
   EXPECT_NE(s.find("\"count\":8"), std::string::npos) << s;
-  EXPECT_NE(s.find("\"scaled_jacobian\":{\"min\":1,\"mean\":1,\"max\":1,\"median\":1,\"inverted\":0}"),
-            std::string::npos)
+  EXPECT_NE(
+      s.find("\"scaled_jacobian\":{\"min\":1,\"mean\":1,\"max\":1,\"median\":1,\"inverted\":0}"),
+      std::string::npos)
       << s;
 }
 

@@ -21,7 +21,9 @@ const std::string kCli = COOPERAGE_CLI;
 const std::string kSource = COOPERAGE_SOURCE_DIR;
 const std::string kCad = kSource + "/tests/framework/geometry/occ/data/";
 
-size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+size_t lines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 class ReliabilityCommand : public testing::TempDirTest {
  protected:
@@ -44,7 +46,8 @@ TEST_F(ReliabilityCommand, ACrashingCadFileIsAnErrorWithoutJournalPrefix) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("crash_brick.step: the CAD kernel could not read it (it crashed"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   EXPECT_EQ(r.err.find(":0:"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("<import>"), std::string::npos) << r.err;
   EXPECT_TRUE(files().empty());
@@ -53,8 +56,8 @@ TEST_F(ReliabilityCommand, ACrashingCadFileIsAnErrorWithoutJournalPrefix) {
 }
 
 TEST_F(ReliabilityCommand, AnInvalidBrepIsRefusedNotMeshed) {
-  const auto r = run_command(kCli + " mesh " + kCad + "damaged/vertex_off_edges.brep --size 0.5 -o " +
-                             path("out.exo"));
+  const auto r = run_command(kCli + " mesh " + kCad +
+                             "damaged/vertex_off_edges.brep --size 0.5 -o " + path("out.exo"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("the B-rep is not valid"), std::string::npos) << r.err;
   EXPECT_LE(lines(r.err), 3u) << r.err;
@@ -62,12 +65,13 @@ TEST_F(ReliabilityCommand, AnInvalidBrepIsRefusedNotMeshed) {
 }
 
 TEST_F(ReliabilityCommand, ARunawaySizeIsRefusedWithTheEstimate) {
-  const auto r = run_command(kCli + " mesh " + kCad + "brick.step --size 1e-4 -o " + path("out.exo"));
+  const auto r =
+      run_command(kCli + " mesh " + kCad + "brick.step --size 1e-4 -o " + path("out.exo"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("the mesh would have about"), std::string::npos) << r.err;
   EXPECT_TRUE(files().empty());
-  const auto raised = run_command(kCli + " mesh " + kCad + "brick.step --size 0.5 --max-elements 100 -o " +
-                                  path("out.exo"));
+  const auto raised = run_command(kCli + " mesh " + kCad +
+                                  "brick.step --size 0.5 --max-elements 100 -o " + path("out.exo"));
   EXPECT_EQ(raised.exit_code, 2) << raised.err;
   EXPECT_NE(raised.err.find("the limit is 1e+02"), std::string::npos) << raised.err;
 }
@@ -121,7 +125,8 @@ TEST_F(ReliabilityCommand, AVolumeWaitingForAFailedNeighbourIsRefusedNotAnIntern
     return;
   }
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.out.find("volume 4: refused: it takes the mesh of a shared surface from volume 1"), std::string::npos)
+  EXPECT_NE(r.out.find("volume 4: refused: it takes the mesh of a shared surface from volume 1"),
+            std::string::npos)
       << r.out;
   EXPECT_TRUE(files().empty());
 }
@@ -140,7 +145,9 @@ TEST_F(ReliabilityCommand, AllowPartialWritesWhatMeshedAndExitsOne) {
 TEST_F(ReliabilityCommand, ATighterVolumeToleranceFailsTheRunWithExitOne) {
   // A coarse rod deviates a little from the CAD's volume even after the
   // faceting credit; a tolerance below that fails the run and writes nothing.
-  const std::string job = journal("rod.xml", R"(  <geometry><cylinder name="rod" base="0 0 0" axis="0 0 1" radius="5" height="20"/></geometry>
+  const std::string job = journal(
+      "rod.xml",
+      R"(  <geometry><cylinder name="rod" base="0 0 0" axis="0 0 1" radius="5" height="20"/></geometry>
   <mesh size="5"/>
   <export file="rod.exo"/>
 )");
@@ -150,12 +157,14 @@ TEST_F(ReliabilityCommand, ATighterVolumeToleranceFailsTheRunWithExitOne) {
   const auto tight = run_command(kCli + " run -q --volume-tolerance 1e-6 " + job);
   EXPECT_EQ(tight.exit_code, 1) << tight.err << tight.out;
   EXPECT_NE(tight.out.find("volume 1: failed the volume check"), std::string::npos) << tight.out;
-  EXPECT_NE(tight.out.find("exports skipped: a volume check failed"), std::string::npos) << tight.out;
+  EXPECT_NE(tight.out.find("exports skipped: a volume check failed"), std::string::npos)
+      << tight.out;
   EXPECT_TRUE(files().empty());
 }
 
 TEST_F(ReliabilityCommand, AnExportIntoAMissingDirectoryIsRefusedBeforeMeshing) {
-  const auto r = run_command(kCli + " mesh " + kCad + "brick.step --size 1 -o " + path("no/dir/x.exo"));
+  const auto r =
+      run_command(kCli + " mesh " + kCad + "brick.step --size 1 -o " + path("no/dir/x.exo"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find(":0:"), std::string::npos) << r.err;

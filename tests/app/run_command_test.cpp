@@ -28,7 +28,9 @@ class RunCommand : public testing::TempDirTest {
   }
 };
 
-size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+size_t lines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST_F(RunCommand, BracketExampleWritesExodusAndVtuAndPrintsTheTable) {
   fs::copy_file(kSource + "/examples/bracket.xml", path("bracket.xml"));
@@ -56,10 +58,10 @@ TEST_F(RunCommand, OutputIsByteIdenticalForOneAndManyThreads) {
   <mesh size="0.2"/>
 )";
   for (const char* threads : {"1", "2", "4"}) {
-    const std::string job = journal(std::string("t") + threads + ".xml",
-                                    body + "  <export file=\"t" + threads + ".exo\"/>\n" +
-                                        "  <export file=\"t" + threads + ".msh\"/>\n" +
-                                        "  <export file=\"t" + threads + ".vtu\"/>\n");
+    const std::string job =
+        journal(std::string("t") + threads + ".xml",
+                body + "  <export file=\"t" + threads + ".exo\"/>\n" + "  <export file=\"t" +
+                    threads + ".msh\"/>\n" + "  <export file=\"t" + threads + ".vtu\"/>\n");
     const auto r = run_command(kCli + " run -q --threads " + threads + " " + job);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
@@ -112,7 +114,8 @@ TEST_F(RunCommand, ProgressGoesToStderrWithoutQuiet) {
 }
 
 TEST_F(RunCommand, FailingQualityCheckExitsOneAndWritesNothing) {
-  const std::string job = journal("bad_quality.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  const std::string job = journal(
+      "bad_quality.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5"/>
   <quality metric="jacobian" min="1" action="fail"/>
   <export file="out.exo"/>
@@ -124,7 +127,8 @@ TEST_F(RunCommand, FailingQualityCheckExitsOneAndWritesNothing) {
 }
 
 TEST_F(RunCommand, UnmeshableVolumeIsOneClearLineAndNoFile) {
-  const std::string job = journal("sphere.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
+  const std::string job =
+      journal("sphere.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
   <mesh size="0.2"/>
   <export file="sphere.exo"/>
 )");
@@ -138,7 +142,8 @@ TEST_F(RunCommand, UnmeshableVolumeIsOneClearLineAndNoFile) {
 }
 
 TEST_F(RunCommand, UnknownIdInTheJournalNamesTheLine) {
-  const std::string job = journal("bad_id.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  const std::string job =
+      journal("bad_id.xml", R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5">
     <curve id="99" intervals="3"/>
   </mesh>
@@ -160,8 +165,8 @@ TEST_F(RunCommand, MeshCommandMeshesAStepFileWithOnlyASize) {
   bench.brick("a", {0, 0, 0}, {1, 1, 1});
   bench.brick("b", {1, 0, 0}, {1, 1, 1});
   bench.write(path("pair.step"));
-  const auto r = run_command(kCli + " mesh " + path("pair.step") + " --size 0.25 -q -o " +
-                             path("pair.msh"));
+  const auto r =
+      run_command(kCli + " mesh " + path("pair.step") + " --size 0.25 -q -o " + path("pair.msh"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("pair.msh")));
   const auto q = run_command(kCli + " quality " + path("pair.msh"));
@@ -185,8 +190,8 @@ TEST_F(RunCommand, MeshCommandElementsOption) {
     EXPECT_NE(q.out.find("wedge"), std::string::npos) << kind << ": " << q.out;
     EXPECT_EQ(q.out.find("hex") != std::string::npos, kind == "mixed") << kind << ": " << q.out;
   }
-  const auto bad = run_command(kCli + " mesh " + path("blade.step") + " --size 0.5 --elements tet -o " +
-                               path("x.vtu"));
+  const auto bad = run_command(kCli + " mesh " + path("blade.step") +
+                               " --size 0.5 --elements tet -o " + path("x.vtu"));
   EXPECT_EQ(bad.exit_code, 2);
 }
 
@@ -196,10 +201,11 @@ TEST_F(RunCommand, MeshCommandBinaryOutputs) {
   bench.write(path("cube.step"));
   for (const std::string ext : {".msh", ".vtu"}) {
     const std::string ascii = path("cube_a" + ext), binary = path("cube_b" + ext);
-    ASSERT_EQ(run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q -o " + ascii)
-                  .exit_code, 0);
-    const auto r = run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q --binary -o " +
-                               binary);
+    ASSERT_EQ(
+        run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q -o " + ascii).exit_code,
+        0);
+    const auto r =
+        run_command(kCli + " mesh " + path("cube.step") + " --size 0.1 -q --binary -o " + binary);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::ifstream in(binary, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -253,7 +259,8 @@ TEST_F(RunCommand, PlanShowsEveryChoiceWithReasonsWithoutMeshing) {
 }
 
 TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
-  const std::string job = journal("ball.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
+  const std::string job =
+      journal("ball.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
 )");
   const auto r = run_command(kCli + " plan " + job);
   EXPECT_EQ(r.exit_code, 2);
@@ -263,7 +270,8 @@ TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
   EXPECT_NE(r.out.find("    - cooper: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("    - map: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("surfaces\n"), std::string::npos) << r.out;
-  const auto j = run_command(kCli + " plan --json " + job + " | /usr/bin/python3 -c \"import json,sys; "
+  const auto j = run_command(kCli + " plan --json " + job +
+                             " | /usr/bin/python3 -c \"import json,sys; "
                              "d=json.load(sys.stdin); print(len(d['volumes']), "
                              "[c['scheme'] for c in d['refused_volumes'][0]['candidates']])\"");
   ASSERT_EQ(j.exit_code, 0) << j.err;
@@ -280,8 +288,8 @@ TEST_F(RunCommand, OpenShellIsRejectedWithTheFileAndNoOutput) {
   }
   bench.bspline_patch("sheet", grid, 0.0);
   bench.write(path("sheet.step"));
-  const auto r = run_command(kCli + " mesh " + path("sheet.step") + " --size 0.5 -q -o " +
-                             path("sheet.exo"));
+  const auto r =
+      run_command(kCli + " mesh " + path("sheet.step") + " --size 0.5 -q -o " + path("sheet.exo"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(lines(r.err), 1u) << r.err;
   EXPECT_NE(r.err.find("sheet.step"), std::string::npos) << r.err;

@@ -46,7 +46,8 @@ Checked check_mesh_file(const std::string& path, const std::string& name) {
     auto& v = db.mutable_volume(++id);
     for (size_t e = 0; e < b.size(); ++e) {
       mesh::Hex h;
-      for (int k = 0; k < 8; ++k) h[static_cast<size_t>(k)] = b.connectivity[8 * e + static_cast<size_t>(k)];
+      for (int k = 0; k < 8; ++k)
+        h[static_cast<size_t>(k)] = b.connectivity[8 * e + static_cast<size_t>(k)];
       v.hexes.push_back(h);
     }
   }
@@ -81,7 +82,8 @@ Checked check_mesh_file(const std::string& path, const std::string& name) {
     if (entry.first > 2) ++overused;
     if (entry.first != 1) continue;
     for (int k = 0; k < 4; ++k) {
-      const int a = entry.second[static_cast<size_t>(k)], b = entry.second[static_cast<size_t>((k + 1) % 4)];
+      const int a = entry.second[static_cast<size_t>(k)],
+                b = entry.second[static_cast<size_t>((k + 1) % 4)];
       ++edges[{std::min(a, b), std::max(a, b)}];
     }
   }
@@ -122,8 +124,9 @@ TEST_F(StepExport, MustMeshPartsMeshFromTheirStepFiles) {
     const Checked c = check_mesh_file(out, name);
     EXPECT_GE(c.min_sj, 0.3) << name;
     EXPECT_NEAR(c.volume, solid, 0.005 * solid) << name;
-    std::printf("[step export] %s at size %g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n", name.c_str(),
-                size, c.hexes, c.min_sj, 100 * (c.volume - solid) / solid);
+    std::printf(
+        "[step export] %s at size %g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n",
+        name.c_str(), size, c.hexes, c.min_sj, 100 * (c.volume - solid) / solid);
   }
 }
 
@@ -141,15 +144,19 @@ TEST_F(StepExport, RunImportsTheStepFileOfAPart) {
     for (const auto& v : model.volumes()) solid += v.volume;
     {
       std::ofstream j(path(name + ".xml"));
-      j << "<cooperage version=\"1\">\n  <geometry>\n    <import name=\"part\" file=\"" << name << ".step\"/>\n"
-        << "  </geometry>\n  <mesh size=\"0.3\"/>\n  <export file=\"" << name << ".exo\"/>\n</cooperage>\n";
+      j << "<cooperage version=\"1\">\n  <geometry>\n    <import name=\"part\" file=\"" << name
+        << ".step\"/>\n"
+        << "  </geometry>\n  <mesh size=\"0.3\"/>\n  <export file=\"" << name
+        << ".exo\"/>\n</cooperage>\n";
     }
-    const auto r = testing::run_command(std::string(COOPERAGE_CLI) + " run " + path(name + ".xml") + " --quiet");
+    const auto r = testing::run_command(std::string(COOPERAGE_CLI) + " run " + path(name + ".xml") +
+                                        " --quiet");
     ASSERT_EQ(r.exit_code, 0) << name << ":\n" << r.err;
     const Checked c = check_mesh_file(path(name + ".exo"), name);
     EXPECT_GE(c.min_sj, 0.3) << name;
     EXPECT_NEAR(c.volume, solid, 0.005 * solid) << name;
-    std::printf("[step export] run %s: %zu hexes, min scaled Jacobian %.3f\n", name.c_str(), c.hexes, c.min_sj);
+    std::printf("[step export] run %s: %zu hexes, min scaled Jacobian %.3f\n", name.c_str(),
+                c.hexes, c.min_sj);
   }
 }
 

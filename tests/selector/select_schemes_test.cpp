@@ -29,7 +29,9 @@ io::MeshSettings sized(double size) {
   return s;
 }
 
-const Choice& volume(const Selection& s, int id) { return s.volumes.at(static_cast<size_t>(id - 1)); }
+const Choice& volume(const Selection& s, int id) {
+  return s.volumes.at(static_cast<size_t>(id - 1));
+}
 
 // A plate 10 x 6 x 1 with three square through holes, as a prism.
 geom::Model plate_with_square_holes(occ::Workbench& bench) {
@@ -54,7 +56,8 @@ TEST(Selector, BrickGoesToVolumeMapWithEverySurfaceMapped) {
   }
   // cooper also applies to a brick, with a lower score.
   bool cooper_ok = false;
-  for (const auto& k : volume(s, 1).candidates) cooper_ok |= k.scheme == "cooper" && k.applicability.ok;
+  for (const auto& k : volume(s, 1).candidates)
+    cooper_ok |= k.scheme == "cooper" && k.applicability.ok;
   EXPECT_TRUE(cooper_ok);
 }
 
@@ -223,7 +226,8 @@ TEST(Selector, InfeasibleAutomaticChoiceIsRelaxedAndReported) {
     }
   }
   EXPECT_GE(paved, 1);
-  EXPECT_NE(s.relaxations.front().find("map -> submap"), std::string::npos) << s.relaxations.front();
+  EXPECT_NE(s.relaxations.front().find("map -> submap"), std::string::npos)
+      << s.relaxations.front();
   // Deterministic: the same relaxations again.
   EXPECT_EQ(select_schemes(model, f.registry, settings, surfaces_only).relaxations, s.relaxations);
 }
@@ -355,7 +359,8 @@ TEST(Selector, PlanIsInvariantUnderRigidMotionAndInputOrder) {
   const Vec3 shift(3 * u(rng), 3 * u(rng), 3 * u(rng));
   auto build = [&](bool moved, bool reversed) {
     occ::Workbench bench;
-    std::vector<std::pair<std::string, Vec3>> plates{{"a", {0, 0, 0}}, {"b", {2, 0, 0}}, {"c", {0, 2, 0}}};
+    std::vector<std::pair<std::string, Vec3>> plates{
+        {"a", {0, 0, 0}}, {"b", {2, 0, 0}}, {"c", {0, 2, 0}}};
     if (reversed) std::reverse(plates.begin(), plates.end());
     for (const auto& [name, origin] : plates) bench.brick(name, origin, {2, 2, 0.5});
     if (moved) {
@@ -394,7 +399,8 @@ namespace {
 TEST(Selector, MapAndSubmapOnOneSharedRectangleAgree) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {2, 2, 2});
-  bench.prism("l", {{2, 0, 0}, {5, 0, 0}, {5, 1, 0}, {3, 1, 0}, {3, 2, 0}, {2, 2, 0}}, {}, {0, 0, 2});
+  bench.prism("l", {{2, 0, 0}, {5, 0, 0}, {5, 1, 0}, {3, 1, 0}, {3, 2, 0}, {2, 2, 0}}, {},
+              {0, 0, 2});
   const geom::Model model = bench.build_model();
   ASSERT_EQ(model.volumes().size(), 2u);
   int shared = 0;
@@ -425,7 +431,8 @@ TEST(Selector, MapAndSubmapOnOneSharedRectangleAgree) {
   for (const auto& v : model.volumes()) {
     std::set<int> used;
     for (const auto& h : r.mesh.volume(v.id).hexes) used.insert(h.begin(), h.end());
-    for (int n : face_nodes) EXPECT_TRUE(used.count(n)) << "volume " << v.id << " misses node " << n;
+    for (int n : face_nodes)
+      EXPECT_TRUE(used.count(n)) << "volume " << v.id << " misses node " << n;
   }
 }
 

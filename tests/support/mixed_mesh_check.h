@@ -79,7 +79,8 @@ inline MixedMeshSummary check_mixed_mesh(const geom::Model& model, const mesh::M
       ++s.wedges;
       ++faces[sorted_key({w[0], w[1], w[2]})].count;
       ++faces[sorted_key({w[3], w[4], w[5]})].count;
-      for (const auto& f : wedge_quad) ++faces[sorted_key({w[f[0]], w[f[1]], w[f[2]], w[f[3]]})].count;
+      for (const auto& f : wedge_quad)
+        ++faces[sorted_key({w[f[0]], w[f[1]], w[f[2]], w[f[3]]})].count;
     }
   }
   size_t once = 0;

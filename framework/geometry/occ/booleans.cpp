@@ -30,7 +30,8 @@ const char* op_name(Op op) {
 
 void boolean(Workbench::Impl& impl, Op op, const std::string& name,
              const std::vector<std::string>& inputs) {
-  if (inputs.size() < 2) detail::invalid(name, std::string(op_name(op)) + " needs at least two inputs");
+  if (inputs.size() < 2)
+    detail::invalid(name, std::string(op_name(op)) + " needs at least two inputs");
   std::set<std::string> seen;
   for (const auto& in : inputs) {
     impl.get(in);  // throws for unknown names
@@ -102,7 +103,8 @@ void Workbench::webcut(const std::string& shape, const Vec3& origin, const Vec3&
     const Vec3 lo(x0, y0, z0), hi(x1, y1, z1);
     const double half = 2.0 * ((hi - lo).norm() + (0.5 * (lo + hi) - origin).norm()) + 1.0;
     const TopoDS_Face tool =
-        BRepBuilderAPI_MakeFace(gp_Pln(detail::to_pnt(origin), dir), -half, half, -half, half).Face();
+        BRepBuilderAPI_MakeFace(gp_Pln(detail::to_pnt(origin), dir), -half, half, -half, half)
+            .Face();
     BRepAlgoAPI_Splitter splitter;
     TopTools_ListOfShape args, tools;
     args.Append(target->shape);
@@ -112,7 +114,8 @@ void Workbench::webcut(const std::string& shape, const Vec3& origin, const Vec3&
     splitter.SetRunParallel(Standard_False);
     splitter.Build();
     if (!splitter.IsDone() || splitter.HasErrors())
-      throw MeshingError(ErrorCode::GeometryError, "shape '" + shape + "': webcut failed in the kernel");
+      throw MeshingError(ErrorCode::GeometryError,
+                         "shape '" + shape + "': webcut failed in the kernel");
     return splitter.Shape();
   });
 }

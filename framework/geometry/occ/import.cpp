@@ -59,7 +59,10 @@ struct Unit {
 bool unit_from_name(std::string name, Unit& unit) {
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  static const struct { const char* names[4]; Unit unit; } table[] = {
+  static const struct {
+    const char* names[4];
+    Unit unit;
+  } table[] = {
       {{"MM", "MILLIMETRE", "MILLIMETER", nullptr}, {"MM", 1e-3}},
       {{"M", "METRE", "METER", nullptr}, {"M", 1.0}},
       {{"CM", "CENTIMETRE", "CENTIMETER", nullptr}, {"CM", 1e-2}},
@@ -86,7 +89,8 @@ bool unit_from_name(std::string name, Unit& unit) {
 
 TopoDS_Shape read_step(const std::string& path, Unit& unit) {
   STEPControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) parse_error(path, "not a readable STEP file");
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    parse_error(path, "not a readable STEP file");
   TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
   reader.FileUnits(lengths, angles, solid_angles);
   if (lengths.Length() > 0) unit_from_name(lengths.First().ToCString(), unit);
@@ -101,19 +105,21 @@ TopoDS_Shape read_step(const std::string& path, Unit& unit) {
 
 TopoDS_Shape read_iges(const std::string& path, Unit& unit) {
   IGESControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) parse_error(path, "not a readable IGES file");
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    parse_error(path, "not a readable IGES file");
   Handle(IGESData_IGESModel) model = reader.IGESModel();
   if (!model.IsNull()) {
     // The unit flag of the global section (IGES 5.3, sec. 2.2.4.3); the
     // cascade unit (in mm) is set to it so the transfer does not convert.
     IGESData_GlobalSection gs = model->GlobalSection();
-    static const Unit by_flag[] = {{"INCH", 0.0254}, {"MM", 1e-3},    {"MM", 1e-3},
+    static const Unit by_flag[] = {{"INCH", 0.0254}, {"MM", 1e-3},     {"MM", 1e-3},
                                    {"FT", 0.3048},   {"MI", 1609.344}, {"M", 1.0},
                                    {"KM", 1e3},      {"MIL", 2.54e-5}, {"UM", 1e-6},
                                    {"CM", 1e-2},     {"UIN", 2.54e-8}};
     const int flag = gs.UnitFlag();
     bool known = false;
-    if (flag == 3 && !gs.UnitName().IsNull()) known = unit_from_name(gs.UnitName()->ToCString(), unit);
+    if (flag == 3 && !gs.UnitName().IsNull())
+      known = unit_from_name(gs.UnitName()->ToCString(), unit);
     if (!known && flag >= 1 && flag <= 11 && flag != 3) unit = by_flag[flag - 1];
     gs.SetCascadeUnit(unit.metres * 1000.0);
     model->SetGlobalSection(gs);
@@ -269,9 +275,9 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
   const CadKind kind = step ? CadKind::Step : iges ? CadKind::Iges : CadKind::Brep;
 
   const IsolationLimits limits = limits_for(path);
-  const IsolatedRun run =
-      run_isolated([&](std::string& out) { read_in_child(path, kind, heal, impl_->merge_on_import, out); },
-                   limits);
+  const IsolatedRun run = run_isolated(
+      [&](std::string& out) { read_in_child(path, kind, heal, impl_->merge_on_import, out); },
+      limits);
   if (run.outcome == IsolatedRun::Outcome::Failed) throw MeshingError(run.code, run.payload);
   if (run.outcome != IsolatedRun::Outcome::Done)
     throw MeshingError(ErrorCode::ParseError,

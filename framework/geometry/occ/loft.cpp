@@ -44,11 +44,13 @@ std::vector<Plane> check_sections(const std::string& shape,
     if (s.size() == 1) {
       if (!s[0].allFinite()) invalid(shape, what + " has a non-finite point");
       if (i != 0 && i != last)
-        invalid(shape, what + " is a single point; a point section (an apex) is allowed only "
-                              "as the first or the last section");
+        invalid(shape, what +
+                           " is a single point; a point section (an apex) is allowed only "
+                           "as the first or the last section");
     } else if (s.size() == 2) {
-      invalid(shape, what + " has 2 points; a section is a single point (an apex) or a polygon "
-                            "of at least 3 points");
+      invalid(shape, what +
+                         " has 2 points; a section is a single point (an apex) or a polygon "
+                         "of at least 3 points");
     } else {
       ++polygons;
     }
@@ -63,8 +65,7 @@ std::vector<Plane> check_sections(const std::string& shape,
     const std::string what = section_name(i);
     planes[i].normal = detail::check_polygon(shape, s, what.c_str());
     planes[i].origin = s.front();
-    detail::check_in_plane(shape, s, s.front(), planes[i].normal, detail::extent(s),
-                           what.c_str());
+    detail::check_in_plane(shape, s, s.front(), planes[i].normal, detail::extent(s), what.c_str());
   }
 
   // Consecutive sections must span a volume: an apex off the plane of its
@@ -87,12 +88,13 @@ std::vector<Plane> check_sections(const std::string& shape,
     for (size_t i = first + 1; i < sections.size(); ++i) {
       if (sections[i].size() < 3) continue;
       if (sections[i].size() != sections[first].size())
-        invalid(shape, "a ruled loft needs the same number of points in every polygon section "
-                       "(OpenCASCADE joins the sections edge by edge and needs compatible "
-                       "wires): " + section_name(first) + " has " +
-                           std::to_string(sections[first].size()) + ", " + section_name(i) +
-                           " has " + std::to_string(sections[i].size()) +
-                           "; use ruled=\"false\" or give both the same count");
+        invalid(shape,
+                "a ruled loft needs the same number of points in every polygon section "
+                "(OpenCASCADE joins the sections edge by edge and needs compatible "
+                "wires): " +
+                    section_name(first) + " has " + std::to_string(sections[first].size()) + ", " +
+                    section_name(i) + " has " + std::to_string(sections[i].size()) +
+                    "; use ruled=\"false\" or give both the same count");
       // Point j joins point j of the next polygon: the windings must agree.
       if (planes[i].normal.dot(planes[first].normal) < 0.0)
         invalid(shape, section_name(i) + " winds the opposite way to " + section_name(first) +
@@ -110,27 +112,28 @@ void Workbench::loft(const std::string& name, const std::vector<std::vector<Vec3
   impl_->check_new_name(name);
   check_sections(name, sections, ruled);
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    BRepOffsetAPI_ThruSections maker(Standard_True, ruled ? Standard_True : Standard_False);
-    // A ruled loft keeps the user's pairing of points (validated above); a
-    // smooth one lets OCCT make differently shaped sections compatible.
-    maker.CheckCompatibility(ruled ? Standard_False : Standard_True);
-    for (const auto& s : sections) {
-      if (s.size() == 1)
-        maker.AddVertex(BRepBuilderAPI_MakeVertex(detail::to_pnt(s.front())).Vertex());
-      else
-        maker.AddWire(detail::polygon_wire(s));
-    }
-    maker.Build();
-    if (!maker.IsDone()) invalid(name, "OpenCASCADE could not loft the sections");
-    TopoDS_Shape shape = maker.Shape();
-    TopExp_Explorer solids(shape, TopAbs_SOLID);
-    if (!solids.More()) invalid(name, "the loft did not produce a solid");
-    TopoDS_Solid solid = TopoDS::Solid(solids.Current());
-    // Outward face normals whatever the order and winding of the sections.
-    BRepLib::OrientClosedSolid(solid);
-    detail::check_valid(name, solid);
-    return TopoDS_Shape(solid);
-  }));
+               BRepOffsetAPI_ThruSections maker(Standard_True,
+                                                ruled ? Standard_True : Standard_False);
+               // A ruled loft keeps the user's pairing of points (validated above); a
+               // smooth one lets OCCT make differently shaped sections compatible.
+               maker.CheckCompatibility(ruled ? Standard_False : Standard_True);
+               for (const auto& s : sections) {
+                 if (s.size() == 1)
+                   maker.AddVertex(BRepBuilderAPI_MakeVertex(detail::to_pnt(s.front())).Vertex());
+                 else
+                   maker.AddWire(detail::polygon_wire(s));
+               }
+               maker.Build();
+               if (!maker.IsDone()) invalid(name, "OpenCASCADE could not loft the sections");
+               TopoDS_Shape shape = maker.Shape();
+               TopExp_Explorer solids(shape, TopAbs_SOLID);
+               if (!solids.More()) invalid(name, "the loft did not produce a solid");
+               TopoDS_Solid solid = TopoDS::Solid(solids.Current());
+               // Outward face normals whatever the order and winding of the sections.
+               BRepLib::OrientClosedSolid(solid);
+               detail::check_valid(name, solid);
+               return TopoDS_Shape(solid);
+             }));
 }
 
 }  // namespace cooperage::occ

@@ -83,7 +83,8 @@ void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces) {
   algo.SetRunParallel(Standard_False);
   algo.Build();
   if (!algo.IsDone() || algo.HasErrors())
-    throw MeshingError(ErrorCode::GeometryError, "imprint and merge of the solids failed in the kernel");
+    throw MeshingError(ErrorCode::GeometryError,
+                       "imprint and merge of the solids failed in the kernel");
   auto images = [&](std::vector<Piece>& pieces, TopAbs_ShapeEnum type) {
     TopTools_IndexedMapOfShape seen;
     std::vector<Piece> out;
@@ -96,7 +97,8 @@ void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces) {
       }
       for (TopTools_ListOfShape::Iterator it(mod); it.More(); it.Next()) {
         if (it.Value().ShapeType() != type) continue;
-        if (seen.Add(it.Value()) > static_cast<int>(out.size())) out.push_back({it.Value(), p.owner});
+        if (seen.Add(it.Value()) > static_cast<int>(out.size()))
+          out.push_back({it.Value(), p.owner});
       }
     }
     pieces.swap(out);
@@ -115,7 +117,8 @@ class Numbering {
  public:
   geom::Model build(const std::vector<Piece>& solids, const std::vector<Piece>& free_faces,
                     const std::vector<std::string>& names) {
-    for (size_t v = 0; v < solids.size(); ++v) walk_solid(TopoDS::Solid(solids[v].shape), static_cast<int>(v) + 1);
+    for (size_t v = 0; v < solids.size(); ++v)
+      walk_solid(TopoDS::Solid(solids[v].shape), static_cast<int>(v) + 1);
     for (const auto& f : free_faces) face_index(TopoDS::Face(f.shape));
 
     geom::Model model;
@@ -198,7 +201,8 @@ class Numbering {
         const int idx = face_index(f);
         auto& vols = face_volumes_[static_cast<size_t>(idx - 1)];
         if (std::find(vols.begin(), vols.end(), volume_id) == vols.end()) vols.push_back(volume_id);
-        const bool same = f.Orientation() == oriented_faces_[static_cast<size_t>(idx - 1)].Orientation();
+        const bool same =
+            f.Orientation() == oriented_faces_[static_cast<size_t>(idx - 1)].Orientation();
         shell_uses.push_back({idx, same ? geom::Sense::Forward : geom::Sense::Reversed});
       }
       if (!shell_uses.empty()) uses.push_back(std::move(shell_uses));
@@ -229,8 +233,8 @@ class Numbering {
         if (BRep_Tool::Degenerated(e)) continue;
         const TopAbs_Orientation o = e.Orientation();
         if (o != TopAbs_FORWARD && o != TopAbs_REVERSED) continue;
-        loop.uses.push_back({edge_index(e), o == TopAbs_FORWARD ? geom::Sense::Forward
-                                                                 : geom::Sense::Reversed});
+        loop.uses.push_back(
+            {edge_index(e), o == TopAbs_FORWARD ? geom::Sense::Forward : geom::Sense::Reversed});
       }
       if (!loop.uses.empty()) loops.push_back(std::move(loop));
     }
@@ -285,7 +289,8 @@ geom::Model build_model_of(const std::vector<NamedShape>& shapes, const BuildOpt
   return guarded(ErrorCode::GeometryError, "building the model", [&] {
     std::vector<Piece> solids, faces;
     // A lone import merged in its child: the same pieces, in the same order.
-    const bool premerged = options.imprint_merge && shapes.size() == 1 && !shapes[0].merged.IsNull();
+    const bool premerged =
+        options.imprint_merge && shapes.size() == 1 && !shapes[0].merged.IsNull();
     if (premerged) {
       collect({NamedShape{shapes[0].name, shapes[0].merged, {}}}, solids, faces);
     } else {

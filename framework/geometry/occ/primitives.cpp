@@ -69,7 +69,8 @@ TopoDS_Wire polygon_wire(const std::vector<Vec3>& pts) {
 
 void check_valid(const std::string& shape, const TopoDS_Shape& s) {
   if (s.IsNull() || !BRepCheck_Analyzer(s).IsValid())
-    throw MeshingError(ErrorCode::GeometryError, "shape '" + shape + "': the kernel built an invalid solid");
+    throw MeshingError(ErrorCode::GeometryError,
+                       "shape '" + shape + "': the kernel built an invalid solid");
 }
 
 }  // namespace detail
@@ -117,20 +118,22 @@ void Workbench::brick(const std::string& name, const Vec3& origin, const Vec3& s
   impl_->check_new_name(name);
   for (int i = 0; i < 3; ++i) positive(name, size[i], "brick size");
   if (!origin.allFinite()) invalid(name, "origin must be finite");
-  impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    return BRepPrimAPI_MakeBox(detail::to_pnt(origin), size.x(), size.y(), size.z()).Shape();
-  }));
+  impl_->add(
+      name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
+        return BRepPrimAPI_MakeBox(detail::to_pnt(origin), size.x(), size.y(), size.z()).Shape();
+      }));
 }
 
-void Workbench::cylinder(const std::string& name, const Vec3& base, const Vec3& axis,
-                         double radius, double height) {
+void Workbench::cylinder(const std::string& name, const Vec3& base, const Vec3& axis, double radius,
+                         double height) {
   impl_->check_new_name(name);
   positive(name, radius, "radius");
   positive(name, height, "height");
   const gp_Dir dir = detail::checked_dir(name, axis, "axis");
-  impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    return BRepPrimAPI_MakeCylinder(gp_Ax2(detail::to_pnt(base), dir), radius, height).Shape();
-  }));
+  impl_->add(
+      name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
+        return BRepPrimAPI_MakeCylinder(gp_Ax2(detail::to_pnt(base), dir), radius, height).Shape();
+      }));
 }
 
 void Workbench::cone(const std::string& name, const Vec3& base, const Vec3& axis, double radius1,
@@ -142,19 +145,19 @@ void Workbench::cone(const std::string& name, const Vec3& base, const Vec3& axis
   positive(name, height, "height");
   const gp_Dir dir = detail::checked_dir(name, axis, "axis");
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    const gp_Ax2 ax(detail::to_pnt(base), dir);
-    if (std::abs(radius1 - radius2) <= 1e-12 * std::max(radius1, radius2))
-      return BRepPrimAPI_MakeCylinder(ax, radius1, height).Shape();
-    return BRepPrimAPI_MakeCone(ax, radius1, radius2, height).Shape();
-  }));
+               const gp_Ax2 ax(detail::to_pnt(base), dir);
+               if (std::abs(radius1 - radius2) <= 1e-12 * std::max(radius1, radius2))
+                 return BRepPrimAPI_MakeCylinder(ax, radius1, height).Shape();
+               return BRepPrimAPI_MakeCone(ax, radius1, radius2, height).Shape();
+             }));
 }
 
 void Workbench::sphere(const std::string& name, const Vec3& center, double radius) {
   impl_->check_new_name(name);
   positive(name, radius, "radius");
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    return BRepPrimAPI_MakeSphere(detail::to_pnt(center), radius).Shape();
-  }));
+               return BRepPrimAPI_MakeSphere(detail::to_pnt(center), radius).Shape();
+             }));
 }
 
 void Workbench::prism(const std::string& name, const std::vector<Vec3>& profile,
@@ -163,15 +166,15 @@ void Workbench::prism(const std::string& name, const std::vector<Vec3>& profile,
   if (!direction.allFinite() || direction.norm() <= 0.0)
     invalid(name, "extrusion direction must be a non-zero vector");
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    const TopoDS_Face face = planar_face(name, profile, holes);
-    const Vec3 n = check_polygon(name, profile, "profile");
-    if (std::abs(direction.normalized().dot(n)) < 1e-9)
-      invalid(name, "extrusion direction lies in the profile plane");
-    BRepPrimAPI_MakePrism mk(face, detail::to_vec(direction));
-    const TopoDS_Shape s = mk.Shape();
-    check_valid(name, s);
-    return s;
-  }));
+               const TopoDS_Face face = planar_face(name, profile, holes);
+               const Vec3 n = check_polygon(name, profile, "profile");
+               if (std::abs(direction.normalized().dot(n)) < 1e-9)
+                 invalid(name, "extrusion direction lies in the profile plane");
+               BRepPrimAPI_MakePrism mk(face, detail::to_vec(direction));
+               const TopoDS_Shape s = mk.Shape();
+               check_valid(name, s);
+               return s;
+             }));
 }
 
 void Workbench::revolve(const std::string& name, const std::vector<Vec3>& profile,
@@ -181,14 +184,15 @@ void Workbench::revolve(const std::string& name, const std::vector<Vec3>& profil
   if (!(angle_deg > 0.0) || !(angle_deg <= 360.0))
     invalid(name, "revolution angle must be in (0, 360] degrees, got " + detail::num(angle_deg));
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    const TopoDS_Face face = planar_face(name, profile, {});
-    const gp_Ax1 ax(detail::to_pnt(origin), dir);
-    TopoDS_Shape s = angle_deg >= 360.0
-                         ? BRepPrimAPI_MakeRevol(face, ax).Shape()
-                         : BRepPrimAPI_MakeRevol(face, ax, angle_deg * M_PI / 180.0).Shape();
-    check_valid(name, s);
-    return s;
-  }));
+               const TopoDS_Face face = planar_face(name, profile, {});
+               const gp_Ax1 ax(detail::to_pnt(origin), dir);
+               TopoDS_Shape s =
+                   angle_deg >= 360.0
+                       ? BRepPrimAPI_MakeRevol(face, ax).Shape()
+                       : BRepPrimAPI_MakeRevol(face, ax, angle_deg * M_PI / 180.0).Shape();
+               check_valid(name, s);
+               return s;
+             }));
 }
 
 void Workbench::bspline_patch(const std::string& name, const std::vector<std::vector<Vec3>>& grid,
@@ -203,29 +207,30 @@ void Workbench::bspline_patch(const std::string& name, const std::vector<std::ve
   }
   if (!std::isfinite(thickness)) invalid(name, "thickness must be finite");
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-    const int nu = static_cast<int>(grid.size());
-    const int nv = static_cast<int>(grid.front().size());
-    TColgp_Array2OfPnt pts(1, nu, 1, nv);
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) pts.SetValue(i + 1, j + 1, detail::to_pnt(grid[i][j]));
-    GeomAPI_PointsToBSplineSurface fit(pts, 3, 8, GeomAbs_C2, 1e-9);
-    if (!fit.IsDone()) invalid(name, "cannot fit a B-spline surface through the grid");
-    Handle(Geom_BSplineSurface) surf = fit.Surface();
-    BRepBuilderAPI_MakeFace mf(surf, 1e-9);
-    if (!mf.IsDone()) invalid(name, "cannot make a face on the B-spline surface");
-    const TopoDS_Face face = mf.Face();
-    if (thickness == 0.0) return TopoDS_Shape(face);
-    // Mean normal of the grid (sum of cell cross products).
-    Vec3 n = Vec3::Zero();
-    for (int i = 0; i + 1 < nu; ++i)
-      for (int j = 0; j + 1 < nv; ++j)
-        n += (grid[i + 1][j] - grid[i][j]).cross(grid[i][j + 1] - grid[i][j]);
-    if (n.norm() <= 0.0) invalid(name, "degenerate grid (no mean normal)");
-    const TopoDS_Shape s =
-        BRepPrimAPI_MakePrism(face, detail::to_vec(n.normalized() * thickness)).Shape();
-    check_valid(name, s);
-    return s;
-  }));
+               const int nu = static_cast<int>(grid.size());
+               const int nv = static_cast<int>(grid.front().size());
+               TColgp_Array2OfPnt pts(1, nu, 1, nv);
+               for (int i = 0; i < nu; ++i)
+                 for (int j = 0; j < nv; ++j)
+                   pts.SetValue(i + 1, j + 1, detail::to_pnt(grid[i][j]));
+               GeomAPI_PointsToBSplineSurface fit(pts, 3, 8, GeomAbs_C2, 1e-9);
+               if (!fit.IsDone()) invalid(name, "cannot fit a B-spline surface through the grid");
+               Handle(Geom_BSplineSurface) surf = fit.Surface();
+               BRepBuilderAPI_MakeFace mf(surf, 1e-9);
+               if (!mf.IsDone()) invalid(name, "cannot make a face on the B-spline surface");
+               const TopoDS_Face face = mf.Face();
+               if (thickness == 0.0) return TopoDS_Shape(face);
+               // Mean normal of the grid (sum of cell cross products).
+               Vec3 n = Vec3::Zero();
+               for (int i = 0; i + 1 < nu; ++i)
+                 for (int j = 0; j + 1 < nv; ++j)
+                   n += (grid[i + 1][j] - grid[i][j]).cross(grid[i][j + 1] - grid[i][j]);
+               if (n.norm() <= 0.0) invalid(name, "degenerate grid (no mean normal)");
+               const TopoDS_Shape s =
+                   BRepPrimAPI_MakePrism(face, detail::to_vec(n.normalized() * thickness)).Shape();
+               check_valid(name, s);
+               return s;
+             }));
 }
 
 }  // namespace cooperage::occ

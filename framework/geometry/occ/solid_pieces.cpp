@@ -54,7 +54,8 @@ namespace {
 
 void check_index(const SolidPieces& p, int index) {
   if (index < 0 || index >= p.size())
-    throw MeshingError(ErrorCode::Internal, "solid index " + std::to_string(index) + " out of range");
+    throw MeshingError(ErrorCode::Internal,
+                       "solid index " + std::to_string(index) + " out of range");
 }
 
 // A face of the cutting surface that covers the whole box of `shape`.

@@ -25,7 +25,7 @@ double into_period(double x, double lo, double period, double slack) {
 
 }  // namespace
 
-SurfaceProjector::SurfaceProjector(const Handle(Geom_Surface)& surface, double u0, double u1,
+SurfaceProjector::SurfaceProjector(const Handle(Geom_Surface) & surface, double u0, double u1,
                                    double v0, double v1)
     : surface_(surface), u0_(u0), u1_(u1), v0_(v0), v1_(v1) {
   const GeomAdaptor_Surface a(surface_);
@@ -43,8 +43,7 @@ SurfaceProjector::SurfaceProjector(const Handle(Geom_Surface)& surface, double u
   if (v_periodic_) v_period_ = surface_->VPeriod();
   // Size of the face from its corners and centre (for 3D tolerances).
   const gp_Pnt c[5] = {surface_->Value(u0, v0), surface_->Value(u1, v0), surface_->Value(u0, v1),
-                       surface_->Value(u1, v1),
-                       surface_->Value(0.5 * (u0 + u1), 0.5 * (v0 + v1))};
+                       surface_->Value(u1, v1), surface_->Value(0.5 * (u0 + u1), 0.5 * (v0 + v1))};
   double s = 0.0;
   for (int i = 0; i < 5; ++i) {
     for (int j = i + 1; j < 5; ++j) s = std::max(s, c[i].Distance(c[j]));
@@ -57,7 +56,8 @@ bool SurfaceProjector::in_box(Vec2& uv) const {
   const double sv = 1e-9 * std::max(1.0, std::abs(v1_ - v0_));
   if (u_periodic_) uv.x() = into_period(uv.x(), u0_, u_period_, su);
   if (v_periodic_) uv.y() = into_period(uv.y(), v0_, v_period_, sv);
-  if (uv.x() < u0_ - su || uv.x() > u1_ + su || uv.y() < v0_ - sv || uv.y() > v1_ + sv) return false;
+  if (uv.x() < u0_ - su || uv.x() > u1_ + su || uv.y() < v0_ - sv || uv.y() > v1_ + sv)
+    return false;
   uv.x() = std::clamp(uv.x(), u0_, u1_);
   uv.y() = std::clamp(uv.y(), v0_, v1_);
   return true;
@@ -143,7 +143,8 @@ std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) 
                      a11 = sv.Dot(sv) + rr.Dot(svv);
         if (!(a00 > 0.0 && a00 * a11 - a01 * a01 > 0.0)) return std::nullopt;
         const double gl = std::hypot(rr.Dot(su), rr.Dot(sv));
-        const double ref = std::max(rr.Magnitude(), scale_) * std::max(su.Magnitude(), sv.Magnitude());
+        const double ref =
+            std::max(rr.Magnitude(), scale_) * std::max(su.Magnitude(), sv.Magnitude());
         if (gl > 1e-8 * ref) return std::nullopt;
         const bool edge_u = (u <= u0_ || u >= u1_) && !u_periodic_;
         const bool edge_v = (v <= v0_ || v >= v1_) && !v_periodic_;

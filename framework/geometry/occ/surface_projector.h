@@ -32,7 +32,7 @@ namespace cooperage::occ::detail {
 class SurfaceProjector {
  public:
   /// `surface` is immutable and shared; (u0..u1) x (v0..v1) the face's box.
-  SurfaceProjector(const Handle(Geom_Surface)& surface, double u0, double u1, double v0,
+  SurfaceProjector(const Handle(Geom_Surface) & surface, double u0, double u1, double v0,
                    double v1);
 
   /// Parameters of the closest point to p in the box: the closed form when

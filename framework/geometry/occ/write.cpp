@@ -26,9 +26,9 @@ void Workbench::write(const std::string& path, const std::vector<std::string>& s
   const bool iges = ext == ".iges" || ext == ".igs";
   const bool brep = ext == ".brep" || ext == ".brp";
   if (!step && !iges && !brep)
-    throw MeshingError(ErrorCode::InvalidInput,
-                       path + ": cannot write '" + ext +
-                           "' files (use .step, .stp, .iges, .igs or .brep)");
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        path + ": cannot write '" + ext + "' files (use .step, .stp, .iges, .igs or .brep)");
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);

@@ -53,7 +53,8 @@ struct Set {
 int block_offset(int max_id) {
   long long w = 1000;
   while (w <= max_id) w *= 10;
-  if (w > 1000000000LL) throw MeshingError(ErrorCode::InvalidInput, "too many entities for Exodus block ids");
+  if (w > 1000000000LL)
+    throw MeshingError(ErrorCode::InvalidInput, "too many entities for Exodus block ids");
   return static_cast<int>(w);
 }
 
@@ -173,14 +174,18 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
     Block second{g.id, volume_mode ? "WEDGE" : "TRI3", 0, {}, 0, g.name};
     for (int id : g.entities) {
       start[{id, false}] = next_elem + static_cast<int>(first.count);
-      if (volume_mode) add_run(first, db.volume(id).hexes);
-      else add_run(first, db.surface(id).quads);
+      if (volume_mode)
+        add_run(first, db.volume(id).hexes);
+      else
+        add_run(first, db.surface(id).quads);
     }
     next_elem += static_cast<int>(first.count);
     for (int id : g.entities) {
       start[{id, true}] = next_elem + static_cast<int>(second.count);
-      if (volume_mode) add_run(second, db.volume(id).wedges);
-      else add_run(second, db.surface(id).tris);
+      if (volume_mode)
+        add_run(second, db.volume(id).wedges);
+      else
+        add_run(second, db.surface(id).tris);
     }
     next_elem += static_cast<int>(second.count);
     if (first.count > 0 && second.count > 0) {
@@ -195,8 +200,8 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
   // ---- side sets (volume meshes) ---------------------------------------------
   std::vector<Set> side_sets;
   if (volume_mode && !groups.side_sets.empty()) {
-    const auto faces = detail::surface_faces(db, model, detail::exodus_hex_sides(),
-                                             detail::exodus_wedge_sides());
+    const auto faces =
+        detail::surface_faces(db, model, detail::exodus_hex_sides(), detail::exodus_wedge_sides());
     for (const auto& g : groups.side_sets) {
       Set s{g.id, {}, {}, g.name};
       for (int sid : g.surfaces) {
@@ -232,14 +237,14 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
               "set max name length");
     }
     if (!options.exodus_netcdf4) {
-      const size_t room = header_reserve(blocks.size(), side_sets.size() + node_sets.size(), longest);
+      const size_t room =
+          header_reserve(blocks.size(), side_sets.size() + node_sets.size(), longest);
       f.check(nc_redef(f.id()) == NC_NOERR ? 0 : -1, "redef");
       f.check(nc__enddef(f.id(), room, 4, 0, 4) == NC_NOERR ? 0 : -1, "reserve header");
     }
     const std::string title = options.title.substr(0, MAX_LINE_LENGTH);
     f.check(ex_put_init(f.id(), title.c_str(), 3, static_cast<int64_t>(db.node_count()), n_elems,
-                        static_cast<int64_t>(blocks.size()),
-                        static_cast<int64_t>(node_sets.size()),
+                        static_cast<int64_t>(blocks.size()), static_cast<int64_t>(node_sets.size()),
                         static_cast<int64_t>(side_sets.size())),
             "put_init");
     char cx[] = "x", cy[] = "y", cz[] = "z";
@@ -253,12 +258,12 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
     // All sets defined in one call (one define-mode session).
     std::vector<ex_set> defs;
     for (const auto& s : side_sets) {
-      defs.push_back(ex_set{s.id, EX_SIDE_SET, static_cast<int64_t>(s.entries.size()), 0,
-                            nullptr, nullptr, nullptr});
+      defs.push_back(ex_set{s.id, EX_SIDE_SET, static_cast<int64_t>(s.entries.size()), 0, nullptr,
+                            nullptr, nullptr});
     }
     for (const auto& s : node_sets) {
-      defs.push_back(ex_set{s.id, EX_NODE_SET, static_cast<int64_t>(s.entries.size()), 0,
-                            nullptr, nullptr, nullptr});
+      defs.push_back(ex_set{s.id, EX_NODE_SET, static_cast<int64_t>(s.entries.size()), 0, nullptr,
+                            nullptr, nullptr});
     }
     if (!defs.empty()) f.check(ex_put_sets(f.id(), defs.size(), defs.data()), "put_sets");
     std::vector<std::string> names;

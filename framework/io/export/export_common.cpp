@@ -58,18 +58,18 @@ void validate_mesh(const mesh::MeshDB& db, const geom::Model& model) {
   const int n_volumes = static_cast<int>(model.volumes().size());
   for (const auto& [id, s] : db.surfaces()) {
     if (id < 1 || id > n_surfaces) {
-      throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(id),
-                         "is meshed but not in the model (" + std::to_string(n_surfaces) +
-                             " surfaces)");
+      throw MeshingError(
+          ErrorCode::InvalidInput, EntityRef::surface(id),
+          "is meshed but not in the model (" + std::to_string(n_surfaces) + " surfaces)");
     }
     check_all(s.quads, n, EntityRef::surface(id), "quad");
     check_all(s.tris, n, EntityRef::surface(id), "triangle");
   }
   for (const auto& [id, v] : db.volumes()) {
     if (id < 1 || id > n_volumes) {
-      throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
-                         "is meshed but not in the model (" + std::to_string(n_volumes) +
-                             " volumes)");
+      throw MeshingError(
+          ErrorCode::InvalidInput, EntityRef::volume(id),
+          "is meshed but not in the model (" + std::to_string(n_volumes) + " volumes)");
     }
     check_all(v.hexes, n, EntityRef::volume(id), "hex");
     check_all(v.wedges, n, EntityRef::volume(id), "wedge");
@@ -80,8 +80,8 @@ void validate_mesh(const mesh::MeshDB& db, const geom::Model& model) {
   if (!any) throw MeshingError(ErrorCode::InvalidInput, "the mesh has no elements to export");
   for (int i = 0; i < n; ++i) {
     if (!db.node(i).allFinite()) {
-      throw MeshingError(ErrorCode::InvalidInput, "node " + std::to_string(i) +
-                                                      " has a non-finite coordinate");
+      throw MeshingError(ErrorCode::InvalidInput,
+                         "node " + std::to_string(i) + " has a non-finite coordinate");
     }
   }
 }
@@ -137,7 +137,8 @@ class FdBuffer : public std::streambuf {
     while (left > 0 && ok_) {
       const ssize_t n = ::write(fd_, p, left);
       if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) ok_ = false;
+      if (n <= 0)
+        ok_ = false;
       else {
         p += n;
         left -= static_cast<std::size_t>(n);
@@ -184,8 +185,8 @@ void write_text_atomically(const std::string& path,
   }
   if (fd < 0) {
     const int err = errno;
-    throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + clip_path(path) + "' (" +
-                                                    std::strerror(err) + ")");
+    throw MeshingError(ErrorCode::FileNotFound,
+                       "cannot write '" + clip_path(path) + "' (" + std::strerror(err) + ")");
   }
   try {
     FdBuffer buffer(fd);
@@ -264,8 +265,7 @@ const FaceTable& abaqus_wedge_faces() {
   return t;
 }
 
-std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
-                                                  const geom::Model& model,
+std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db, const geom::Model& model,
                                                   const FaceTable& hex_faces,
                                                   const FaceTable& wedge_faces) {
   std::map<int, FaceFinder> finders;
@@ -299,8 +299,8 @@ std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
       if (h.element < 0) {
         throw MeshingError(ErrorCode::InvalidInput, EntityRef::surface(surface_id),
                            std::string(kind) + " " + std::to_string(i) +
-                               " is not a face of any element of volume " +
-                               std::to_string(vid) + " (non-conformal mesh)");
+                               " is not a face of any element of volume " + std::to_string(vid) +
+                               " (non-conformal mesh)");
       }
       hits.push_back(h);
     };

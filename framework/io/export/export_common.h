@@ -86,8 +86,7 @@ const FaceTable& abaqus_wedge_faces();  ///< Abaqus C3D6 faces S1..S5
 /// volume carrying each of its quads (then each of its tris), in order.
 /// Throws MeshingError(InvalidInput) naming the surface when a surface
 /// element is not a face of any element of that volume.
-std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db,
-                                                  const geom::Model& model,
+std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db, const geom::Model& model,
                                                   const FaceTable& hex_faces,
                                                   const FaceTable& wedge_faces);
 

@@ -51,8 +51,8 @@ void write_inp(const std::string& path, const mesh::MeshDB& db, const geom::Mode
   const detail::MeshGroups groups = detail::mesh_groups(db, model, options);
   std::map<int, std::vector<detail::FaceHit>> faces;
   if (volume_mode && !groups.side_sets.empty()) {
-    faces = detail::surface_faces(db, model, detail::abaqus_hex_faces(),
-                                  detail::abaqus_wedge_faces());
+    faces =
+        detail::surface_faces(db, model, detail::abaqus_hex_faces(), detail::abaqus_wedge_faces());
   }
   detail::write_text_atomically(path, [&](std::ostream& os) {
     StreamBuffer out(os);

@@ -59,9 +59,9 @@ std::vector<MeshBlock> user_blocks(const mesh::MeshDB& db, bool volume_mesh,
     }
     std::sort(m.entities.begin(), m.entities.end());
     covered.insert(m.entities.begin(), m.entities.end());
-    if (keep(!m.entities.empty(), options, b.where, what,
-             std::string("none of its ") + (volume_mesh ? "volumes" : "surfaces") +
-                 " has elements"))
+    if (keep(
+            !m.entities.empty(), options, b.where, what,
+            std::string("none of its ") + (volume_mesh ? "volumes" : "surfaces") + " has elements"))
       out.push_back(std::move(m));
   }
   // Every element in a block: an element left out of every block would

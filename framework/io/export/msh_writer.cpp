@@ -114,10 +114,9 @@ void add_nodes(BoundingBox& b, const std::vector<std::array<int, N>>& elems,
 
 /// Owner entity of every node, per the rules in msh_writer.h.
 std::vector<EntityKey> node_entities(const mesh::MeshDB& db, const geom::Model& model) {
-  const int counts[4] = {static_cast<int>(model.vertices().size()),
-                         static_cast<int>(model.curves().size()),
-                         static_cast<int>(model.surfaces().size()),
-                         static_cast<int>(model.volumes().size())};
+  const int counts[4] = {
+      static_cast<int>(model.vertices().size()), static_cast<int>(model.curves().size()),
+      static_cast<int>(model.surfaces().size()), static_cast<int>(model.volumes().size())};
   const size_t n = db.node_count();
   std::vector<EntityKey> key(n, EntityKey{-1, 0});
   for (size_t i = 0; i < n; ++i) {
@@ -129,12 +128,16 @@ std::vector<EntityKey> node_entities(const mesh::MeshDB& db, const geom::Model& 
     if (k.first < 0) k = {dim, id};
   };
   for (const auto& [vid, v] : db.volumes()) {
-    for (const auto& e : v.hexes) for (int x : e) claim(x, 3, vid);
-    for (const auto& e : v.wedges) for (int x : e) claim(x, 3, vid);
+    for (const auto& e : v.hexes)
+      for (int x : e) claim(x, 3, vid);
+    for (const auto& e : v.wedges)
+      for (int x : e) claim(x, 3, vid);
   }
   for (const auto& [sid, s] : db.surfaces()) {
-    for (const auto& e : s.quads) for (int x : e) claim(x, 2, sid);
-    for (const auto& e : s.tris) for (int x : e) claim(x, 2, sid);
+    for (const auto& e : s.quads)
+      for (int x : e) claim(x, 2, sid);
+    for (const auto& e : s.tris)
+      for (int x : e) claim(x, 2, sid);
   }
   EntityKey fallback{-1, 0};
   for (int d = 3; d >= 0 && fallback.first < 0; --d) {
@@ -171,7 +174,9 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model,
   // ---- entities --------------------------------------------------------------
   const auto owner = node_entities(db, model);
   out.line("$Entities");
-  out.z(model.vertices().size()).z(model.curves().size()).z(model.surfaces().size())
+  out.z(model.vertices().size())
+      .z(model.curves().size())
+      .z(model.surfaces().size())
       .z(model.volumes().size());
   out.eol();
   for (const auto& v : model.vertices()) {
@@ -202,7 +207,8 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model,
     if (b.empty()) b = s.box;
     std::vector<int> bounding;
     for (const auto& loop : s.loops) {
-      for (const auto& u : loop.uses) bounding.push_back(u.curve * static_cast<int>(geom::sign(u.sense)));
+      for (const auto& u : loop.uses)
+        bounding.push_back(u.curve * static_cast<int>(geom::sign(u.sense)));
     }
     out.i(s.id);
     write_box(out, b);
@@ -219,7 +225,8 @@ void write_body(MshOut& out, const mesh::MeshDB& db, const geom::Model& model,
     if (b.empty()) b = v.box;
     std::vector<int> bounding;
     for (const auto& shell : v.shells) {
-      for (const auto& u : shell) bounding.push_back(u.surface * static_cast<int>(geom::sign(u.sense)));
+      for (const auto& u : shell)
+        bounding.push_back(u.surface * static_cast<int>(geom::sign(u.sense)));
     }
     out.i(v.id);
     write_box(out, b);

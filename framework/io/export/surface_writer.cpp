@@ -92,9 +92,8 @@ void write_surface_mesh(const std::string& path, const mesh::MeshDB& db, const g
   if (options.binary && (ext == "stl" || ext == "ply")) opt += OpenMesh::IO::Options::Binary;
   if (options.binary && ext == "ply") opt += OpenMesh::IO::Options::LSB;
   const auto failed = [&] {
-    return MeshingError(ErrorCode::FileNotFound,
-                        "cannot write '" + clip_path(path) + "' (OpenMesh's ." + ext +
-                            " writer failed)");
+    return MeshingError(ErrorCode::FileNotFound, "cannot write '" + clip_path(path) +
+                                                     "' (OpenMesh's ." + ext + " writer failed)");
   };
   const int digits = std::numeric_limits<float>::max_digits10;
   const QuietOpenMesh quiet;

@@ -26,7 +26,7 @@ bool is_surface_format(const std::string& extension_without_dot);
 /// Written atomically (see write_mesh()).
 /// @throws MeshingError(InvalidInput) when the mesh has no surface elements
 ///         to write (a volume mesh without its surfaces), or as write_mesh.
-void write_surface_mesh(const std::string& path, const mesh::MeshDB& db,
-                        const geom::Model& model, const ExportOptions& options = {});
+void write_surface_mesh(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
+                        const ExportOptions& options = {});
 
 }  // namespace cooperage::io

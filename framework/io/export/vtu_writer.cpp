@@ -31,7 +31,8 @@ template <size_t N>
 void add_group(std::vector<Group>& groups, const std::vector<std::array<int, N>>& rows,
                const int* order, std::uint8_t type, int block, int dim) {
   if (rows.empty()) return;
-  groups.push_back({rows.front().data(), rows.size(), static_cast<int>(N), order, type, block, dim});
+  groups.push_back(
+      {rows.front().data(), rows.size(), static_cast<int>(N), order, type, block, dim});
 }
 
 std::vector<Group> collect(const mesh::MeshDB& db, bool with_volumes, bool with_surfaces) {
@@ -69,10 +70,18 @@ std::vector<double> cell_quality(const std::vector<Group>& groups, const mesh::M
       for (size_t e = r.begin(); e != r.end(); ++e) {
         const int* row = g.rows + e * static_cast<size_t>(g.per);
         switch (g.per) {
-          case 8: out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Hex*>(row), x); break;
-          case 6: out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Wedge*>(row), x); break;
-          case 4: out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Quad*>(row), x); break;
-          default: out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Tri*>(row), x); break;
+          case 8:
+            out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Hex*>(row), x);
+            break;
+          case 6:
+            out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Wedge*>(row), x);
+            break;
+          case 4:
+            out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Quad*>(row), x);
+            break;
+          default:
+            out[e] = detail::scaled_jacobian(*reinterpret_cast<const mesh::Tri*>(row), x);
+            break;
         }
       }
     });

@@ -82,8 +82,9 @@ void check_export_target(const std::string& path) {
   if (path.empty()) throw MeshingError(ErrorCode::InvalidInput, "the file name is empty");
   if (!known_mesh_extension(path))
     throw MeshingError(ErrorCode::InvalidInput,
-                       "\"" + clip_path(path) + "\" has no mesh file extension (allowed: .exo, "
-                       ".e, .g, .msh, .vtu, .inp, .obj, .off, .stl, .ply)");
+                       "\"" + clip_path(path) +
+                           "\" has no mesh file extension (allowed: .exo, "
+                           ".e, .g, .msh, .vtu, .inp, .obj, .off, .stl, .ply)");
   const std::string name = fs::path(path).filename().string();
   if (name.size() > NAME_MAX || path.size() >= PATH_MAX)
     throw MeshingError(ErrorCode::InvalidInput,
@@ -96,11 +97,9 @@ void check_export_target(const std::string& path) {
     throw MeshingError(ErrorCode::FileNotFound,
                        "the directory \"" + clip_path(dir) + "\" does not exist");
   if (!S_ISDIR(st.st_mode))
-    throw MeshingError(ErrorCode::FileNotFound,
-                       "\"" + clip_path(dir) + "\" is not a directory");
+    throw MeshingError(ErrorCode::FileNotFound, "\"" + clip_path(dir) + "\" is not a directory");
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw MeshingError(ErrorCode::FileNotFound,
-                       "\"" + clip_path(path) + "\" is a directory");
+    throw MeshingError(ErrorCode::FileNotFound, "\"" + clip_path(path) + "\" is a directory");
   const std::string probe = make_private_dir(dir);
   if (probe.empty()) {
     const int err = errno;
@@ -117,15 +116,15 @@ void ExportBatch::discard() noexcept {
   staged_.clear();
 }
 
-void ExportBatch::stage(const std::string& path, const mesh::MeshDB& db,
-                        const geom::Model& model, const ExportOptions& options) {
+void ExportBatch::stage(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
+                        const ExportOptions& options) {
   if (!known_mesh_extension(path)) write_mesh(path, db, model, options);  // throws the message
   const std::string dir = make_private_dir(directory_of(path));
   if (dir.empty()) {
     const int err = errno;
     discard();
-    throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + clip_path(path) + "' (" +
-                                                    std::strerror(err) + ")");
+    throw MeshingError(ErrorCode::FileNotFound,
+                       "cannot write '" + clip_path(path) + "' (" + std::strerror(err) + ")");
   }
   // A short name inside the private directory; when even that path is long,
   // the writers get it through /proc/self/fd (libexodus aborts on an error
@@ -167,8 +166,8 @@ std::vector<std::string> ExportBatch::commit() {
       for (const std::string& t : done) ::unlink(t.c_str());
       const std::string target = s.target;
       discard();
-      throw MeshingError(ErrorCode::FileNotFound, "cannot write '" + clip_path(target) + "' (" +
-                                                      std::strerror(err) + ")");
+      throw MeshingError(ErrorCode::FileNotFound,
+                         "cannot write '" + clip_path(target) + "' (" + std::strerror(err) + ")");
     }
     done.push_back(s.target);
   }

@@ -67,12 +67,16 @@ bool element_type(const std::string& name, int64_t nodes, ElementType& type) {
   auto is = [&](std::initializer_list<const char*> names) {
     return std::find(names.begin(), names.end(), n) != names.end();
   };
-  if (nodes == 8 && is({"HEX", "HEX8", "HEXAHEDRON"})) type = ElementType::Hex;
-  else if (nodes == 6 && is({"WEDGE", "WEDGE6"})) type = ElementType::Wedge;
-  else if (nodes == 4 && is({"QUAD", "QUAD4", "SHELL", "SHELL4"})) type = ElementType::Quad;
+  if (nodes == 8 && is({"HEX", "HEX8", "HEXAHEDRON"}))
+    type = ElementType::Hex;
+  else if (nodes == 6 && is({"WEDGE", "WEDGE6"}))
+    type = ElementType::Wedge;
+  else if (nodes == 4 && is({"QUAD", "QUAD4", "SHELL", "SHELL4"}))
+    type = ElementType::Quad;
   else if (nodes == 3 && is({"TRI", "TRI3", "TRIANGLE", "SHELL3", "TRISHELL", "TRISHELL3"}))
     type = ElementType::Tri;
-  else return false;
+  else
+    return false;
   return true;
 }
 
@@ -81,7 +85,8 @@ bool element_type(const std::string& name, int64_t nodes, ElementType& type) {
 void check_fits(const std::string& path, std::uint64_t file_size, int64_t count, int64_t per,
                 const char* what) {
   if (count < 0 || per < 0 ||
-      (per > 0 && static_cast<std::uint64_t>(count) > file_size / 4 / static_cast<std::uint64_t>(per)))
+      (per > 0 &&
+       static_cast<std::uint64_t>(count) > file_size / 4 / static_cast<std::uint64_t>(per)))
     parse_error(path, std::string("declares ") + std::to_string(count) + " " + what +
                           ", more than the file can hold");
 }
@@ -96,7 +101,8 @@ MeshFile read_with_libexodus(const std::string& path, std::uint64_t file_size) {
   check_fits(path, file_size, init.num_nodes, init.num_dim, "nodes");
   check_fits(path, file_size, init.num_elem_blk, 1, "element blocks");
   const int64_t max_name = ex_inquire_int(f.id(), EX_INQ_DB_MAX_USED_NAME_LENGTH);
-  if (max_name > 0) ex_set_max_name_length(f.id(), static_cast<int>(std::min<int64_t>(max_name, 255)));
+  if (max_name > 0)
+    ex_set_max_name_length(f.id(), static_cast<int>(std::min<int64_t>(max_name, 255)));
 
   MeshFile out;
   const auto n = static_cast<std::size_t>(init.num_nodes);
@@ -114,13 +120,14 @@ MeshFile read_with_libexodus(const std::string& path, std::uint64_t file_size) {
   for (int64_t id : ids) {
     char type_name[MAX_STR_LENGTH + 1] = {0};
     int64_t count = 0, per = 0, edges = 0, faces = 0, attrs = 0;
-    f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, id, type_name, &count, &per, &edges, &faces,
-                         &attrs),
-            "get_block");
+    f.check(
+        ex_get_block(f.id(), EX_ELEM_BLOCK, id, type_name, &count, &per, &edges, &faces, &attrs),
+        "get_block");
     type_name[MAX_STR_LENGTH] = 0;
     ElementType type{};
     if (!element_type(type_name, per, type)) {
-      const std::string key = clip(upper(type_name), 32) + (per > 0 ? " (" + std::to_string(per) + " nodes)" : "");
+      const std::string key =
+          clip(upper(type_name), 32) + (per > 0 ? " (" + std::to_string(per) + " nodes)" : "");
       if (count > 0) out.skipped[key] += static_cast<std::size_t>(count);
       continue;
     }
@@ -168,7 +175,8 @@ std::string serialise(const MeshFile& f) {
     put_text(out, b.name);
     put(out, static_cast<int>(b.type));
     put(out, static_cast<std::uint64_t>(b.connectivity.size()));
-    out.append(reinterpret_cast<const char*>(b.connectivity.data()), b.connectivity.size() * sizeof(int));
+    out.append(reinterpret_cast<const char*>(b.connectivity.data()),
+               b.connectivity.size() * sizeof(int));
   }
   put(out, static_cast<std::uint64_t>(f.skipped.size()));
   for (const auto& [type, count] : f.skipped) {
@@ -215,7 +223,8 @@ MeshFile deserialise(const std::string& bytes) {
   Payload p(bytes);
   MeshFile f;
   const auto n = p.get<std::uint64_t>();
-  if (n > p.left() / sizeof(Eigen::Vector3d)) throw MeshingError(ErrorCode::Internal, "bad node count from the Exodus reader's child");
+  if (n > p.left() / sizeof(Eigen::Vector3d))
+    throw MeshingError(ErrorCode::Internal, "bad node count from the Exodus reader's child");
   f.coords.resize(n);
   for (auto& c : f.coords) c = p.get<Eigen::Vector3d>();
   const auto blocks = p.get<std::uint64_t>();
@@ -224,7 +233,8 @@ MeshFile deserialise(const std::string& bytes) {
     b.name = p.text();
     b.type = static_cast<ElementType>(p.get<int>());
     const auto k = p.get<std::uint64_t>();
-    if (k > p.left() / sizeof(int)) throw MeshingError(ErrorCode::Internal, "bad block size from the Exodus reader's child");
+    if (k > p.left() / sizeof(int))
+      throw MeshingError(ErrorCode::Internal, "bad block size from the Exodus reader's child");
     b.connectivity.resize(k);
     p.take(b.connectivity.data(), k * sizeof(int));
     f.blocks.push_back(std::move(b));

@@ -177,9 +177,7 @@ std::string skipped_name(int64_t t) {
   }
 }
 
-int element_dim(ElementType t) {
-  return t == ElementType::Hex || t == ElementType::Wedge ? 3 : 2;
-}
+int element_dim(ElementType t) { return t == ElementType::Hex || t == ElementType::Wedge ? 3 : 2; }
 
 struct MshState {
   MeshFile out;
@@ -310,8 +308,9 @@ void read_elements_41(Cursor& c, MshState& st) {
     if (type) {
       key = std::to_string(dim) + ":" + std::to_string(entity);
       const auto it = st.physical.find({dim, entity});
-      name = block_name(st, dim, entity,
-                        it == st.physical.end() ? std::nullopt : std::optional<int64_t>(it->second));
+      name =
+          block_name(st, dim, entity,
+                     it == st.physical.end() ? std::nullopt : std::optional<int64_t>(it->second));
     }
     for (std::size_t e = 0; e < n; ++e) {
       const auto tokens = c.line_tokens("element");
@@ -346,7 +345,6 @@ void read_elements_22(Cursor& c, MshState& st) {
   }
   c.expect("$EndElements");
 }
-
 
 // ---- binary 4.1 --------------------------------------------------------
 
@@ -424,7 +422,8 @@ void read_elements_41_binary(Cursor& c, MshState& st) {
     const auto type = gmsh_type(gtype);
     const int other = skipped_node_count(gtype);
     if (!type && other == 0)
-      c.fail("element type " + std::to_string(gtype) + " in a binary .msh (its node count is unknown here)");
+      c.fail("element type " + std::to_string(gtype) +
+             " in a binary .msh (its node count is unknown here)");
     const auto per = static_cast<std::size_t>(type ? quality::node_count(*type) : other);
     const std::size_t n = c.raw_count("number of elements in block", 8 * (1 + per));
     if (!type) {  // skipped, as in ASCII files
@@ -434,15 +433,17 @@ void read_elements_41_binary(Cursor& c, MshState& st) {
     }
     const std::string key = std::to_string(dim) + ":" + std::to_string(entity);
     const auto it = st.physical.find({dim, entity});
-    const std::string name = block_name(
-        st, dim, entity, it == st.physical.end() ? std::nullopt : std::optional<int64_t>(it->second));
+    const std::string name =
+        block_name(st, dim, entity,
+                   it == st.physical.end() ? std::nullopt : std::optional<int64_t>(it->second));
     for (std::size_t e = 0; e < n; ++e) {
       c.raw<uint64_t>("element tag");
       int nodes[8];
       for (std::size_t k = 0; k < per; ++k) {
         const auto tag = static_cast<int64_t>(c.raw<uint64_t>("node tag"));
         const auto found = st.node_index.find(tag);
-        if (found == st.node_index.end()) c.fail("element uses undefined node " + std::to_string(tag));
+        if (found == st.node_index.end())
+          c.fail("element uses undefined node " + std::to_string(tag));
         nodes[k] = found->second;
       }
       st.blocks.add(key, name, *type, nodes);
@@ -474,36 +475,45 @@ MeshFile read_msh(const std::string& path) {
           throw MeshingError(ErrorCode::NotSupported,
                              path + ": binary .msh " + version + " is not supported (use 4.1)");
         }
-        if (data_size != 8) c.fail("binary data size " + std::to_string(data_size) + " (8 expected)");
+        if (data_size != 8)
+          c.fail("binary data size " + std::to_string(data_size) + " (8 expected)");
         c.next_line();
         if (c.raw<int32_t>("the byte order mark") != 1) {
           throw MeshingError(ErrorCode::NotSupported,
                              path + ": a binary .msh of the other byte order is not supported");
         }
       }
-      if (version == "4.1") legacy = false;
-      else if (version.rfind("2.", 0) == 0) legacy = true;
+      if (version == "4.1")
+        legacy = false;
+      else if (version.rfind("2.", 0) == 0)
+        legacy = true;
       else {
-        throw MeshingError(ErrorCode::NotSupported,
-                           path + ": .msh version " + version +
-                               " is not supported (use 4.1 or 2.2 ASCII)");
+        throw MeshingError(ErrorCode::NotSupported, path + ": .msh version " + version +
+                                                        " is not supported (use 4.1 or 2.2 ASCII)");
       }
       c.expect("$EndMeshFormat");
       have_format = true;
       continue;
     }
     if (!have_format) c.fail("the file does not start with $MeshFormat");
-    if (name == "PhysicalNames") read_physical_names(c, st);
+    if (name == "PhysicalNames")
+      read_physical_names(c, st);
     else if (binary && (name == "Entities" || name == "Nodes" || name == "Elements")) {
       c.next_line();
-      if (name == "Entities") read_entities_41_binary(c, st);
-      else if (name == "Nodes") read_nodes_41_binary(c, st);
-      else read_elements_41_binary(c, st);
-    }
-    else if (name == "Entities" && !legacy) read_entities_41(c, st);
-    else if (name == "Nodes") legacy ? read_nodes_22(c, st) : read_nodes_41(c, st);
-    else if (name == "Elements") legacy ? read_elements_22(c, st) : read_elements_41(c, st);
-    else c.skip_section(name);
+      if (name == "Entities")
+        read_entities_41_binary(c, st);
+      else if (name == "Nodes")
+        read_nodes_41_binary(c, st);
+      else
+        read_elements_41_binary(c, st);
+    } else if (name == "Entities" && !legacy)
+      read_entities_41(c, st);
+    else if (name == "Nodes")
+      legacy ? read_nodes_22(c, st) : read_nodes_41(c, st);
+    else if (name == "Elements")
+      legacy ? read_elements_22(c, st) : read_elements_41(c, st);
+    else
+      c.skip_section(name);
   }
   if (!have_format) parse_error(path, "no $MeshFormat section (not a Gmsh .msh file)");
   st.out.blocks = st.blocks.take();

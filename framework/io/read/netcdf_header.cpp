@@ -19,10 +19,17 @@ constexpr std::uint64_t kStreaming = 0xFFFFFFFFull;
 
 std::uint64_t type_size(std::uint32_t type) {
   switch (type) {
-    case 1: case 2: case 7: return 1;  // byte, char, ubyte
-    case 3: case 8: return 2;          // short, ushort
-    case 4: case 5: case 9: return 4;  // int, float, uint
-    case 6: case 10: case 11: return 8;  // double, int64, uint64
+    case 1:
+    case 2:
+    case 7: return 1;  // byte, char, ubyte
+    case 3:
+    case 8: return 2;  // short, ushort
+    case 4:
+    case 5:
+    case 9: return 4;  // int, float, uint
+    case 6:
+    case 10:
+    case 11: return 8;  // double, int64, uint64
     default: return 0;
   }
 }
@@ -42,9 +49,11 @@ class Header {
   std::uint64_t left() const { return file_size_ - pos_; }
 
   std::uint64_t uint(int bytes) {
-    if (pos_ + static_cast<std::uint64_t>(bytes) > s_.size()) fail("the file ends inside the header");
+    if (pos_ + static_cast<std::uint64_t>(bytes) > s_.size())
+      fail("the file ends inside the header");
     std::uint64_t v = 0;
-    for (int i = 0; i < bytes; ++i) v = (v << 8) | static_cast<unsigned char>(s_[pos_ + static_cast<std::uint64_t>(i)]);
+    for (int i = 0; i < bytes; ++i)
+      v = (v << 8) | static_cast<unsigned char>(s_[pos_ + static_cast<std::uint64_t>(i)]);
     pos_ += static_cast<std::uint64_t>(bytes);
     return v;
   }
@@ -99,13 +108,14 @@ void attributes(Header& h, int nb) {
   }
 }
 
-NetcdfKind check_classic(const std::string& path, const std::string& bytes, std::uint64_t file_size) {
+NetcdfKind check_classic(const std::string& path, const std::string& bytes,
+                         std::uint64_t file_size) {
   Header h(path, bytes, file_size);
   h.skip(3);
   const auto version = h.uint(1);
   if (version != 1 && version != 2 && version != 5)
     h.fail("unknown netCDF version " + std::to_string(version));
-  const int nb = version == 5 ? 8 : 4;        // counts and sizes
+  const int nb = version == 5 ? 8 : 4;  // counts and sizes
   const int offset_bytes = version == 1 ? 4 : 8;
   std::uint64_t records = h.uint(nb);
   if (nb == 4 && records == kStreaming) records = 0;  // streaming: unknown, the data decides
@@ -132,7 +142,10 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes, std:
   const std::uint64_t n_vars = h.count(nb, 24, "variable");
   if (var_tag != 0 && var_tag != kVariableTag) h.fail("expected a variable list");
   if (var_tag == 0 && n_vars != 0) h.fail("an absent variable list with a count");
-  struct Var { std::uint64_t begin, size; bool record; };
+  struct Var {
+    std::uint64_t begin, size;
+    bool record;
+  };
   std::vector<Var> vars;
   std::uint64_t record_size = 0;
   for (std::uint64_t i = 0; i < n_vars; ++i) {
@@ -142,7 +155,9 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes, std:
     bool record = false;
     for (std::uint64_t r = 0; r < rank; ++r) {
       const std::uint64_t id = h.uint(nb);
-      if (id >= dims.size()) h.fail("a variable uses dimension " + std::to_string(id) + " of " + std::to_string(dims.size()));
+      if (id >= dims.size())
+        h.fail("a variable uses dimension " + std::to_string(id) + " of " +
+               std::to_string(dims.size()));
       if (static_cast<int>(id) == record_dim) {
         if (r != 0) h.fail("the record dimension is not a variable's first");
         record = true;
@@ -159,7 +174,8 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes, std:
     if (!multiply(elements, size, var_bytes)) h.fail("a variable's size overflows");
     if (record) {
       // A record variable of one byte or one short is not padded when it is alone.
-      if (record_size > std::numeric_limits<std::uint64_t>::max() - padded(var_bytes)) h.fail("the record size overflows");
+      if (record_size > std::numeric_limits<std::uint64_t>::max() - padded(var_bytes))
+        h.fail("the record size overflows");
       record_size += padded(var_bytes);
     }
     vars.push_back({begin, var_bytes, record});
@@ -170,15 +186,16 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes, std:
     std::uint64_t extent = v.size;
     if (v.record && records > 0) {
       std::uint64_t all = 0;
-      if (!multiply(records - 1, record_size, all) || all > file_size) h.fail("the records do not fit in the file");
+      if (!multiply(records - 1, record_size, all) || all > file_size)
+        h.fail("the records do not fit in the file");
       extent = all + v.size;
     } else if (v.record) {
       extent = 0;
     }
     if (v.begin > file_size || extent > file_size - v.begin)
       parse_error(path, "damaged netCDF file: a variable's data (" + std::to_string(extent) +
-                            " bytes at byte " + std::to_string(v.begin) + ") lies beyond its end (" +
-                            std::to_string(file_size) + " bytes)");
+                            " bytes at byte " + std::to_string(v.begin) +
+                            ") lies beyond its end (" + std::to_string(file_size) + " bytes)");
   }
   return NetcdfKind::Classic;
 }

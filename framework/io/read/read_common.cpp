@@ -28,8 +28,8 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-void BlockCollector::add(const std::string& key, const std::string& name,
-                         quality::ElementType type, const int* nodes) {
+void BlockCollector::add(const std::string& key, const std::string& name, quality::ElementType type,
+                         const int* nodes) {
   auto [it, inserted] = index_.try_emplace({key, type}, blocks_.size());
   if (inserted) {
     MeshBlock b;

@@ -16,9 +16,8 @@ MeshFile read_mesh_file(const std::string& path) {
   if (ext == ".exo" || ext == ".e" || ext == ".g") return detail::read_exodus(path);
   if (ext == ".msh") return detail::read_msh(path);
   if (ext == ".vtu") return detail::read_vtu(path);
-  throw MeshingError(ErrorCode::InvalidInput,
-                     path + ": unknown mesh file extension \"" + ext +
-                         "\" (allowed: .exo .e .g .msh .vtu)");
+  throw MeshingError(ErrorCode::InvalidInput, path + ": unknown mesh file extension \"" + ext +
+                                                  "\" (allowed: .exo .e .g .msh .vtu)");
 }
 
 }  // namespace cooperage::io

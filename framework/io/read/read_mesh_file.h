@@ -15,7 +15,7 @@ namespace cooperage::io {
 
 /// The elements of one type in one block of a mesh file.
 struct MeshBlock {
-  std::string name;               ///< Exodus block name, Gmsh physical name, "<dim>:<tag>", ...
+  std::string name;  ///< Exodus block name, Gmsh physical name, "<dim>:<tag>", ...
   quality::ElementType type = quality::ElementType::Hex;
   /// Flat, 0-based indices into MeshFile::coords; node_count(type) per
   /// element, in Exodus/VTK linear node order (quality/metric.h).

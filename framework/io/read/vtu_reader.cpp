@@ -36,8 +36,8 @@ using quality::ElementType;
 /// Size in bytes of a VTK scalar type name, 0 for an unknown one.
 std::size_t type_size(const std::string& t) {
   static const std::map<std::string, std::size_t> sizes{
-      {"Int8", 1},    {"UInt8", 1},   {"Int16", 2},   {"UInt16", 2},   {"Int32", 4},
-      {"UInt32", 4},  {"Int64", 8},   {"UInt64", 8},  {"Float32", 4},  {"Float64", 8}};
+      {"Int8", 1},   {"UInt8", 1}, {"Int16", 2},  {"UInt16", 2},  {"Int32", 4},
+      {"UInt32", 4}, {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}};
   const auto it = sizes.find(t);
   return it == sizes.end() ? 0 : it->second;
 }
@@ -85,7 +85,8 @@ class VtuParser {
   /// types up to 2^53, far beyond any index we can store in an int).
   std::vector<double> values(const tinyxml2::XMLElement* a) const {
     const std::string name = a->Attribute("Name") ? a->Attribute("Name") : "(unnamed)";
-    const std::string where = "DataArray \"" + name + "\" (line " + std::to_string(a->GetLineNum()) + ")";
+    const std::string where =
+        "DataArray \"" + name + "\" (line " + std::to_string(a->GetLineNum()) + ")";
     const char* fmt_attr = a->Attribute("format");
     const std::string format = fmt_attr ? fmt_attr : "ascii";
     const char* type_attr = a->Attribute("type");
@@ -114,8 +115,7 @@ class VtuParser {
     const uint64_t length = read_uint(bytes.data(), header_size_);
     if (length > bytes.size() - header_size_ || length % size != 0) {
       parse_error(path_, where + ": binary header says " + std::to_string(length) +
-                             " bytes, the data has " +
-                             std::to_string(bytes.size() - header_size_));
+                             " bytes, the data has " + std::to_string(bytes.size() - header_size_));
     }
     const unsigned char* p = bytes.data() + header_size_;
     const std::size_t n = static_cast<std::size_t>(length) / size;
@@ -138,8 +138,8 @@ class VtuParser {
     const uint64_t length = read_uint(p, header_size_);
     const uint64_t left = appended_.size() - at - header_size_;
     if (length > left || length % size != 0) {
-      parse_error(path_, where + ": its byte count " + std::to_string(length) + " does not fit the " +
-                             std::to_string(left) + " bytes after it");
+      parse_error(path_, where + ": its byte count " + std::to_string(length) +
+                             " does not fit the " + std::to_string(left) + " bytes after it");
     }
     p += header_size_;
     const std::size_t n = static_cast<std::size_t>(length) / size;
@@ -201,13 +201,13 @@ SplitVtu split_appended(const std::string& path, const std::string& text) {
   const std::size_t underscore = text.find('_', tag_end);
   if (underscore == std::string::npos) parse_error(path, "<AppendedData> without its '_' marker");
   // The closing tags after the data are not needed: the XML ends here.
-  return {text.substr(0, tag) + "</VTKFile>\n",
-          std::string_view(text).substr(underscore + 1)};
+  return {text.substr(0, tag) + "</VTKFile>\n", std::string_view(text).substr(underscore + 1)};
 }
 
 const tinyxml2::XMLElement* array_named(const tinyxml2::XMLElement* parent, const char* name) {
   if (!parent) return nullptr;
-  for (auto* a = parent->FirstChildElement("DataArray"); a; a = a->NextSiblingElement("DataArray")) {
+  for (auto* a = parent->FirstChildElement("DataArray"); a;
+       a = a->NextSiblingElement("DataArray")) {
     const char* n = a->Attribute("Name");
     if (n && std::strcmp(n, name) == 0) return a;
   }
@@ -241,17 +241,19 @@ int as_index(const std::string& path, double v, const char* what) {
   return static_cast<int>(v);
 }
 
-void read_piece(const std::string& path, const VtuParser& parser,
-                const tinyxml2::XMLElement* piece, MeshFile& out, BlockCollector& blocks) {
+void read_piece(const std::string& path, const VtuParser& parser, const tinyxml2::XMLElement* piece,
+                MeshFile& out, BlockCollector& blocks) {
   const std::string where = "Piece (line " + std::to_string(piece->GetLineNum()) + ")";
   const auto base = static_cast<int>(out.coords.size());
   const auto* points_el = piece->FirstChildElement("Points");
   const auto* points = points_el ? points_el->FirstChildElement("DataArray") : nullptr;
   if (!points) parse_error(path, where + ": no Points DataArray");
   const int comps = points->IntAttribute("NumberOfComponents", 1);
-  if (comps < 1 || comps > 3) parse_error(path, where + ": Points with " + std::to_string(comps) + " components");
+  if (comps < 1 || comps > 3)
+    parse_error(path, where + ": Points with " + std::to_string(comps) + " components");
   const std::vector<double> xyz = parser.values(points);
-  if (xyz.size() % static_cast<std::size_t>(comps) != 0) parse_error(path, where + ": Points count is not a multiple of the components");
+  if (xyz.size() % static_cast<std::size_t>(comps) != 0)
+    parse_error(path, where + ": Points count is not a multiple of the components");
   const std::size_t n_points = xyz.size() / static_cast<std::size_t>(comps);
   const int64_t declared = piece->Int64Attribute("NumberOfPoints", static_cast<int64_t>(n_points));
   if (declared != static_cast<int64_t>(n_points)) {
@@ -260,7 +262,8 @@ void read_piece(const std::string& path, const VtuParser& parser,
   }
   for (std::size_t i = 0; i < n_points; ++i) {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    for (int k = 0; k < comps; ++k) x[k] = xyz[i * static_cast<std::size_t>(comps) + static_cast<std::size_t>(k)];
+    for (int k = 0; k < comps; ++k)
+      x[k] = xyz[i * static_cast<std::size_t>(comps) + static_cast<std::size_t>(k)];
     out.coords.push_back(x);
   }
 
@@ -284,12 +287,14 @@ void read_piece(const std::string& path, const VtuParser& parser,
   std::vector<double> block_id;
   if (const auto* b = array_named(piece->FirstChildElement("CellData"), "block_id")) {
     block_id = parser.values(b);
-    if (block_id.size() != types.size()) parse_error(path, where + ": block_id has the wrong length");
+    if (block_id.size() != types.size())
+      parse_error(path, where + ": block_id has the wrong length");
   }
   std::size_t begin = 0;
   for (std::size_t c = 0; c < types.size(); ++c) {
     const auto end = static_cast<std::size_t>(as_index(path, offsets[c], "offsets"));
-    if (end < begin || end > conn.size()) parse_error(path, where + ": offsets out of range at cell " + std::to_string(c));
+    if (end < begin || end > conn.size())
+      parse_error(path, where + ": offsets out of range at cell " + std::to_string(c));
     const int vtype = as_index(path, types[c], "types");
     const auto type = vtk_type(vtype);
     if (!type) {
@@ -299,13 +304,16 @@ void read_piece(const std::string& path, const VtuParser& parser,
     }
     const int n = quality::node_count(*type);
     if (end - begin != static_cast<std::size_t>(n)) {
-      parse_error(path, where + ": cell " + std::to_string(c) + " of VTK type " + std::to_string(vtype) +
-                            " has " + std::to_string(end - begin) + " nodes");
+      parse_error(path, where + ": cell " + std::to_string(c) + " of VTK type " +
+                            std::to_string(vtype) + " has " + std::to_string(end - begin) +
+                            " nodes");
     }
     int nodes[8];
     for (int k = 0; k < n; ++k) {
       const int v = as_index(path, conn[begin + static_cast<std::size_t>(k)], "connectivity");
-      if (static_cast<std::size_t>(v) >= n_points) parse_error(path, where + ": cell " + std::to_string(c) + " uses point " + std::to_string(v) + " of " + std::to_string(n_points));
+      if (static_cast<std::size_t>(v) >= n_points)
+        parse_error(path, where + ": cell " + std::to_string(c) + " uses point " +
+                              std::to_string(v) + " of " + std::to_string(n_points));
       nodes[k] = base + v;
     }
     if (*type == ElementType::Wedge) {
@@ -334,8 +342,9 @@ MeshFile read_vtu(const std::string& path) {
   if (doc.Parse(split.xml.data(), split.xml.size()) != tinyxml2::XML_SUCCESS) {
     // tinyxml2's ErrorStr() quotes the offending text whole (a damaged
     // declaration ran past 1,000 characters under libFuzzer): clipped.
-    parse_error(path, std::string("XML error: ") + clip(doc.ErrorStr() ? doc.ErrorStr() : "unknown") +
-                          " (line " + std::to_string(doc.ErrorLineNum()) + ")");
+    parse_error(path, std::string("XML error: ") +
+                          clip(doc.ErrorStr() ? doc.ErrorStr() : "unknown") + " (line " +
+                          std::to_string(doc.ErrorLineNum()) + ")");
   }
   const auto* root = doc.RootElement();
   if (!root || std::strcmp(root->Name(), "VTKFile") != 0) parse_error(path, "no VTKFile element");
@@ -345,7 +354,8 @@ MeshFile read_vtu(const std::string& path) {
                           "\", expected \"UnstructuredGrid\"");
   }
   if (root->Attribute("compressor")) {
-    not_supported(path, std::string("compressed data (compressor=\"") + root->Attribute("compressor") + "\")");
+    not_supported(path, std::string("compressed data (compressor=\"") +
+                            root->Attribute("compressor") + "\")");
   }
   const char* order = root->Attribute("byte_order");
   const bool big = order && std::strcmp(order, "BigEndian") == 0;
@@ -359,7 +369,8 @@ MeshFile read_vtu(const std::string& path) {
   if (!grid) parse_error(path, "no UnstructuredGrid element");
   MeshFile out;
   BlockCollector blocks;
-  for (auto* piece = grid->FirstChildElement("Piece"); piece; piece = piece->NextSiblingElement("Piece")) {
+  for (auto* piece = grid->FirstChildElement("Piece"); piece;
+       piece = piece->NextSiblingElement("Piece")) {
     read_piece(path, parser, piece, out, blocks);
   }
   out.blocks = blocks.take();

@@ -109,8 +109,8 @@ TEST_F(TriPrimitive, MeshesTrianglesIntoThreeMappedPatches) {
     const auto& quads = result.mesh.surface(t).quads;
     EXPECT_EQ(quads.size(), static_cast<size_t>(s0 * s1 + s1 * s2 + s2 * s0));
     double area = 0;
-    const geom::Vec3 normal = model_.surface(t).geometry->project(
-        model_.vertex(1).point).normal;  // planar: one normal
+    const geom::Vec3 normal =
+        model_.surface(t).geometry->project(model_.vertex(1).point).normal;  // planar: one normal
     for (const auto& q : quads) {
       const auto& x = result.mesh;
       for (int c = 0; c < 4; ++c) {  // every corner turns the same way as the face normal
@@ -147,7 +147,8 @@ TEST_F(TriPrimitive, CooperSweepsATriPrimitiveCap) {
     if (s.loops[0].uses.size() != 4) continue;
     for (const auto& use : s.loops[0].uses) {
       const auto& c = model_.curve(use.curve);
-      if (std::abs(model_.vertex(c.start_vertex).point.z() - model_.vertex(c.end_vertex).point.z()) > 0.5) {
+      if (std::abs(model_.vertex(c.start_vertex).point.z() -
+                   model_.vertex(c.end_vertex).point.z()) > 0.5) {
         layers = static_cast<int>(result.mesh.curve_nodes(c.id).size()) - 1;
       }
     }

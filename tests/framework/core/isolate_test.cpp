@@ -17,8 +17,8 @@ namespace {
 using Outcome = IsolatedRun::Outcome;
 
 TEST(Isolate, ReturnsTheBytesTheWorkProduced) {
-  const IsolatedRun r = run_isolated([](std::string& out) { out = std::string(1 << 20, 'x') + "end"; },
-                                     IsolationLimits{10, 0});
+  const IsolatedRun r = run_isolated(
+      [](std::string& out) { out = std::string(1 << 20, 'x') + "end"; }, IsolationLimits{10, 0});
   ASSERT_EQ(r.outcome, Outcome::Done);
   EXPECT_EQ(r.payload.size(), (1u << 20) + 3);
   EXPECT_EQ(r.payload.substr(r.payload.size() - 3), "end");
@@ -35,7 +35,8 @@ TEST(Isolate, AMeshingErrorComesBackWithItsCodeAndMessage) {
 }
 
 TEST(Isolate, ACrashIsReportedWithItsSignal) {
-  const IsolatedRun r = run_isolated([](std::string&) { std::raise(SIGSEGV); }, IsolationLimits{10, 0});
+  const IsolatedRun r =
+      run_isolated([](std::string&) { std::raise(SIGSEGV); }, IsolationLimits{10, 0});
   ASSERT_EQ(r.outcome, Outcome::Crashed);
   EXPECT_EQ(r.signal, SIGSEGV);
   EXPECT_EQ(r.describe({}), "it crashed (signal 11, SIGSEGV)");
@@ -68,11 +69,13 @@ TEST(Isolate, RunawayAllocationStopsAtTheMemoryLimit) {
 TEST(Isolate, TheChildsOutputDoesNotReachThisProcess) {
   // Kernels print on stdout; the child's stdout is /dev/null.
   testing::internal::CaptureStdout();
-  const IsolatedRun r = run_isolated([](std::string& out) {
-    std::printf("noise from a kernel\n");
-    std::fflush(stdout);
-    out = "ok";
-  }, IsolationLimits{10, 0});
+  const IsolatedRun r = run_isolated(
+      [](std::string& out) {
+        std::printf("noise from a kernel\n");
+        std::fflush(stdout);
+        out = "ok";
+      },
+      IsolationLimits{10, 0});
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(r.payload, "ok");
 }

@@ -45,7 +45,9 @@ TEST(Clip, Utf8SequencesAreNeverSplit) {
   EXPECT_EQ(characters(cut), 80u);
   EXPECT_EQ(cut.substr(0, 2 * 79), text.substr(0, 2 * 79));
   // A stray continuation byte or a truncated sequence is not text: '?'.
-  EXPECT_EQ(clip("\x80" "a\xC3"), "?a?");
+  EXPECT_EQ(clip("\x80"
+                 "a\xC3"),
+            "?a?");
 }
 
 TEST(ClipPath, KeepsTheFileNameOfALongPath) {

@@ -72,7 +72,8 @@ TEST(CutCandidates, APlaneThroughAnEdgeContainsTheEdgeAndTheAxis) {
     EXPECT_NEAR(signed_distance(k.surface, m.vertex(curve.start_vertex).point), 0.0, 1e-9);
     EXPECT_NEAR(signed_distance(k.surface, m.vertex(curve.end_vertex).point), 0.0, 1e-9);
     bool along_an_axis = false;
-    for (const auto& a : axes) along_an_axis = along_an_axis || std::abs(a.dot(k.surface.direction)) < 1e-9;
+    for (const auto& a : axes)
+      along_an_axis = along_an_axis || std::abs(a.dot(k.surface.direction)) < 1e-9;
     EXPECT_TRUE(along_an_axis);
   }
   EXPECT_GT(through_edges, 0);
@@ -81,7 +82,8 @@ TEST(CutCandidates, APlaneThroughAnEdgeContainsTheEdgeAndTheAxis) {
 TEST(CutCandidates, TheOrderDoesNotDependOnThePlacement) {
   occ::Workbench a, b;
   for (occ::Workbench* w : {&a, &b}) {
-    w->prism("l", {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}}, {}, {0, 0, 1});
+    w->prism("l", {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}}, {},
+             {0, 0, 1});
     w->cylinder("h", {2, 0.5, -1}, {0, 0, 1}, 0.25, 3);
     w->cut("p", {"l", "h"});
   }

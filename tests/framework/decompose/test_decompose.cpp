@@ -66,8 +66,15 @@ double total_volume(const geom::Model& m) {
 
 // A T-shaped profile extruded along z: three boxes at least.
 void tee(occ::Workbench& bench) {
-  bench.prism("t", {{-3, 0, 0}, {3, 0, 0}, {3, 1, 0}, {0.5, 1, 0}, {0.5, 4, 0}, {-0.5, 4, 0},
-                    {-0.5, 1, 0}, {-3, 1, 0}},
+  bench.prism("t",
+              {{-3, 0, 0},
+               {3, 0, 0},
+               {3, 1, 0},
+               {0.5, 1, 0},
+               {0.5, 4, 0},
+               {-0.5, 4, 0},
+               {-0.5, 1, 0},
+               {-3, 1, 0}},
               {}, {0, 0, 1});
 }
 

@@ -109,8 +109,8 @@ TEST(DecomposeMeshes, TheSameCutsForARotatedAndMovedPart) {
       "<rotate shape=\"part\" origin=\"1 2 3\" axis=\"1 2 -0.5\" angle=\"37\"/>"
       "<translate shape=\"part\" by=\"10 -3 7\"/>"
       "</geometry><mesh size=\"0.25\"/></cooperage>";
-  const fs::path file = fs::temp_directory_path() /
-                        ("cooperage_fig3a_moved_" + std::to_string(::getpid()) + ".xml");
+  const fs::path file =
+      fs::temp_directory_path() / ("cooperage_fig3a_moved_" + std::to_string(::getpid()) + ".xml");
   std::ofstream(file) << text;
   const Meshed b = mesh_job(io::read_journal(file.string()));
   fs::remove(file);
@@ -132,7 +132,8 @@ TEST(DecomposeMeshes, TheSameCutsAndMeshForAnyThreadCount) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t k = 0; k < a.size(); ++k) {
     ASSERT_EQ(a[k].cuts.size(), b[k].cuts.size());
-    for (size_t c = 0; c < a[k].cuts.size(); ++c) EXPECT_EQ(a[k].cuts[c].through, b[k].cuts[c].through);
+    for (size_t c = 0; c < a[k].cuts.size(); ++c)
+      EXPECT_EQ(a[k].cuts[c].through, b[k].cuts[c].through);
   }
   ASSERT_EQ(one.run.mesh.mesh.node_count(), two.run.mesh.mesh.node_count());
   for (size_t n = 0; n < one.run.mesh.mesh.node_count(); ++n) {

@@ -33,7 +33,8 @@ class DecomposeRealCad : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(DecomposeRealCad, MeshesAllHexAtADiagonalOverForty) {
   const std::string path = real_cad(GetParam());
-  if (!fs::exists(path)) GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
+  if (!fs::exists(path))
+    GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
   const geom::Model part = load_any(path);
   const double size = part.box().diagonal() / 40.0;
   double exact = 0;
@@ -69,7 +70,8 @@ INSTANTIATE_TEST_SUITE_P(Issue17, DecomposeRealCad,
                          ::testing::Values("occt_xr1-tc-lbr.stp"),
                          [](const ::testing::TestParamInfo<const char*>& param) {
                            std::string n = param.param;
-                           for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
                          });
 

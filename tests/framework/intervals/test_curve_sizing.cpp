@@ -48,7 +48,8 @@ TEST(CurveSizing, AFullCircleGetsSixIntervalsAtACoarseSize) {
   io::MeshSettings settings;
   settings.size = 20.0;
   const auto plan = selector::planner()(model, registry, settings, 2);
-  const IntervalSolution sol = solve(pipeline::build_interval_problem(model, registry, plan, settings));
+  const IntervalSolution sol =
+      solve(pipeline::build_interval_problem(model, registry, plan, settings));
   for (const auto& c : model.curves()) {
     if (c.geometry->type() == geom::CurveType::Circle) {
       EXPECT_GE(sol.intervals.at(c.id), 6);
@@ -60,7 +61,8 @@ TEST(CurveSizing, HalfAndQuarterArcsGetThreeAndTwo) {
   occ::Workbench bench;
   // A D-shaped prism: a half disk of radius 4 and a quarter-round corner.
   bench.revolve("half", {{0, 0, 0}, {4, 0, 0}, {4, 0, 1}, {0, 0, 1}}, {0, 0, 0}, {0, 0, 1}, 180.0);
-  bench.revolve("quarter", {{20, 0, 0}, {24, 0, 0}, {24, 0, 1}, {20, 0, 1}}, {20, 0, 0}, {0, 0, 1}, 90.0);
+  bench.revolve("quarter", {{20, 0, 0}, {24, 0, 0}, {24, 0, 1}, {20, 0, 1}}, {20, 0, 0}, {0, 0, 1},
+                90.0);
   const geom::Model model = bench.build_model();
   const auto sizing = sizing_at(model, 50.0);
   int halves = 0, quarters = 0;
@@ -107,14 +109,17 @@ TEST(CurveSizing, ASmallStepGradesTheLongEdgeNextToIt) {
   // 49.5-long top edge starts at the notch's 0.5 and grows by 0.5 per unit
   // length to 10: 2 ln 20 + (49.5 - 19) / 10 ~ 9.0 intervals, not 5.
   occ::Workbench bench;
-  bench.prism("plate", {{0, 0, 0}, {50, 0, 0}, {50, 20, 0}, {0.5, 20, 0}, {0.5, 19.5, 0}, {0, 19.5, 0}}, {},
+  bench.prism("plate",
+              {{0, 0, 0}, {50, 0, 0}, {50, 20, 0}, {0.5, 20, 0}, {0.5, 19.5, 0}, {0, 19.5, 0}}, {},
               {0, 0, 20});
   const geom::Model model = bench.build_model();
   const auto sizing = sizing_at(model, 10.0);
   int top = 0;
   for (const auto& c : model.curves()) {
     const Vec3 a = model.vertex(c.start_vertex).point, b = model.vertex(c.end_vertex).point;
-    if (std::abs(c.length - 49.5) > 1e-6 || std::abs(a.y() - 20) > 1e-9 || std::abs(b.y() - 20) > 1e-9) continue;
+    if (std::abs(c.length - 49.5) > 1e-6 || std::abs(a.y() - 20) > 1e-9 ||
+        std::abs(b.y() - 20) > 1e-9)
+      continue;
     if (a.z() != 0.0) continue;
     ++top;
     const CurveSizing& z = sizing.at(c.id);
@@ -139,8 +144,9 @@ TEST(CurveSizing, ASmallStepGradesTheLongEdgeNextToIt) {
 TEST(CurveSizing, IsInvariantUnderRigidMotion) {
   auto goals = [](bool moved) {
     occ::Workbench bench;
-    bench.prism("plate", {{0, 0, 0}, {50, 0, 0}, {50, 20, 0}, {0.5, 20, 0}, {0.5, 19.5, 0}, {0, 19.5, 0}}, {},
-                {0, 0, 1});
+    bench.prism("plate",
+                {{0, 0, 0}, {50, 0, 0}, {50, 20, 0}, {0.5, 20, 0}, {0.5, 19.5, 0}, {0, 19.5, 0}},
+                {}, {0, 0, 1});
     if (moved) {
       bench.rotate("plate", {1, 2, 3}, {0.3, -0.5, 0.8}, 37.0);
       bench.translate("plate", {10, -4, 7});

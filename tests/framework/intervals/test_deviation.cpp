@@ -9,11 +9,11 @@ namespace {
 
 TEST(RelativeDeviation, MitchellFormula) {
   EXPECT_DOUBLE_EQ(relative_deviation(10, 10), 0.0);
-  EXPECT_DOUBLE_EQ(relative_deviation(11, 10), 0.1);        // (x - g) / g
-  EXPECT_DOUBLE_EQ(relative_deviation(11, 12), 1.0 / 11);   // (g - x) / x
-  EXPECT_DOUBLE_EQ(relative_deviation(5, 10), 1.0);         // halving costs like doubling
+  EXPECT_DOUBLE_EQ(relative_deviation(11, 10), 0.1);       // (x - g) / g
+  EXPECT_DOUBLE_EQ(relative_deviation(11, 12), 1.0 / 11);  // (g - x) / x
+  EXPECT_DOUBLE_EQ(relative_deviation(5, 10), 1.0);        // halving costs like doubling
   EXPECT_DOUBLE_EQ(relative_deviation(20, 10), 1.0);
-  EXPECT_DOUBLE_EQ(deviation_cost(20, 10), 2.0);            // f + f^3
+  EXPECT_DOUBLE_EQ(deviation_cost(20, 10), 2.0);  // f + f^3
 }
 
 TEST(CostBreakpoints, DenseNearGoalSparseFarAndWithinBounds) {

@@ -15,7 +15,8 @@ namespace {
 ::testing::AssertionResult satisfies(const IntervalProblem& problem, const IntervalSolution& s) {
   for (const auto& [id, curve] : problem.curves()) {
     auto it = s.intervals.find(id);
-    if (it == s.intervals.end()) return ::testing::AssertionFailure() << "curve " << id << " missing";
+    if (it == s.intervals.end())
+      return ::testing::AssertionFailure() << "curve " << id << " missing";
     if (it->second < curve.min || (curve.max && it->second > *curve.max))
       return ::testing::AssertionFailure() << "curve " << id << " out of bounds";
     if (curve.hard() && it->second != *curve.fixed)
@@ -23,13 +24,19 @@ namespace {
   }
   for (const Constraint& c : problem.constraints()) {
     long sum = 0;
-    for (const LinearTerm& t : c.terms) sum += static_cast<long>(t.coeff) * s.intervals.at(t.curve_id);
+    for (const LinearTerm& t : c.terms)
+      sum += static_cast<long>(t.coeff) * s.intervals.at(t.curve_id);
     bool ok = true;
-    if (c.kind == Constraint::Kind::Even) ok = sum % 2 == 0;
-    else if (c.sense == Sense::Equal) ok = sum == c.rhs;
-    else if (c.sense == Sense::LessEqual) ok = sum <= c.rhs;
-    else ok = sum >= c.rhs;
-    if (!ok) return ::testing::AssertionFailure() << "violated: " << c.label << " (sum " << sum << ")";
+    if (c.kind == Constraint::Kind::Even)
+      ok = sum % 2 == 0;
+    else if (c.sense == Sense::Equal)
+      ok = sum == c.rhs;
+    else if (c.sense == Sense::LessEqual)
+      ok = sum <= c.rhs;
+    else
+      ok = sum >= c.rhs;
+    if (!ok)
+      return ::testing::AssertionFailure() << "violated: " << c.label << " (sum " << sum << ")";
   }
   return ::testing::AssertionSuccess();
 }
@@ -162,7 +169,8 @@ TEST(IntervalSolve, SubmapDirectionSums) {
   int b1 = 0, b2 = 0;
   for (int x1 = 1; x1 <= 12; ++x1)
     for (int x2 = 1; x2 <= 12; ++x2) {
-      const double cost = deviation_cost(x1, 4) + deviation_cost(x2, 6) + deviation_cost(x1 + x2, 12);
+      const double cost =
+          deviation_cost(x1, 4) + deviation_cost(x2, 6) + deviation_cost(x1 + x2, 12);
       if (cost < best) best = cost, b1 = x1, b2 = x2;
     }
   EXPECT_EQ(b1, 4);
@@ -188,18 +196,19 @@ TEST(IntervalSolve, GeneralLinearConstraint) {
     for (int x2 = 1; x2 <= 12; ++x2)
       for (int x3 = 1; x3 <= 12; ++x3)
         if (x1 + x2 >= x3 + 4)
-          best = std::min(best, deviation_cost(x1, 5) + deviation_cost(x2, 5) + deviation_cost(x3, 8));
+          best =
+              std::min(best, deviation_cost(x1, 5) + deviation_cost(x2, 5) + deviation_cost(x3, 8));
   EXPECT_NEAR(s.objective, best, 1e-9);
 }
 
 TEST(IntervalSolve, LoneCurvesRoundTheirGoal) {
   IntervalProblem p;
   p.add_curve(1, 7.4);
-  p.add_curve(2, 0.3);                            // at least 1
+  p.add_curve(2, 0.3);  // at least 1
   p.add_curve(3, 4.0, Firmness::Hard, 9);
-  p.add_curve(4, 2.47);                           // h(3) < h(2): 0.212 < 0.237
+  p.add_curve(4, 2.47);                                          // h(3) < h(2): 0.212 < 0.237
   p.add_curve(5, 20.0, Firmness::Default, std::nullopt, 1, 12);  // clamped to its max
-  p.add_curve(6, 3.0, Firmness::Soft, 5);         // a non-hard count is the goal
+  p.add_curve(6, 3.0, Firmness::Soft, 5);                        // a non-hard count is the goal
   const IntervalSolution s = solve(p);
   EXPECT_EQ(s.intervals.at(1), 7);
   EXPECT_EQ(s.intervals.at(2), 1);
@@ -339,8 +348,8 @@ TEST(IntervalSolve, DeterministicForAnyInputOrder) {
   // depend on call order, constraint order or which side is the lhs.
   auto make = [](bool reversed) {
     IntervalProblem p;
-    const std::vector<int> ids = reversed ? std::vector<int>{6, 5, 4, 3, 2, 1}
-                                          : std::vector<int>{1, 2, 3, 4, 5, 6};
+    const std::vector<int> ids =
+        reversed ? std::vector<int>{6, 5, 4, 3, 2, 1} : std::vector<int>{1, 2, 3, 4, 5, 6};
     for (int id : ids) p.add_curve(id, 3);
     if (reversed) {
       p.add_equal({6}, {5}, "map b");

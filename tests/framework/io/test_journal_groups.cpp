@@ -108,9 +108,10 @@ TEST(JournalGroups, MalformedGroupsAreRefusedNamingTheLine) {
 }
 
 TEST(JournalGroups, GroupsComeAfterMeshAndBeforeExports) {
-  expect_error("<cooperage version=\"1\">\n<geometry>\n<brick name=\"b\" size=\"1 1 1\"/>\n"
-               "</geometry>\n<block id=\"1\" volumes=\"1\"/>\n<mesh size=\"1\"/>\n</cooperage>\n",
-               {"job.xml:6:", "<mesh>", "must come before <block>"});
+  expect_error(
+      "<cooperage version=\"1\">\n<geometry>\n<brick name=\"b\" size=\"1 1 1\"/>\n"
+      "</geometry>\n<block id=\"1\" volumes=\"1\"/>\n<mesh size=\"1\"/>\n</cooperage>\n",
+      {"job.xml:6:", "<mesh>", "must come before <block>"});
   expect_error(journal("<export file=\"a.exo\"/>\n<sideset id=\"1\" surfaces=\"1\"/>"),
                {"job.xml:7:", "<sideset>", "must come before <export>"});
   // Among themselves, any order.

@@ -47,8 +47,9 @@ TEST(JournalLimits, DenormalAndHugeNumbersAreRefused) {
 }
 
 TEST(JournalLimits, IntegersAreBounded) {
-  const std::string msg = error_of(journal(R"(<brick name="b" size="1 1 1"/>)",
-                                           R"(<mesh size="1"><curve id="1" intervals="2147483647"/></mesh>)"));
+  const std::string msg =
+      error_of(journal(R"(<brick name="b" size="1 1 1"/>)",
+                       R"(<mesh size="1"><curve id="1" intervals="2147483647"/></mesh>)"));
   EXPECT_NE(msg.find("positive integer up to 1e9"), std::string::npos) << msg;
   EXPECT_EQ(error_of(journal(R"(<brick name="b" size="1 1 1"/>)",
                              R"(<mesh size="1"><curve id="1" intervals="65535"/></mesh>)")),
@@ -57,7 +58,8 @@ TEST(JournalLimits, IntegersAreBounded) {
 
 TEST(JournalLimits, ShapeNamesAreAtMost64Characters) {
   EXPECT_EQ(error_of(journal("<brick name=\"" + std::string(64, 'n') + "\" size=\"1 1 1\"/>")), "");
-  const std::string msg = error_of(journal("<brick name=\"" + std::string(100000, 'n') + "\" size=\"1 1 1\"/>"));
+  const std::string msg =
+      error_of(journal("<brick name=\"" + std::string(100000, 'n') + "\" size=\"1 1 1\"/>"));
   EXPECT_NE(msg.find("at most 64 characters"), std::string::npos);
   EXPECT_LT(msg.size(), 300u) << "a 100 KB name is not echoed";
 }
@@ -65,9 +67,9 @@ TEST(JournalLimits, ShapeNamesAreAtMost64Characters) {
 TEST(JournalLimits, NoErrorEchoesMoreThanALineOfInput) {
   const std::string big(10000, 'x');
   for (const std::string& xml : {
-           journal("<" + big + "/>"),                                   // a 10,000-character tag
+           journal("<" + big + "/>"),  // a 10,000-character tag
            journal("<brick name=\"b\" size=\"1 1 1\" " + big + "=\"1\"/>"),  // attribute name
-           journal("<brick name=\"b\" size=\"" + big + "\"/>"),           // attribute value
+           journal("<brick name=\"b\" size=\"" + big + "\"/>"),              // attribute value
            journal("<brick name=\"b\" size=\"1 1 1\">" + big + "</brick>"),  // text
            journal(R"(<brick name="b" size="1 1 1"/>)", "<export file=\"" + big + ".step\"/>"),
            "<cooperage version=\"" + big + "\"/>",
@@ -81,9 +83,10 @@ TEST(JournalLimits, NoErrorEchoesMoreThanALineOfInput) {
 }
 
 TEST(JournalLimits, MeshLimitsAreRead) {
-  const Job job = parse_journal(journal(R"(<brick name="b" size="1 1 1"/>)",
-                                        R"(<mesh size="1" max_elements="5000" volume_tolerance="2.5" threads="64"/>)"),
-                                "job.xml", "/base");
+  const Job job = parse_journal(
+      journal(R"(<brick name="b" size="1 1 1"/>)",
+              R"(<mesh size="1" max_elements="5000" volume_tolerance="2.5" threads="64"/>)"),
+      "job.xml", "/base");
   ASSERT_TRUE(job.mesh);
   EXPECT_EQ(job.mesh->max_elements, 5000.0);
   EXPECT_DOUBLE_EQ(*job.mesh->volume_tolerance, 0.025);
@@ -92,9 +95,10 @@ TEST(JournalLimits, MeshLimitsAreRead) {
                              R"(<mesh size="1" volume_tolerance="150"/>)"))
                 .find("in percent and at most 100"),
             std::string::npos);
-  EXPECT_NE(error_of(journal(R"(<brick name="b" size="1 1 1"/>)", R"(<mesh size="1" max_elements="0"/>)"))
-                .find("max_elements"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(journal(R"(<brick name="b" size="1 1 1"/>)", R"(<mesh size="1" max_elements="0"/>)"))
+          .find("max_elements"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -25,12 +25,13 @@ std::string error_of(const std::string& xml) {
 }
 
 TEST(JournalPlugins, ReadInOrderRelativeToTheJournal) {
-  const Job job = parse_journal("<cooperage version=\"1\">\n"
-                                "<plugin file=\"lib/libone.so\"/>\n"
-                                "<plugin file=\"../libtwo.so\"/>\n"
-                                "<plugin file=\"/opt/p/libthree.so\"/>\n" +
-                                    kGeometry + "</cooperage>\n",
-                                "job.xml", "/jobs/a");
+  const Job job = parse_journal(
+      "<cooperage version=\"1\">\n"
+      "<plugin file=\"lib/libone.so\"/>\n"
+      "<plugin file=\"../libtwo.so\"/>\n"
+      "<plugin file=\"/opt/p/libthree.so\"/>\n" +
+          kGeometry + "</cooperage>\n",
+      "job.xml", "/jobs/a");
   ASSERT_EQ(job.plugins.size(), 3u);
   EXPECT_EQ(job.plugins[0].file, "lib/libone.so");
   EXPECT_EQ(job.plugins[0].path, "/jobs/a/lib/libone.so");
@@ -41,9 +42,9 @@ TEST(JournalPlugins, ReadInOrderRelativeToTheJournal) {
 }
 
 TEST(JournalPlugins, AJournalWithoutPluginsHasNone) {
-  EXPECT_TRUE(parse_journal("<cooperage version=\"1\">" + kGeometry + "</cooperage>", "job.xml",
-                            "/jobs/a")
-                  .plugins.empty());
+  EXPECT_TRUE(
+      parse_journal("<cooperage version=\"1\">" + kGeometry + "</cooperage>", "job.xml", "/jobs/a")
+          .plugins.empty());
 }
 
 TEST(JournalPlugins, MisplacedRepeatedOrEmptyPluginsAreErrors) {
@@ -51,12 +52,15 @@ TEST(JournalPlugins, MisplacedRepeatedOrEmptyPluginsAreErrors) {
                            "<plugin file=\"libone.so\"/>\n</cooperage>\n");
   EXPECT_NE(m.find("job.xml:3"), std::string::npos) << m;
   EXPECT_NE(m.find("must come before <geometry>"), std::string::npos) << m;
-  m = error_of("<cooperage version=\"1\">\n<plugin file=\"libone.so\"/>\n"
-               "<plugin file=\"./libone.so\"/>\n" + kGeometry + "</cooperage>\n");
+  m = error_of(
+      "<cooperage version=\"1\">\n<plugin file=\"libone.so\"/>\n"
+      "<plugin file=\"./libone.so\"/>\n" +
+      kGeometry + "</cooperage>\n");
   EXPECT_NE(m.find("job.xml:3"), std::string::npos) << m;
   EXPECT_NE(m.find("already loaded at line 2"), std::string::npos) << m;
   m = error_of("<cooperage version=\"1\">\n<plugin file=\"\"/>\n" + kGeometry + "</cooperage>\n");
-  EXPECT_NE(m.find("job.xml:2: <plugin>: attribute \"file\" must be non-empty"), std::string::npos) << m;
+  EXPECT_NE(m.find("job.xml:2: <plugin>: attribute \"file\" must be non-empty"), std::string::npos)
+      << m;
   m = error_of("<cooperage version=\"1\">\n<plugin/>\n" + kGeometry + "</cooperage>\n");
   EXPECT_NE(m.find("file"), std::string::npos) << m;
   m = error_of("<cooperage version=\"1\">\n<plugin file=\"a.so\">x</plugin>\n" + kGeometry +

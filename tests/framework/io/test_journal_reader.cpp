@@ -240,8 +240,8 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_EQ(job.reports[0].file, "out/result.html");
   EXPECT_EQ(job.reports[0].where.element, "report");
   EXPECT_FALSE(job.exports[0].binary);
-  EXPECT_FALSE(job.exports[1].binary);  // default ascii
-  EXPECT_TRUE(job.exports[2].binary);   // encoding="binary"
+  EXPECT_FALSE(job.exports[1].binary);           // default ascii
+  EXPECT_TRUE(job.exports[2].binary);            // encoding="binary"
   EXPECT_EQ(job.exports[2].file, "result.VTU");  // extensions in any case
 }
 

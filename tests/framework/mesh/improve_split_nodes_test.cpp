@@ -28,7 +28,7 @@ struct Fan {
 Fan fan() {
   const double t = std::tan(10.0 * M_PI / 180.0);
   Fan f;
-  f.points = {Vec3(0, 0, 0),  Vec3(1, -t, 0),   Vec3(1, t, 0),  Vec3(1.05, 0, 0),
+  f.points = {Vec3(0, 0, 0),    Vec3(1, -t, 0),  Vec3(1, t, 0), Vec3(1.05, 0, 0),
               Vec3(2, -0.6, 0), Vec3(2, 0.6, 0), Vec3(2, 0, 0)};
   return f;
 }
@@ -45,7 +45,8 @@ TEST(ImproveSplitNodes, ThinTriangleGetsBetterAndQuadsKeepTheirFloor) {
   const std::vector<Vec3> start = f.points;
   const double thin = quality(start, f.tris[1]);
   const double tip = quality(start, f.tris[0]);
-  improve_split_nodes(f.points, f.quads, f.tris, f.movable, [](const Vec3& x) { return x; }, 0.5);
+  improve_split_nodes(
+      f.points, f.quads, f.tris, f.movable, [](const Vec3& x) { return x; }, 0.5);
   EXPECT_GT(quality(f.points, f.tris[1]), thin + 0.2) << "thin triangle was " << thin;
   EXPECT_NEAR(quality(f.points, f.tris[0]), tip, 1e-15);  // fixed nodes only
   for (size_t i = 0; i < start.size(); ++i) {
@@ -60,22 +61,22 @@ TEST(ImproveSplitNodes, ThinTriangleGetsBetterAndQuadsKeepTheirFloor) {
 
 TEST(ImproveSplitNodes, ProjectionKeepsNodesOnTheSurface) {
   Fan f = fan();
-  improve_split_nodes(f.points, f.quads, f.tris, f.movable,
-                      [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); }, 0.5);
+  improve_split_nodes(
+      f.points, f.quads, f.tris, f.movable, [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); },
+      0.5);
   EXPECT_EQ(f.points[3].z(), 0.0);
 }
 
 TEST(ImproveSplitNodes, RigidMotionMovesTheSameWay) {
   Fan plain = fan();
   Fan moved = fan();
-  const Eigen::Matrix3d r =
-      Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const Vec3 shift(5, -2, 7);
   for (Vec3& p : moved.points) p = r * p + shift;
   const Vec3 normal = r * Vec3(0, 0, 1);
   auto on_plane = [&](const Vec3& x) { return Vec3(x - (x - shift).dot(normal) * normal); };
-  improve_split_nodes(plain.points, plain.quads, plain.tris, plain.movable,
-                      [](const Vec3& x) { return x; }, 0.5);
+  improve_split_nodes(
+      plain.points, plain.quads, plain.tris, plain.movable, [](const Vec3& x) { return x; }, 0.5);
   improve_split_nodes(moved.points, moved.quads, moved.tris, moved.movable, on_plane, 0.5);
   for (size_t i = 0; i < plain.points.size(); ++i) {
     EXPECT_LT((r * plain.points[i] + shift - moved.points[i]).norm(), 1e-9) << "node " << i;

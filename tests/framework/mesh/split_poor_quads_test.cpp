@@ -73,7 +73,8 @@ const std::vector<Quad> kTwoPoorQuads{{0, 1, 4, 5}, {1, 2, 3, 4}};
 
 TEST(SplitPoorQuads, HalvesOfTwoPoorQuadsMakingAGoodQuadAreMerged) {
   const auto p = plane(kTwoPoor);
-  for (const Quad& q : kTwoPoorQuads) ASSERT_LT(min_corner_sine(p, q.data(), 4, Vec3::UnitZ()), 0.5);
+  for (const Quad& q : kTwoPoorQuads)
+    ASSERT_LT(min_corner_sine(p, q.data(), 4, Vec3::UnitZ()), 0.5);
   const QuadDominant m = split_poor_quads(p, kTwoPoorQuads, 0.5);
   ASSERT_EQ(m.quads.size(), 1u);
   EXPECT_EQ(nodes(m.quads[0]), (std::set<int>{0, 1, 2, 4}));

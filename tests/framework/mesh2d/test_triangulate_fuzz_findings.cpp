@@ -19,17 +19,18 @@ TEST(TriangulateFuzzFindings, ALoopThatTurnsBackOnItselfIsRefused) {
   // C and back to D between them; the work frame's rotation made a sliver
   // of B, C, D, returned as a zero-area triangle.
   const std::vector<std::vector<P>> loops{{P(-0.843719482421875, 0.046905517578125),
-                                          P(0.0, 0.0078125), P(0.98828125, 0.0078125),
-                                          P(0.0078125, 0.0078125)}};
+                                           P(0.0, 0.0078125), P(0.98828125, 0.0078125),
+                                           P(0.0078125, 0.0078125)}};
   for (bool refine : {false, true}) {
     RefineOptions options;
     options.refine = refine;
     try {
       const Triangulation2D t = triangulate(loops, options);
       for (const auto& tri : t.triangles)
-        EXPECT_GT(orient2d(t.points[static_cast<size_t>(tri[0])], t.points[static_cast<size_t>(tri[1])],
-                           t.points[static_cast<size_t>(tri[2])]),
-                  0.0);
+        EXPECT_GT(
+            orient2d(t.points[static_cast<size_t>(tri[0])], t.points[static_cast<size_t>(tri[1])],
+                     t.points[static_cast<size_t>(tri[2])]),
+            0.0);
       ADD_FAILURE() << "accepted a loop that overlaps itself";
     } catch (const MeshingError& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
@@ -45,7 +46,9 @@ TEST(TriangulateFuzzFindings, StraightSidesWithManyPointsStillTriangulate) {
   for (double angle : {0.0, 0.3, 1.0, 2.5}) {
     const double c = std::cos(angle), s = std::sin(angle);
     std::vector<P> loop;
-    auto add = [&](double x, double y) { loop.emplace_back(c * x - s * y + 1e3, s * x + c * y - 7.0); };
+    auto add = [&](double x, double y) {
+      loop.emplace_back(c * x - s * y + 1e3, s * x + c * y - 7.0);
+    };
     for (int i = 0; i < 10; ++i) add(0.1 * i, 0.0);
     for (int i = 0; i < 10; ++i) add(1.0, 0.1 * i);
     for (int i = 0; i < 10; ++i) add(1.0 - 0.1 * i, 1.0);

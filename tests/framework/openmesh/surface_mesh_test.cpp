@@ -22,7 +22,8 @@ double enclosed_volume(const SurfaceMesh& m) {
   for (const auto f : m.faces()) {
     std::vector<SurfaceMesh::Point> p;
     for (const auto x : m.fv_range(f)) p.push_back(m.point(x));
-    for (size_t k = 1; k + 1 < p.size(); ++k) v += OpenMesh::dot(p[0], OpenMesh::cross(p[k], p[k + 1])) / 6.0;
+    for (size_t k = 1; k + 1 < p.size(); ++k)
+      v += OpenMesh::dot(p[0], OpenMesh::cross(p[k], p[k + 1])) / 6.0;
   }
   return v;
 }
@@ -65,7 +66,8 @@ TEST(ToOpenMesh, RoundTripGivesTheSameFacesOnTheSameSurfaces) {
     const auto& b = back.surface(sid);
     ASSERT_EQ(b.quads.size(), s.quads.size()) << "surface " << sid;
     for (size_t i = 0; i < s.quads.size(); ++i) {
-      for (int k = 0; k < 4; ++k) EXPECT_EQ(original[static_cast<size_t>(b.quads[i][k])], s.quads[i][k]);
+      for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(original[static_cast<size_t>(b.quads[i][k])], s.quads[i][k]);
     }
   }
   for (size_t i = 0; i < back.node_count(); ++i)
@@ -108,7 +110,8 @@ TEST(ToOpenMesh, NonManifoldEdgesGetCopiedVerticesAndNoFaceIsLost) {
 TEST(FromOpenMesh, APentagonIsRefusedNamingTheFace) {
   SurfaceMesh m;
   std::vector<SurfaceMesh::VertexHandle> v;
-  for (int i = 0; i < 5; ++i) v.push_back(m.add_vertex({std::cos(i * 1.2566), std::sin(i * 1.2566), 0}));
+  for (int i = 0; i < 5; ++i)
+    v.push_back(m.add_vertex({std::cos(i * 1.2566), std::sin(i * 1.2566), 0}));
   m.add_face(v);
   try {
     from_openmesh(m);

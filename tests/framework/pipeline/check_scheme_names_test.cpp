@@ -48,7 +48,8 @@ TEST(CheckSchemeNames, ATypoNamesTheLineTheClosestNameAndEveryName) {
   register_builtin_schemes(r);
   const std::string m = error_of(pins("subamp", "auto"), r);
   EXPECT_NE(m.find("job.xml:7: <surface>: no surface scheme \"subamp\" is registered"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
   EXPECT_NE(m.find("\"submap\""), std::string::npos) << m;
   for (const std::string& name : r.names(2)) EXPECT_NE(m.find(name), std::string::npos) << m;
 }

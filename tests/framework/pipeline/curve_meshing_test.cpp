@@ -80,7 +80,7 @@ TEST(MeshCurves, NodesLieOnTheCircleAtEqualArcLengths) {
     for (size_t i = 0; i + 1 < chain.size(); ++i) {
       const auto& a = db.node(chain[i]);
       const auto& b = db.node(chain[i + 1]);
-      EXPECT_NEAR(std::hypot(a.x(), a.y()), 2.0, 1e-9);  // on the circle
+      EXPECT_NEAR(std::hypot(a.x(), a.y()), 2.0, 1e-9);                  // on the circle
       EXPECT_NEAR((a - b).norm(), 2 * 2.0 * std::sin(M_PI / 12), 1e-7);  // equal chords
     }
   }

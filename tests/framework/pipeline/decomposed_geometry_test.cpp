@@ -32,7 +32,8 @@ const char* kFig3a = R"(  <geometry>
 class DecomposedGeometry : public testing::JournalFixture {};
 
 TEST_F(DecomposedGeometry, AMeshableModelIsNotCut) {
-  const io::Job job = journal(R"(  <geometry><brick name="b" origin="0 0 0" size="2 1 1"/></geometry>
+  const io::Job job =
+      journal(R"(  <geometry><brick name="b" origin="0 0 0" size="2 1 1"/></geometry>
   <mesh size="0.25"/>
 )");
   const auto g = build_decomposed_geometry(job, registry_, selector::planner());
@@ -91,10 +92,11 @@ TEST_F(DecomposedGeometry, APinnedSchemeIsLeftToThePlannerToRefuse) {
 }
 
 TEST_F(DecomposedGeometry, AJournalsWebcutIsKept) {
-  const io::Job job = journal(std::string(kFig3a).replace(
-                                  std::string(kFig3a).find("  </geometry>"), 0,
-                                  "    <webcut shape=\"part\" origin=\"0 2 0\" normal=\"0 1 0\"/>\n") +
-                              "  <mesh size=\"0.25\"/>\n");
+  const io::Job job =
+      journal(std::string(kFig3a).replace(
+                  std::string(kFig3a).find("  </geometry>"), 0,
+                  "    <webcut shape=\"part\" origin=\"0 2 0\" normal=\"0 1 0\"/>\n") +
+              "  <mesh size=\"0.25\"/>\n");
   const auto g = build_decomposed_geometry(job, registry_, selector::planner());
   EXPECT_TRUE(g.decomposition.volumes.empty());
   EXPECT_EQ(g.model.volumes().size(), 2u);
@@ -102,10 +104,10 @@ TEST_F(DecomposedGeometry, AJournalsWebcutIsKept) {
 
 TEST_F(DecomposedGeometry, WithoutASizeThicknessIsMeasuredAgainstAFortiethOfTheDiagonal) {
   const io::Job job = journal(std::string(kFig3a));
-  const geom::Model m = build_decomposed_geometry(journal(std::string(kFig3a) +
-                                                          "  <mesh decompose=\"off\"/>\n"),
-                                                  registry_, selector::planner())
-                            .model;
+  const geom::Model m =
+      build_decomposed_geometry(journal(std::string(kFig3a) + "  <mesh decompose=\"off\"/>\n"),
+                                registry_, selector::planner())
+          .model;
   io::MeshSettings none;
   EXPECT_NEAR(decomposition_size(none, m), m.box().diagonal() / 40.0, 1e-12);
   io::MeshSettings sized;

@@ -54,7 +54,8 @@ class Counted final : public scheme::VolumeScheme {
     a.plan = std::move(p);
     return a;
   }
-  void constrain(const scheme::VolumeView& view, intervals::IntervalProblem& problem) const override {
+  void constrain(const scheme::VolumeView& view,
+                 intervals::IntervalProblem& problem) const override {
     inner_->constrain(inner_view(view, "constrain"), problem);
   }
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override {
@@ -63,7 +64,8 @@ class Counted final : public scheme::VolumeScheme {
   std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override {
     return inner_->takes_existing_mesh(inner_view(view, "takes"));
   }
-  scheme::EntityMesh mesh(const scheme::VolumeView& view, const scheme::Settings& settings) const override {
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override {
     return inner_->mesh(inner_view(view, "mesh"), settings);
   }
 
@@ -124,7 +126,8 @@ TEST(PlanFlow, ThePlanApplicableReturnsIsTheOneEveryLaterCallGets) {
   const Counted* counted = owned.get();
   registry.add(std::move(owned));
 
-  const MeshResult r = mesh_model(model, pinned_to_counted(0.25, 2), registry, selector::mesh_options());
+  const MeshResult r =
+      mesh_model(model, pinned_to_counted(0.25, 2), registry, selector::mesh_options());
   // One analysis per volume and run: the selector's.
   const std::vector<const scheme::PlanData*> made = counted->made();
   ASSERT_EQ(made.size(), 2u);
@@ -139,14 +142,16 @@ TEST(PlanFlow, ThePlanApplicableReturnsIsTheOneEveryLaterCallGets) {
   std::map<std::string, int> count;
   for (const Counted::Call& c : counted->calls()) {
     ++count[c.what];
-    EXPECT_EQ(c.plan, r.plan.volumes.at(c.volume).data.get()) << c.what << " of volume " << c.volume;
+    EXPECT_EQ(c.plan, r.plan.volumes.at(c.volume).data.get())
+        << c.what << " of volume " << c.volume;
     EXPECT_NE(c.settings, nullptr) << c.what;
   }
   EXPECT_EQ(count["mesh"], 2);
   EXPECT_GE(count["constrain"], 2);
   EXPECT_EQ(count["roles"], 2);
   // ... and what it meshed is the two blocks.
-  const testing::HexMeshSummary m = testing::check_hex_mesh(model, r.mesh);  // conformal, none inverted
+  const testing::HexMeshSummary m =
+      testing::check_hex_mesh(model, r.mesh);  // conformal, none inverted
   EXPECT_NEAR(m.volume, 3.0, 1e-9);
   EXPECT_EQ(r.mesh.hex_count(), static_cast<size_t>(8 * 4 * 4 + 4 * 4 * 4));
 }

@@ -66,7 +66,8 @@ TEST(MeshSize, TheEstimateIsExactForAMappedBrick) {
 
 TEST_F(Reliability, ATinySizeIsRefusedWithTheEstimateBeforeMeshing) {
   // The issue's case: size 1e-3 on a 40 mm part ran until killed.
-  const io::Job job = journal(R"(  <geometry><brick name="b" origin="0 0 0" size="40 40 40"/></geometry>
+  const io::Job job =
+      journal(R"(  <geometry><brick name="b" origin="0 0 0" size="40 40 40"/></geometry>
   <mesh size="1e-3"/>
   <export file="out.exo"/>
 )");
@@ -81,7 +82,8 @@ TEST_F(Reliability, ATinySizeIsRefusedWithTheEstimateBeforeMeshing) {
 TEST_F(Reliability, HardIntervalCountsThatOverflowAreRefused) {
   // The issue's case: 65,535 and 65,536 intervals on two curves of a brick
   // overflowed int in the map's TFI (a heap overflow under ASan).
-  const io::Job job = journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  const io::Job job =
+      journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5"><curve id="1" intervals="65535"/><curve id="2" intervals="65536"/></mesh>
 )");
   const std::string msg = run_error(job);
@@ -138,8 +140,11 @@ TEST_F(Reliability, CoarseRoundPartsPassTheVolumeCheck) {
   // is a prism of 6 to 8 sides, up to 17 % short of the CAD's volume. The
   // faceting credit must account for that, and only for that.
   for (const char* size : {"5", "2.5", "1"}) {
-    const io::Job job = journal(std::string(R"(  <geometry><cylinder name="rod" base="0 0 0" axis="0 0 1" radius="5" height="20"/></geometry>
-  <mesh size=")") + size + "\"/>\n");
+    const io::Job job = journal(
+        std::string(
+            R"(  <geometry><cylinder name="rod" base="0 0 0" axis="0 0 1" radius="5" height="20"/></geometry>
+  <mesh size=")") +
+        size + "\"/>\n");
     const RunResult r = run_job(job, registry_, selector::mesh_options());
     ASSERT_EQ(r.mesh.measures.size(), 1u);
     const MeasureCheck& m = r.mesh.measures.front();
@@ -151,7 +156,8 @@ TEST_F(Reliability, CoarseRoundPartsPassTheVolumeCheck) {
     // it is more than 1 % (issue 16 item 4), and only then.
     const double raw = (m.cad - m.mesh) / m.cad;
     bool warned = false;
-    for (const auto& w : r.mesh.warnings) warned = warned || w.message.find("below the CAD's") != std::string::npos;
+    for (const auto& w : r.mesh.warnings)
+      warned = warned || w.message.find("below the CAD's") != std::string::npos;
     EXPECT_EQ(warned, raw > 0.01) << "size " << size << ": " << 100 * raw << " % short";
   }
 }
@@ -190,8 +196,8 @@ TEST_F(Reliability, ASurfaceMeshIsComparedByArea) {
   ASSERT_FALSE(r.mesh.measures.empty());
   for (const MeasureCheck& m : r.mesh.measures) {
     EXPECT_EQ(m.entity.dim, 2);
-    EXPECT_LT(m.deviation(), 0.01) << m.entity.name() << ": " << m.mesh << " + " << m.faceting
-                                   << " against " << m.cad;
+    EXPECT_LT(m.deviation(), 0.01)
+        << m.entity.name() << ": " << m.mesh << " + " << m.faceting << " against " << m.cad;
   }
 }
 
@@ -203,8 +209,10 @@ TEST_F(Reliability, CoarseFacetsOfADoublyCurvedFaceAreCreditedAndAWrongOneIsNot)
   // because its nodes are off the surface. (Coarser still -- 20 triangles
   // at size 3 -- the credit leaves 5 % and the run fails its check.)
   for (const char* size : {"1.5", "1", "0.7"}) {
-    const io::Job job = journal(std::string(R"(  <geometry><sphere name="s" center="0 0 0" radius="5"/></geometry>
-  <mesh size=")") + size + "\"/>\n");
+    const io::Job job =
+        journal(std::string(R"(  <geometry><sphere name="s" center="0 0 0" radius="5"/></geometry>
+  <mesh size=")") +
+                size + "\"/>\n");
     const RunResult r = run_job(job, registry_, selector::mesh_options(2));
     ASSERT_FALSE(r.mesh.measures.empty()) << size;
     double mesh = 0, credited = 0, cad = 0;
@@ -215,10 +223,11 @@ TEST_F(Reliability, CoarseFacetsOfADoublyCurvedFaceAreCreditedAndAWrongOneIsNot)
     }
     EXPECT_NEAR(cad, 4 * M_PI * 25, 1e-6 * cad);
     EXPECT_LT(mesh, cad) << size;
-    EXPECT_LT(std::abs(credited - cad) / cad, 0.01) << "size " << size << ": " << mesh << " credited to "
-                                                    << credited << " against " << cad;
+    EXPECT_LT(std::abs(credited - cad) / cad, 0.01)
+        << "size " << size << ": " << mesh << " credited to " << credited << " against " << cad;
     mesh::MeshDB shrunk = r.mesh.mesh;
-    for (size_t i = 0; i < shrunk.node_count(); ++i) shrunk.mutable_node(static_cast<int>(i)) *= 0.9;
+    for (size_t i = 0; i < shrunk.node_count(); ++i)
+      shrunk.mutable_node(static_cast<int>(i)) *= 0.9;
     for (const MeasureCheck& m : compare_measures(r.model, shrunk)) {
       EXPECT_GT(m.deviation(), 0.05) << "size " << size << ", " << m.entity.name();
     }
@@ -238,7 +247,8 @@ TEST_F(Reliability, ExportTargetsAreCheckedBeforeTheGeometryIsBuilt) {
   EXPECT_NE(msg.find("does not exist"), std::string::npos) << msg;
   EXPECT_TRUE(files().empty()) << "the first export must not be written";
   fs::create_directories(dir_ / "out.exo");
-  const std::string dir_msg = run_error(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  const std::string dir_msg =
+      run_error(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5"/>
   <export file="a.vtu"/>
   <export file="out.exo"/>
@@ -249,12 +259,15 @@ TEST_F(Reliability, ExportTargetsAreCheckedBeforeTheGeometryIsBuilt) {
 }
 
 TEST_F(Reliability, TwoExportsOfOneFileAreRefused) {
-  const std::string msg = run_error(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  const std::string msg =
+      run_error(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
   <mesh size="0.5"/>
   <export file="a.vtu"/>
   <export file="./a.vtu"/>
 )"));
-  EXPECT_NE(msg.find("job.xml:5: <export>: \"./a.vtu\" is the same file as the export at line 4"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("job.xml:5: <export>: \"./a.vtu\" is the same file as the export at line 4"),
+            std::string::npos)
+      << msg;
 }
 
 TEST_F(Reliability, ThreadsAreCappedAtTheHardwareCount) {
@@ -287,7 +300,8 @@ TEST_F(Reliability, AnAssemblyReportsEveryVolumeAndWritesNothingByDefault) {
     EXPECT_EQ(e.verdicts()[1].state, Verdict::State::Refused);
     EXPECT_EQ(std::string(e.what()).rfind("volume 2: ", 0), 0u) << e.what();
     EXPECT_NE(e.hint().find("1 of 2 volumes could not be meshed; --allow-partial writes the 1"),
-              std::string::npos) << e.hint();
+              std::string::npos)
+        << e.hint();
   }
   EXPECT_TRUE(files().empty());
 }

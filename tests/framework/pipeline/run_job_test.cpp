@@ -59,9 +59,10 @@ TEST_F(RunJob, TwoMergedBricksExodusHasTwoBlocksAndOneSideSetPerSurface) {
 }
 
 TEST_F(RunJob, FailingQualityCheckSkipsExports) {
-  io::Job job = journal(std::string(kTwoBricks) +
-                        "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
-                        "  <export file=\"out.vtu\"/>\n");
+  io::Job job =
+      journal(std::string(kTwoBricks) +
+              "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
+              "  <export file=\"out.vtu\"/>\n");
   const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_TRUE(r.quality.failed());
   EXPECT_TRUE(r.exports_skipped);
@@ -69,9 +70,10 @@ TEST_F(RunJob, FailingQualityCheckSkipsExports) {
 }
 
 TEST_F(RunJob, WarningCheckCountsButWrites) {
-  io::Job job = journal(std::string(kTwoBricks) +
-                        "  <quality metric=\"jacobian\" min=\"1\" action=\"warn\"/>\n"  // each hex: 1/64
-                        "  <export file=\"out.vtu\"/>\n");
+  io::Job job =
+      journal(std::string(kTwoBricks) +
+              "  <quality metric=\"jacobian\" min=\"1\" action=\"warn\"/>\n"  // each hex: 1/64
+              "  <export file=\"out.vtu\"/>\n");
   const RunResult r = run_job(job, registry_, selector::mesh_options());
   EXPECT_FALSE(r.quality.failed());
   ASSERT_EQ(r.quality.checks.size(), 1u);
@@ -100,7 +102,8 @@ TEST_F(RunJob, ConflictingHardIntervalsAreReportedWithTheirCurves) {
 }
 
 TEST_F(RunJob, JournalWithoutMeshIsAnError) {
-  io::Job job = journal("  <geometry><brick name=\"a\" origin=\"0 0 0\" size=\"1 1 1\"/></geometry>\n");
+  io::Job job =
+      journal("  <geometry><brick name=\"a\" origin=\"0 0 0\" size=\"1 1 1\"/></geometry>\n");
   EXPECT_THROW(run_job(job, registry_, selector::mesh_options()), MeshingError);
 }
 

@@ -133,9 +133,12 @@ TEST(HexMetrics, RotationAndScalingInvariance) {
     HexNodes g;
     for (int i = 0; i < 8; ++i) g[i] = scale * (q * h[i]) + shift;
     const std::vector<std::pair<const char*, std::function<double(const HexNodes&)>>> invariant = {
-        {"scaled_jacobian", hex_scaled_jacobian}, {"skew", hex_skew},
-        {"taper", hex_taper},                     {"shape", hex_shape},
-        {"aspect", hex_max_aspect_frobenius},     {"edge_ratio", hex_edge_ratio}};
+        {"scaled_jacobian", hex_scaled_jacobian},
+        {"skew", hex_skew},
+        {"taper", hex_taper},
+        {"shape", hex_shape},
+        {"aspect", hex_max_aspect_frobenius},
+        {"edge_ratio", hex_edge_ratio}};
     for (const auto& [name, f] : invariant) {
       SCOPED_TRACE(name);
       EXPECT_NEAR(f(g), f(h), 1e-12 * std::max(1.0, std::abs(f(h))));

@@ -33,11 +33,25 @@ TEST(QuadMetrics, TableOfHandComputedValues) {
   const double a = kPi / 3;  // 60-degree rhombus
   const std::vector<QuadCase> cases = {
       // unit square
-      {"square", {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)},
-       1, 1, 0, 0, 1, 1, 1},
+      {"square",
+       {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, 0)},
+       1,
+       1,
+       0,
+       0,
+       1,
+       1,
+       1},
       // 1 x 2 rectangle: aspect (1+4)/(2*2) = 1.25, shape 2*2/(1+4) = 0.8
-      {"rectangle", {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 2, 0), Vector3d(0, 2, 0)},
-       1, 2, 0, 0, 1.25, 2, 0.8},
+      {"rectangle",
+       {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 2, 0), Vector3d(0, 2, 0)},
+       1,
+       2,
+       0,
+       0,
+       1.25,
+       2,
+       0.8},
       // rhombus, unit sides, angle a: corner areas sin a, X1 = 2u, X2 = 2v,
       // aspect (1+1)/(2 sin a), shape 2 sin a / 2.
       {"rhombus60", rhombus(a), std::sin(a), std::sin(a), std::cos(a), 0, 1 / std::sin(a), 1,

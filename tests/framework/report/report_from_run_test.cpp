@@ -97,9 +97,10 @@ TEST_F(RunReport, StagesOfTheRunAddUpAndFollowTheDataFlow) {
 }
 
 TEST_F(RunReport, FailingCheckSkipsExportsButWritesTheReport) {
-  const auto r = run(std::string(kTwoBricks) +
-                     "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
-                     "  <export file=\"out.exo\"/>\n  <report file=\"why.html\"/>\n");
+  const auto r =
+      run(std::string(kTwoBricks) +
+          "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
+          "  <export file=\"out.exo\"/>\n  <report file=\"why.html\"/>\n");
   EXPECT_TRUE(r.exports_skipped);
   EXPECT_FALSE(fs::exists(dir_ / "out.exo"));
   ASSERT_TRUE(fs::exists(dir_ / "why.html"));

@@ -50,8 +50,9 @@ TEST(PluginLoader, TheExamplePluginAddsItsSchemeWithTheLibraryAsOrigin) {
   EXPECT_EQ(r.names(2).back(), "triprimitive");
   // A second load of the same library (another path to it, too) is a no-op.
   load_plugin(r, kTriPrimitive);
-  load_plugin(r, (fs::path(kTriPrimitive).parent_path() / "." /
-                  fs::path(kTriPrimitive).filename()).string());
+  load_plugin(
+      r,
+      (fs::path(kTriPrimitive).parent_path() / "." / fs::path(kTriPrimitive).filename()).string());
   EXPECT_EQ(r.surface_schemes().size(), r.names(2).size());
   const std::vector<std::string> names = r.names(2);
   EXPECT_EQ(std::count(names.begin(), names.end(), "triprimitive"), 1);
@@ -83,9 +84,10 @@ TEST(PluginLoader, AnotherAbiVersionIsRefusedBeforeRegistration) {
   Registry r;
   // Its cooperage_register aborts: reaching it would end this test program.
   const std::string m = error_of([&] { load_plugin(r, COOPERAGE_PLUGIN_WRONG_ABI, "job.xml:3"); });
-  EXPECT_TRUE(contains(m, "(job.xml:3): was built for plug-in ABI version 999, but this "
-                          "cooperage loads version " +
-                              std::to_string(kPluginAbiVersion)))
+  EXPECT_TRUE(contains(m,
+                       "(job.xml:3): was built for plug-in ABI version 999, but this "
+                       "cooperage loads version " +
+                           std::to_string(kPluginAbiVersion)))
       << m;
   EXPECT_TRUE(r.names(2).empty());
 }

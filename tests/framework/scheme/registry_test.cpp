@@ -18,7 +18,8 @@ class Fixed final : public SurfaceScheme {
   std::string_view name() const override { return name_; }
   Role serves() const override { return roles_; }
   Applicability applicable(const SurfaceView&) const override {
-    return ok_ ? Applicability::yes(score_, name_ + " fits") : Applicability::no(name_ + " does not");
+    return ok_ ? Applicability::yes(score_, name_ + " fits")
+               : Applicability::no(name_ + " does not");
   }
   void constrain(const SurfaceView&, intervals::IntervalProblem&) const override {}
   EntityMesh mesh(const SurfaceView&, const MeshParams&) const override { return {}; }
@@ -109,7 +110,8 @@ TEST(BestSurfaceScheme, TheBestScoreWinsTiesKeepRegistrationOrder) {
   r.add(std::make_unique<Fixed>("high", Role::QuadCap, true, 0.9));
   r.add(std::make_unique<Fixed>("high_too", Role::QuadCap, true, 0.9));
   r.add(std::make_unique<Fixed>("better_but_free", Role::None, true, 1.0));
-  const RoleChoice c = best_surface_scheme(r, Role::QuadCap, SurfaceView{empty_model(), 1, nullptr});
+  const RoleChoice c =
+      best_surface_scheme(r, Role::QuadCap, SurfaceView{empty_model(), 1, nullptr});
   ASSERT_NE(c.scheme, nullptr);
   EXPECT_EQ(c.scheme->name(), "high");
   EXPECT_DOUBLE_EQ(c.applicability.score, 0.9);
@@ -123,7 +125,8 @@ TEST(BestSurfaceScheme, NoneAppliesGivesEveryReasonOrSaysNoneServes) {
   const RoleChoice c = best_surface_scheme(r, Role::TriCap, SurfaceView{empty_model(), 1, nullptr});
   EXPECT_EQ(c.scheme, nullptr);
   EXPECT_EQ(c.reasons, "a: a does not; b: b does not");
-  const RoleChoice none = best_surface_scheme(r, Role::SweepSide, SurfaceView{empty_model(), 1, nullptr});
+  const RoleChoice none =
+      best_surface_scheme(r, Role::SweepSide, SurfaceView{empty_model(), 1, nullptr});
   EXPECT_EQ(none.scheme, nullptr);
   EXPECT_EQ(none.reasons, "no registered surface scheme serves sweep side");
 }

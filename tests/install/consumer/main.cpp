@@ -29,8 +29,8 @@ int main(int argc, char** argv) {
   }
   try {
     const cooperage::Result r = cooperage::mesh_file(step, 1.0);
-    const auto* sj = r.quality.blocks.empty() ? nullptr
-                                              : r.quality.blocks.front().find("scaled_jacobian");
+    const auto* sj =
+        r.quality.blocks.empty() ? nullptr : r.quality.blocks.front().find("scaled_jacobian");
     bool ok = check(r.model.volumes().size() == 1, "one volume");
     ok = check(std::abs(r.model.volume(1).volume - 24.0) < 1e-9, "volume 24") && ok;
     ok = check(r.mesh.hex_count() == 24, "24 hexes") && ok;

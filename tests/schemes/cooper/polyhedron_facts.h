@@ -29,7 +29,8 @@ inline VolumeFacts polyhedron_facts(const std::vector<PolyFace>& faces) {
   out.volume = 1;
   std::map<std::tuple<long, long, long>, int> vertex_of;
   auto vertex = [&](const Vec3& p) {
-    const auto key = std::make_tuple(std::lround(p.x() * 1e6), std::lround(p.y() * 1e6), std::lround(p.z() * 1e6));
+    const auto key = std::make_tuple(std::lround(p.x() * 1e6), std::lround(p.y() * 1e6),
+                                     std::lround(p.z() * 1e6));
     auto it = vertex_of.find(key);
     if (it != vertex_of.end()) return it->second;
     const int id = static_cast<int>(vertex_of.size()) + 1;

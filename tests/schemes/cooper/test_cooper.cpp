@@ -80,7 +80,8 @@ double total_hex_volume(const mesh::MeshDB& db) {
 double min_scaled_jacobian(const mesh::MeshDB& db) {
   double m = 1;
   for (const auto& [id, vol] : db.volumes()) {
-    for (const auto& h : vol.hexes) m = std::min(m, testing::hex_scaled_jacobian(hex_points(db, h)));
+    for (const auto& h : vol.hexes)
+      m = std::min(m, testing::hex_scaled_jacobian(hex_points(db, h)));
   }
   return m;
 }
@@ -142,7 +143,8 @@ TEST(Cooper, PlateWithThreeSquareHolesSweepsExactly) {
   EXPECT_EQ(c.roles.scheme.at(c.source), "submap");
   const int layers = layers_along_z(model, r.mesh);
   ASSERT_GT(layers, 0);
-  EXPECT_EQ(r.mesh.hex_count(), r.mesh.surface(c.source).quads.size() * static_cast<size_t>(layers));
+  EXPECT_EQ(r.mesh.hex_count(),
+            r.mesh.surface(c.source).quads.size() * static_cast<size_t>(layers));
   EXPECT_EQ(r.mesh.surface(c.target).quads.size(), r.mesh.surface(c.source).quads.size());
   EXPECT_NEAR(total_hex_volume(r.mesh), 74.0, 74.0 * 1e-6);
   expect_conformal(r.mesh);
@@ -222,7 +224,8 @@ TEST(Cooper, DifferentlySizedCapsWithSlopedSide) {
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
-  EXPECT_GT(model.surface(c.source).area, model.surface(c.target).area);  // larger cap is the source
+  EXPECT_GT(model.surface(c.source).area,
+            model.surface(c.target).area);  // larger cap is the source
   expect_conformal(r.mesh);
   EXPECT_NEAR(total_hex_volume(r.mesh), 42.0, 42.0 * 1e-6);
   const double sj = min_scaled_jacobian(r.mesh);
@@ -259,8 +262,9 @@ TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
   const pipeline::MeshResult r0 = pipeline::mesh_model(m0, settings, *registry, kOptions);
   const pipeline::MeshResult r1 = pipeline::mesh_model(m1, settings, *registry, kOptions);
   ASSERT_EQ(r0.plan.volumes.at(1).scheme, "cooper");
-  EXPECT_EQ(plan_test::plan_with(m0, 1, *registry, SweepHints{{end_face}, {}, std::nullopt, {}}).source,
-            end_face);
+  EXPECT_EQ(
+      plan_test::plan_with(m0, 1, *registry, SweepHints{{end_face}, {}, std::nullopt, {}}).source,
+      end_face);
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
@@ -385,7 +389,8 @@ TEST(Cooper, HintsAreObeyedOrRejectedWithAReason) {
   set_hints({end_face}, {});
   const scheme::SurfaceRoles roles = cooper->roles(view);
   EXPECT_EQ(roles.at(end_face), "map");
-  const VolumePlan arc = plan_test::plan_with(model, 1, registry, SweepHints{{end_face}, {}, {}, {}});
+  const VolumePlan arc =
+      plan_test::plan_with(model, 1, registry, SweepHints{{end_face}, {}, {}, {}});
   ASSERT_TRUE(arc.ok) << arc.why;
   EXPECT_EQ(arc.source, end_face);
   EXPECT_EQ(roles.at(arc.target), scheme::kMeshedByVolume);

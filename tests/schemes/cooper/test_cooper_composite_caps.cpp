@@ -142,8 +142,8 @@ TEST(CooperCompositeCaps, TouchingBricksFlipSoTheCompositeIsTheSource) {
   const Summary s = check_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, 16.0 + 4.0, 20.0 * 1e-9);
   EXPECT_GE(s.min_sj, 0.99);
-  std::printf("[cooper composite] touching bricks: %zu hexes, min scaled Jacobian %.4f\n",
-              s.hexes, s.min_sj);
+  std::printf("[cooper composite] touching bricks: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
+              s.min_sj);
 }
 
 TEST(CooperCompositeCaps, HintsNamingTheSubcap) {

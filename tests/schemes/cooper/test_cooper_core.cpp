@@ -37,7 +37,8 @@ Tube make_tube(int m, int L, unsigned seed) {
   std::mt19937 rng(seed);
   std::shuffle(t.perm.begin(), t.perm.end(), rng);
   for (int j = 0; j < L; ++j) {
-    for (int r = 0; r < m; ++r) t.quads.push_back({t.id(r, j), t.id(r + 1, j), t.id(r + 1, j + 1), t.id(r, j + 1)});
+    for (int r = 0; r < m; ++r)
+      t.quads.push_back({t.id(r, j), t.id(r + 1, j), t.id(r + 1, j + 1), t.id(r, j + 1)});
   }
   return t;
 }
@@ -59,7 +60,8 @@ TEST(FormBarrels, RibsRunDownTheTubeOneLayerAtATime) {
   EXPECT_TRUE(b.all_ribs_on_stop_nodes);
   ASSERT_EQ(b.ribs.size(), 12u);
   for (int r = 0; r < 12; ++r) {
-    for (int j = 0; j <= 5; ++j) EXPECT_EQ(b.ribs[static_cast<size_t>(r)][static_cast<size_t>(j)], t.id(r, j));
+    for (int j = 0; j <= 5; ++j)
+      EXPECT_EQ(b.ribs[static_cast<size_t>(r)][static_cast<size_t>(j)], t.id(r, j));
   }
 }
 
@@ -160,11 +162,13 @@ SweepInput grid_barrel(int nx, int ny, int layers, double bend, bool triangles) 
   };
   in.layers = layers;
   for (int r = 0; r < in.boundary; ++r) {
-    for (int j = 0; j <= layers; ++j) in.ribs.push_back(place(in.source[static_cast<size_t>(r)], j));
+    for (int j = 0; j <= layers; ++j)
+      in.ribs.push_back(place(in.source[static_cast<size_t>(r)], j));
   }
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
-      const int a = index[{i, j}], b = index[{i + 1, j}], c = index[{i + 1, j + 1}], d = index[{i, j + 1}];
+      const int a = index[{i, j}], b = index[{i + 1, j}], c = index[{i + 1, j + 1}],
+                d = index[{i, j + 1}];
       if (triangles) {
         in.tris.push_back({a, b, c});
         in.tris.push_back({a, c, d});
@@ -182,7 +186,8 @@ double wedge_volume(const std::vector<Vec3>& x, const mesh::Wedge& w) {
     const Vec3& p = x[static_cast<size_t>(w[static_cast<size_t>(a)])];
     return (x[static_cast<size_t>(w[static_cast<size_t>(b)])] - p)
                .cross(x[static_cast<size_t>(w[static_cast<size_t>(c)])] - p)
-               .dot(x[static_cast<size_t>(w[static_cast<size_t>(d)])] - p) / 6.0;
+               .dot(x[static_cast<size_t>(w[static_cast<size_t>(d)])] - p) /
+           6.0;
   };
   return tet(0, 1, 2, 3) + tet(1, 2, 3, 4) + tet(2, 3, 4, 5);
 }
@@ -267,12 +272,12 @@ TEST(SweepBarrel, ASeamedFixedTargetIsSpreadOverTheTargetCap) {
   const SweepResult r = sweep_barrel(in);
   ASSERT_TRUE(r.ok) << r.why;
   EXPECT_TRUE(r.smoothed);
-  EXPECT_LT(blended, 0.0);  // inverted
+  EXPECT_LT(blended, 0.0);                        // inverted
   EXPECT_GT(r.min_scaled_jacobian, every_layer);  // 0.381 against 0.285
   EXPECT_GT(r.min_scaled_jacobian, 0.35);
   EXPECT_EQ(r.points[3 * n + seamed], Vec3(2.7, 3.7, 3));  // the seam is kept
-  std::printf("seamed target: blend %.3f, every layer smoothed %.3f, target smoothed %.3f\n", blended,
-              every_layer, r.min_scaled_jacobian);
+  std::printf("seamed target: blend %.3f, every layer smoothed %.3f, target smoothed %.3f\n",
+              blended, every_layer, r.min_scaled_jacobian);
 }
 
 TEST(SweepBarrel, InvertedPlacementIsNeverEmittedSilently) {

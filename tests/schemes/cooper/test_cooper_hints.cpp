@@ -56,7 +56,7 @@ std::string with_direction(const std::string& d) {
 
 // The cooper plan of volume 1 of a journal, with its hints.
 std::shared_ptr<const VolumePlan> plan_of_journal(const fs::path& path, geom::Model& model,
-                                                   std::unique_ptr<scheme::Registry>& registry) {
+                                                  std::unique_ptr<scheme::Registry>& registry) {
   const io::Job job = io::read_journal(path.string());
   model = pipeline::build_geometry(job);
   registry = std::make_unique<scheme::Registry>();
@@ -147,16 +147,21 @@ TEST(CooperHints, SourceAndTargetHintsAreHonouredOrRefusedNamingTheirLine) {
 // comment says (the sign: from the caps the sweep leaves).
 TEST(CooperHints, ExamplesSweepAlongTheAxisTheirCommentsSay) {
   const std::map<std::string, Vec3> axes = {
-      {"bracket_prism.xml", {0, 0, 1}},      {"blind_hole.xml", {0, 0, -1}},
-      {"stepped_shaft.xml", {0, 0, -1}},     {"flanged_hub.xml", {0, 0, -1}},
-      {"countersunk_hole.xml", {0, 0, -1}},  {"flush_step.xml", {0, 0, -1}},
-      {"self_intersecting_subcap.xml", {0, 0, 1}}, {"inclined_top.xml", {0, 0, 1}},
+      {"bracket_prism.xml", {0, 0, 1}},
+      {"blind_hole.xml", {0, 0, -1}},
+      {"stepped_shaft.xml", {0, 0, -1}},
+      {"flanged_hub.xml", {0, 0, -1}},
+      {"countersunk_hole.xml", {0, 0, -1}},
+      {"flush_step.xml", {0, 0, -1}},
+      {"self_intersecting_subcap.xml", {0, 0, 1}},
+      {"inclined_top.xml", {0, 0, 1}},
   };
   for (const auto& [file, axis] : axes) {
     SCOPED_TRACE(file);
     geom::Model model;
     std::unique_ptr<scheme::Registry> registry;
-    const auto p = plan_of_journal(fs::path(COOPERAGE_SOURCE_DIR) / "examples" / file, model, registry);
+    const auto p =
+        plan_of_journal(fs::path(COOPERAGE_SOURCE_DIR) / "examples" / file, model, registry);
     ASSERT_TRUE(p && p->ok) << (p ? p->why : "no plan");
     EXPECT_GT(sweep_direction(*p).dot(axis), 0.999) << describe_plan(*p);
   }
@@ -165,7 +170,8 @@ TEST(CooperHints, ExamplesSweepAlongTheAxisTheirCommentsSay) {
     SCOPED_TRACE(file);
     geom::Model model;
     std::unique_ptr<scheme::Registry> registry;
-    const auto p = plan_of_journal(fs::path(COOPERAGE_SOURCE_DIR) / "examples" / file, model, registry);
+    const auto p =
+        plan_of_journal(fs::path(COOPERAGE_SOURCE_DIR) / "examples" / file, model, registry);
     ASSERT_TRUE(p && p->ok) << (p ? p->why : "no plan");
     EXPECT_GT(std::abs(sweep_direction(*p).z()), 0.999) << describe_plan(*p);
   }

@@ -61,7 +61,8 @@ TEST(CooperJobs, OneInstanceServesJobsWithDifferentHintsAndElementKinds) {
 
   const pipeline::MeshResult a = pipeline::mesh_model(model, hexes_along_x, registry, options);
   const pipeline::MeshResult b = pipeline::mesh_model(model, wedges_along_z, registry, options);
-  const pipeline::MeshResult a_again = pipeline::mesh_model(model, hexes_along_x, registry, options);
+  const pipeline::MeshResult a_again =
+      pipeline::mesh_model(model, hexes_along_x, registry, options);
 
   // Job a: hexes, swept along x (2 x 4 x 6 at size 0.5), filling the brick.
   EXPECT_NEAR(std::abs(source_normal(model, a).x()), 1.0, 1e-9);
@@ -78,8 +79,10 @@ TEST(CooperJobs, OneInstanceServesJobsWithDifferentHintsAndElementKinds) {
 
   // At the same time, in two threads: the same meshes.
   pipeline::MeshResult a_parallel, b_parallel;
-  std::thread ta([&] { a_parallel = pipeline::mesh_model(model, hexes_along_x, registry, options); });
-  std::thread tb([&] { b_parallel = pipeline::mesh_model(model, wedges_along_z, registry, options); });
+  std::thread ta(
+      [&] { a_parallel = pipeline::mesh_model(model, hexes_along_x, registry, options); });
+  std::thread tb(
+      [&] { b_parallel = pipeline::mesh_model(model, wedges_along_z, registry, options); });
   ta.join();
   tb.join();
   expect_same_mesh(a.mesh, a_parallel.mesh, "hex job in parallel");

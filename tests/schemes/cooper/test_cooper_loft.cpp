@@ -69,7 +69,8 @@ TEST(CooperLoft, TwistedSweepKeepsGoodElementsAndTheVolume) {
   occ::Workbench bench;
   bench.loft("twist", {square(0.5, 0, 0), square(0.5, 3, 60)});
   const geom::Model model = bench.build_model();
-  const auto r = pipeline::mesh_model(model, cooper_pinned(0.1), registry(), selector::mesh_options());
+  const auto r =
+      pipeline::mesh_model(model, cooper_pinned(0.1), registry(), selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const Measures m = measure(r.mesh);
   EXPECT_GT(m.min_sj, 0.5);
@@ -84,7 +85,8 @@ TEST(CooperLoft, LoftBetweenDifferentlySizedCapsMeshes) {
   occ::Workbench bench;
   bench.loft("frustum", {square(1.0, 0, 0), square(0.5, 2, 0)});
   const geom::Model model = bench.build_model();
-  const auto r = pipeline::mesh_model(model, cooper_pinned(0.1), registry(), selector::mesh_options());
+  const auto r =
+      pipeline::mesh_model(model, cooper_pinned(0.1), registry(), selector::mesh_options());
   const Measures m = measure(r.mesh);
   EXPECT_GT(m.min_sj, 0.5);
   EXPECT_NEAR(m.volume, model.volume(1).volume, 1e-9 * model.volume(1).volume);

@@ -86,7 +86,8 @@ Summary expect_many_to_one(const geom::Model& model, const pipeline::MeshResult&
   const Summary s = check_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, exact, exact * 1e-6) << name;
   EXPECT_GE(s.min_sj, 0.3) << name;
-  ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian", std::to_string(s.min_sj));
+  ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian",
+                                  std::to_string(s.min_sj));
   ::testing::Test::RecordProperty(std::string(name) + "_hexes", std::to_string(s.hexes));
   std::printf("[cooper II] %s: %zu hexes, min scaled Jacobian %.4f\n", name, s.hexes, s.min_sj);
   return s;
@@ -126,7 +127,7 @@ TEST(CooperMany, SquareBossOnBrickTwoSourcesOneTarget) {
   const VolumePlan m = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(m.ok) << m.why;
   ASSERT_EQ(m.tree.barrels.size(), 2u);
-  EXPECT_EQ(m.roles.scheme.size(), 2u);  // boss top and shoulder
+  EXPECT_EQ(m.roles.scheme.size(), 2u);     // boss top and shoulder
   EXPECT_EQ(m.roles.by_volume.size(), 1u);  // the bottom
   ASSERT_TRUE(m.down.has_value());
   EXPECT_NEAR(m.down->z(), -1.0, 1e-9);  // down from the boss
@@ -137,7 +138,8 @@ TEST(CooperMany, SquareBossOnBrickTwoSourcesOneTarget) {
       registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
   ASSERT_TRUE(a.ok) << a.why;
   EXPECT_LT(a.score, 0.5);  // below every one-to-one score
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   expect_many_to_one(model, r, 33.0, "square_boss");
 }
 
@@ -151,8 +153,10 @@ TEST(CooperMany, TwoBossesOfDifferentHeightsAndAThroughHole) {
   ASSERT_TRUE(m.ok) << m.why;
   ASSERT_EQ(m.tree.barrels.size(), 3u);
   EXPECT_EQ(plan_test::end_barrels(m, m.tree.barrels.back().upper, true).size(), 2u);
-  EXPECT_EQ(plan_test::end_caps(m.tree.barrels.back().upper).size(), 1u);  // the shoulder with three holes
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  EXPECT_EQ(plan_test::end_caps(m.tree.barrels.back().upper).size(),
+            1u);  // the shoulder with three holes
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   expect_many_to_one(model, r, 67.0, "two_bosses_and_hole");
 }
 
@@ -166,7 +170,8 @@ TEST(CooperMany, StackedBossesChainThreeBarrels) {
   ASSERT_EQ(m.tree.barrels.size(), 3u);
   EXPECT_EQ(plan_test::end_barrels(m, m.tree.barrels[1].upper, true), std::vector<int>{0});
   EXPECT_EQ(plan_test::end_barrels(m, m.tree.barrels[2].upper, true), std::vector<int>{1});
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   expect_many_to_one(model, r, 21.0, "stacked_bosses");
 }
 
@@ -178,7 +183,8 @@ TEST(CooperMany, RoundBossOnCylinderWithPave) {
   const geom::Model model = wb.build_model();
   const auto registry = builtin();
   if (!registry->surface_scheme("pave")) GTEST_SKIP() << "pave is not registered";
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   const Summary s = check_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GT(s.min_sj, 0.2);
@@ -222,7 +228,8 @@ TEST(CooperMany, BarrelsDoNotDependOnTheFaceOrder) {
     EXPECT_EQ(describe_plan(m1), describe_plan(m0));
     ASSERT_EQ(m1.tree.barrels.size(), m0.tree.barrels.size());
     for (size_t b = 0; b < m0.tree.barrels.size(); ++b) {
-      EXPECT_EQ(plan_test::end_caps(m1.tree.barrels[b].upper), plan_test::end_caps(m0.tree.barrels[b].upper));
+      EXPECT_EQ(plan_test::end_caps(m1.tree.barrels[b].upper),
+                plan_test::end_caps(m0.tree.barrels[b].upper));
       EXPECT_EQ(m1.tree.barrels[b].sides, m0.tree.barrels[b].sides);
       EXPECT_EQ(plan_test::end_barrels(m1, m1.tree.barrels[b].upper, true),
                 plan_test::end_barrels(m0, m0.tree.barrels[b].upper, true));
@@ -336,7 +343,8 @@ TEST(CooperMany, StepFlushWithAnOuterWallSplitsTheWallAtTheShoulder) {
   // The step's barrel ends on a virtual cap beside the shoulder (Fig. 8d).
   EXPECT_EQ(plan_test::end_barrels(m, m.tree.barrels[1].upper, true), std::vector<int>{0});
   EXPECT_EQ(plan_test::end_caps(m.tree.barrels[1].upper).size(), 1u);
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   expect_many_to_one(model, r, 20.0, "flush_step");
 }
 
@@ -411,7 +419,8 @@ TEST(CooperMany, StepStraddlingOffLattice) {
   const geom::Model model = wb.build_model();
   const auto registry = with_polygon_mesher();
   const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
-  const Summary s = expect_many_to_one(model, r, model.volume(1).volume, "straddling_step_off_lattice");
+  const Summary s =
+      expect_many_to_one(model, r, model.volume(1).volume, "straddling_step_off_lattice");
   EXPECT_GE(s.min_sj, 0.5);
 }
 
@@ -431,7 +440,8 @@ TEST(CooperMany, RoundAppendagesOnTopAndBottom) {
   const Summary s = check_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GE(s.min_sj, 0.3);
-  std::printf("[cooper II] round_appendages: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
+  std::printf("[cooper II] round_appendages: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
+              s.min_sj);
 }
 
 // Fig. 3a-like: a block whose front half has a boss on top (sweep along z)
@@ -498,11 +508,12 @@ TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
     void (*build)(occ::Workbench&);
     unsigned seed;
   };
-  const std::vector<Case> cases = {{"cylinder_boss", cylinder_boss, 11},
-                                   {"two_bosses_and_hole", two_bosses_and_hole, 12},
-                                   {"appendages_top_and_bottom", appendages_top_and_bottom, 13},
-                                   {"straddling_step", straddling_step, 14},
-                                   {"straddling_step_off_lattice", straddling_step_off_lattice, 15}};
+  const std::vector<Case> cases = {
+      {"cylinder_boss", cylinder_boss, 11},
+      {"two_bosses_and_hole", two_bosses_and_hole, 12},
+      {"appendages_top_and_bottom", appendages_top_and_bottom, 13},
+      {"straddling_step", straddling_step, 14},
+      {"straddling_step_off_lattice", straddling_step_off_lattice, 15}};
   const auto registry = with_polygon_mesher(true);
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -520,8 +531,8 @@ TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
     EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
     const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
     EXPECT_LT(worst, 1e-7);
-    std::printf("[cooper II] %s moved (seed %u): %zu hexes, worst node distance %.2e\n", c.name, c.seed,
-                r0.mesh.volume(1).hexes.size(), worst);
+    std::printf("[cooper II] %s moved (seed %u): %zu hexes, worst node distance %.2e\n", c.name,
+                c.seed, r0.mesh.volume(1).hexes.size(), worst);
   }
 }
 
@@ -529,9 +540,9 @@ TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
 TEST(CooperMany, JournalsMeshThroughThePipeline) {
   const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
   const std::vector<std::pair<std::string, double>> journals = {
-      {"cooper_square_boss.xml", 33.0},        {"cooper_two_bosses_hole.xml", 67.0},
-      {"cooper_stacked_bosses.xml", 21.0},     {"cooper_appendages.xml", 52.875},
-      {"cooper_fig3a_webcut.xml", 34.0},      {"cooper_straddling_step.xml", 58.0}};
+      {"cooper_square_boss.xml", 33.0},    {"cooper_two_bosses_hole.xml", 67.0},
+      {"cooper_stacked_bosses.xml", 21.0}, {"cooper_appendages.xml", 52.875},
+      {"cooper_fig3a_webcut.xml", 34.0},   {"cooper_straddling_step.xml", 58.0}};
   const auto registry = with_polygon_mesher();
   for (const auto& [file, exact] : journals) {
     SCOPED_TRACE(file);
@@ -548,17 +559,17 @@ TEST(CooperMany, JournalsMeshThroughThePipeline) {
 TEST(CooperMany, ExampleCylinderBossMeshes) {
   const auto registry = builtin();
   if (!registry->surface_scheme("pave")) GTEST_SKIP() << "pave is not registered";
-  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/cylinder_boss.xml");
+  const io::Job job =
+      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) + "/examples/cylinder_boss.xml");
   const geom::Model model = pipeline::build_geometry(job);
   const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const Summary s = check_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GE(s.min_sj, 0.3);
-  std::printf("[cooper II] examples/cylinder_boss.xml: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
-              s.min_sj);
+  std::printf("[cooper II] examples/cylinder_boss.xml: %zu hexes, min scaled Jacobian %.4f\n",
+              s.hexes, s.min_sj);
 }
 
 }  // namespace
 }  // namespace cooperage::cooper
-

@@ -130,7 +130,8 @@ TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
     if (twin == apex.end()) continue;
     std::array<int, 4> q{c, e.first, twin->second, e.second};
     if (facing < 0) q = {q[3], q[2], q[1], q[0]};
-    EXPECT_LT(quad_sj_2d(r.mesh, q), kMixedMinQuadQuality) << "two cap triangles would make a good quad";
+    EXPECT_LT(quad_sj_2d(r.mesh, q), kMixedMinQuadQuality)
+        << "two cap triangles would make a good quad";
   }
   // The wedges are the cap triangles swept: all within 3 sizes of the tip edge.
   for (const auto& [id, v] : r.mesh.volumes()) {
@@ -154,9 +155,10 @@ TEST(CooperMixed, SharpCornerGetsWedgesTheRestHexes) {
   EXPECT_LE(s.min_wedge_sj, 2 / std::sqrt(3.0) * std::sin(kCorner) + 1e-6);
   ::testing::Test::RecordProperty("blade_mixed_min_scaled_jacobian", std::to_string(mixed_min));
   ::testing::Test::RecordProperty("blade_hex_min_scaled_jacobian", std::to_string(hs.min_hex_sj));
-  std::printf("[cooper mixed] blade: mixed %zu hexes + %zu wedges, min SJ hex %.4f wedge %.4f; "
-              "hex mode %zu hexes, min SJ %.4f\n",
-              s.hexes, s.wedges, s.min_hex_sj, s.min_wedge_sj, hs.hexes, hs.min_hex_sj);
+  std::printf(
+      "[cooper mixed] blade: mixed %zu hexes + %zu wedges, min SJ hex %.4f wedge %.4f; "
+      "hex mode %zu hexes, min SJ %.4f\n",
+      s.hexes, s.wedges, s.min_hex_sj, s.min_wedge_sj, hs.hexes, hs.min_hex_sj);
 }
 
 // Orientation insensitivity (Blacker 1996): the mixed mesh of a rigidly
@@ -206,9 +208,10 @@ TEST(CooperMixed, BladeWithAppendagesHasTrianglesOnlyAtTheTip) {
   EXPECT_LE(farthest, 3 * kSize);
   // The caps with the tip are imprinted, so cooper meshes them (in 2D), no surface scheme.
   for (const auto& [id, entry] : r.plan.surfaces) EXPECT_NE(entry.scheme, "quad_dominant") << id;
-  std::printf("[cooper mixed II] blade with appendages: %zu hexes + %zu wedges (within %.3f of the "
-              "tip), min SJ hex %.4f wedge %.4f\n",
-              s.hexes, s.wedges, farthest, s.min_hex_sj, s.min_wedge_sj);
+  std::printf(
+      "[cooper mixed II] blade with appendages: %zu hexes + %zu wedges (within %.3f of the "
+      "tip), min SJ hex %.4f wedge %.4f\n",
+      s.hexes, s.wedges, farthest, s.min_hex_sj, s.min_wedge_sj);
 }
 
 }  // namespace

@@ -44,7 +44,8 @@ io::MeshSettings sized(double size) {
 
 // Meshes `build` (shape "part", or several solids) and checks the mesh;
 // returns it for further checks.
-pipeline::MeshResult expect_must_mesh(const char* name, const Build& build, double size, size_t barrels = 0) {
+pipeline::MeshResult expect_must_mesh(const char* name, const Build& build, double size,
+                                      size_t barrels = 0) {
   occ::Workbench wb;
   build(wb);
   const geom::Model model = wb.build_model();
@@ -58,15 +59,19 @@ pipeline::MeshResult expect_must_mesh(const char* name, const Build& build, doub
       EXPECT_EQ(plan->tree.barrels.size(), barrels) << name << "\n" << describe_plan(*plan);
     }
   }
-  pipeline::MeshResult r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
+  pipeline::MeshResult r =
+      pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
   for (const auto& v : model.volumes()) EXPECT_EQ(r.plan.volumes.at(v.id).scheme, "cooper") << name;
   const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_EQ(r.mesh.wedge_count(), 0u) << name;
   EXPECT_GE(s.min_sj, 0.3) << name;
   EXPECT_NEAR(s.volume, solid, 0.005 * solid) << name;
-  std::printf("[cooper must mesh] %s: %zu hexes, min scaled Jacobian %.4f, volume %.5f of %.5f (%+.3f %%)\n", name,
-              s.hexes, s.min_sj, s.volume, solid, 100 * (s.volume - solid) / solid);
-  ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian", std::to_string(s.min_sj));
+  std::printf(
+      "[cooper must mesh] %s: %zu hexes, min scaled Jacobian %.4f, volume %.5f of %.5f (%+.3f "
+      "%%)\n",
+      name, s.hexes, s.min_sj, s.volume, solid, 100 * (s.volume - solid) / solid);
+  ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian",
+                                  std::to_string(s.min_sj));
   return r;
 }
 
@@ -82,10 +87,12 @@ void expect_rotation_invariant(const char* name, const Build& build, double size
   const auto r0 = pipeline::mesh_model(m0, sized(size), *registry, selector::mesh_options());
   const auto r1 = pipeline::mesh_model(m1, sized(size), *registry, selector::mesh_options());
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count()) << name;
-  for (const auto& v : m0.volumes()) EXPECT_EQ(r0.mesh.volume(v.id).hexes, r1.mesh.volume(v.id).hexes) << name;
+  for (const auto& v : m0.volumes())
+    EXPECT_EQ(r0.mesh.volume(v.id).hexes, r1.mesh.volume(v.id).hexes) << name;
   const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);
   EXPECT_LT(worst, 1e-7) << name;
-  std::printf("[cooper must mesh] %s moved (seed %u): worst node distance %.2e\n", name, seed, worst);
+  std::printf("[cooper must mesh] %s moved (seed %u): worst node distance %.2e\n", name, seed,
+              worst);
 }
 
 void check(const char* name, const Build& build, double size, unsigned seed, size_t barrels = 0) {
@@ -94,14 +101,22 @@ void check(const char* name, const Build& build, double size, unsigned seed, siz
 }
 
 TEST(CooperMustMesh, BlindHole) { check("blind_hole", blind_hole, 0.25, 101, 2); }
-TEST(CooperMustMesh, BlindHolesFromBothEnds) { check("blind_holes_both_ends", blind_holes_both_ends, 0.25, 102, 3); }
-TEST(CooperMustMesh, CoaxialBlindHolesFromBothEnds) { check("blind_holes_coaxial", blind_holes_coaxial, 0.25, 103, 3); }
+TEST(CooperMustMesh, BlindHolesFromBothEnds) {
+  check("blind_holes_both_ends", blind_holes_both_ends, 0.25, 102, 3);
+}
+TEST(CooperMustMesh, CoaxialBlindHolesFromBothEnds) {
+  check("blind_holes_coaxial", blind_holes_coaxial, 0.25, 103, 3);
+}
 TEST(CooperMustMesh, RectangularPocket) { check("pocket", pocket, 0.25, 104, 2); }
 TEST(CooperMustMesh, SteppedShaftWithABore) { check("stepped_shaft", stepped_shaft, 0.25, 105, 3); }
 TEST(CooperMustMesh, FlangedHub) { check("flanged_hub", flanged_hub, 0.25, 106, 2); }
-TEST(CooperMustMesh, FlangedHubWebcutAtTheShoulder) { check("flanged_hub_webcut", flanged_hub_webcut, 0.25, 107); }
+TEST(CooperMustMesh, FlangedHubWebcutAtTheShoulder) {
+  check("flanged_hub_webcut", flanged_hub_webcut, 0.25, 107);
+}
 TEST(CooperMustMesh, Fig1Part) { check("fig1_part", fig1_part, 0.25, 108); }
-TEST(CooperMustMesh, BossOverALargerFoot) { check("boss_over_larger_foot", boss_over_larger_foot, 0.25, 109, 3); }
+TEST(CooperMustMesh, BossOverALargerFoot) {
+  check("boss_over_larger_foot", boss_over_larger_foot, 0.25, 109, 3);
+}
 TEST(CooperMustMesh, RoundBossPartlyOverASquareFoot) {
   for (double k : {0.8, 1.0, 1.2}) {
     const std::string name = "round_over_square_" + std::to_string(k).substr(0, 3);
@@ -115,8 +130,12 @@ TEST(CooperMustMesh, SquareBossPartlyOverARoundFoot) {
   }
 }
 TEST(CooperMustMesh, CountersunkHole) { check("countersunk_hole", countersunk_hole, 0.25, 112, 1); }
-TEST(CooperMustMesh, InclinedTopWithABossAndAFoot) { check("inclined_top", inclined_top, 0.25, 113, 3); }
-TEST(CooperMustMesh, ElbowWithABossOnItsEndFace) { check("elbow_with_boss", elbow_with_boss, 0.25, 114, 2); }
+TEST(CooperMustMesh, InclinedTopWithABossAndAFoot) {
+  check("inclined_top", inclined_top, 0.25, 113, 3);
+}
+TEST(CooperMustMesh, ElbowWithABossOnItsEndFace) {
+  check("elbow_with_boss", elbow_with_boss, 0.25, 114, 2);
+}
 
 }  // namespace
 }  // namespace cooperage::cooper

@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 
 // Plans `model` with `settings`; when that succeeds, meshing must succeed
 // with no inverted element. Returns whether it planned.
-bool expect_parity(const geom::Model& model, const io::MeshSettings& settings, const std::string& name) {
+bool expect_parity(const geom::Model& model, const io::MeshSettings& settings,
+                   const std::string& name) {
   scheme::Registry registry;
   register_builtin_schemes(registry);
   selector::SelectOptions options;
@@ -51,14 +52,16 @@ bool expect_parity(const geom::Model& model, const io::MeshSettings& settings, c
 
 // The plan/mesh parity of a model, automatic and with cooper pinned on
 // each volume it accepts.
-void check_model(const geom::Model& model, const io::MeshSettings& settings, const std::string& name) {
+void check_model(const geom::Model& model, const io::MeshSettings& settings,
+                 const std::string& name) {
   const bool planned = expect_parity(model, settings, name);
   EXPECT_TRUE(planned || !settings.size) << name << ": a shipped model does not plan";
   scheme::Registry registry;
   register_builtin_schemes(registry);
   const scheme::Settings job = scheme::Settings::of(settings);
   for (const auto& v : model.volumes()) {
-    const auto a = registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, v.id, nullptr, &job});
+    const auto a = registry.volume_scheme("cooper")->applicable(
+        scheme::VolumeView{model, v.id, nullptr, &job});
     if (!a.ok) continue;
     // Already meshed by cooper in the automatic plan: nothing new to prove.
     if (planned && a.score > 0.3) {

@@ -112,14 +112,16 @@ TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
   EXPECT_GE(s.min_sj, 0.3);
   ::testing::Test::RecordProperty("hexes", std::to_string(s.hexes));
   ::testing::Test::RecordProperty("min_scaled_jacobian", std::to_string(s.min_sj));
-  std::printf("[cooper 5.5] flush boss and foot: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
+  std::printf("[cooper 5.5] flush boss and foot: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
+              s.min_sj);
   // The sec. 5.5 step ran: the barrel reports of the same sweep, replayed on
   // the meshed sides (cooper's own caps are meshed again, not read).
   const auto m = plan_test::scheme_plan(*reg, model, 1, &up);
   ASSERT_TRUE(m && m->ok);
   const Pave2D mesher;
   std::vector<BarrelReport> reports;
-  const scheme::EntityMesh replay = sweep_volume(scheme::VolumeView{model, 1, &r.mesh}, *m, &mesher, &reports);
+  const scheme::EntityMesh replay =
+      sweep_volume(scheme::VolumeView{model, 1, &r.mesh}, *m, &mesher, &reports);
   EXPECT_EQ(replay.hexes.size(), s.hexes);
   size_t self_intersections = 0;
   for (const BarrelReport& b : reports) {

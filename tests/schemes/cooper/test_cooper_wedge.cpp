@@ -116,8 +116,10 @@ void expect_conformal_wedges(const mesh::MeshDB& db) {
   }
   std::set<std::vector<int>> surface_tris, surface_quads;
   for (const auto& [id, s] : db.surfaces()) {
-    for (const auto& t : s.tris) EXPECT_TRUE(surface_tris.insert(key(t)).second) << "surface " << id;
-    for (const auto& q : s.quads) EXPECT_TRUE(surface_quads.insert(key(q)).second) << "surface " << id;
+    for (const auto& t : s.tris)
+      EXPECT_TRUE(surface_tris.insert(key(t)).second) << "surface " << id;
+    for (const auto& q : s.quads)
+      EXPECT_TRUE(surface_quads.insert(key(q)).second) << "surface " << id;
   }
   EXPECT_EQ(boundary_tris, surface_tris);
   EXPECT_EQ(boundary_quads, surface_quads);
@@ -251,13 +253,14 @@ TEST(CooperWedge, ApplicableBothWays) {
   const auto* cooper = registry.volume_scheme("cooper");
   const io::MeshSettings hex_job = wedge_settings(0.5, "cooper", io::ElementKind::Hex);
   const io::MeshSettings wedge_job = wedge_settings(0.5);
-  const scheme::Settings hex = scheme::Settings::of(hex_job), wedge = scheme::Settings::of(wedge_job);
+  const scheme::Settings hex = scheme::Settings::of(hex_job),
+                         wedge = scheme::Settings::of(wedge_job);
   EXPECT_TRUE(cooper->applicable({one, 1, nullptr, &hex}).ok);
   EXPECT_TRUE(cooper->applicable({one, 1, nullptr, &wedge}).ok);
   const scheme::SurfaceRoles roles = cooper->roles({one, 1, nullptr, &wedge});
-  EXPECT_EQ(std::count_if(roles.begin(), roles.end(),
-                          [](const auto& r) { return r.second == "tri"; }),
-            1);
+  EXPECT_EQ(
+      std::count_if(roles.begin(), roles.end(), [](const auto& r) { return r.second == "tri"; }),
+      1);
   const scheme::SurfaceRoles hex_roles = cooper->roles({one, 1, nullptr, &hex});
   EXPECT_EQ(std::count_if(hex_roles.begin(), hex_roles.end(),
                           [](const auto& r) { return r.second == "tri"; }),
@@ -288,11 +291,13 @@ TEST(CooperWedge, FlushStepsSweepInEveryElementKind) {
   wb.brick("foot", {0, 2, -1}, {4, 2, 1});
   wb.fuse("part", {"b", "boss", "foot"});
   const geom::Model model = wb.build_model();
-  for (io::ElementKind kind : {io::ElementKind::Hex, io::ElementKind::Wedge, io::ElementKind::Mixed}) {
+  for (io::ElementKind kind :
+       {io::ElementKind::Hex, io::ElementKind::Wedge, io::ElementKind::Mixed}) {
     io::MeshSettings settings = wedge_settings(0.5, "cooper", kind);
     settings.volumes.front().direction = Vec3(0, 0, 1);  // along the steps: flush
     const auto registry = registry_for(settings);
-    const scheme::Applicability a = registry->volume_scheme("cooper")->applicable({model, 1, nullptr});
+    const scheme::Applicability a =
+        registry->volume_scheme("cooper")->applicable({model, 1, nullptr});
     ASSERT_TRUE(a.ok) << a.why;
     const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
     const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, r.mesh);
@@ -305,8 +310,9 @@ TEST(CooperWedge, FlushStepsSweepInEveryElementKind) {
     if (kind == io::ElementKind::Hex) {
       EXPECT_EQ(m.wedges, 0u);
     }
-    std::printf("[cooper wedge] flush steps, kind %d: %zu hexes, %zu wedges, min SJ hex %.4f wedge %.4f\n",
-                static_cast<int>(kind), m.hexes, m.wedges, m.min_hex_sj, m.min_wedge_sj);
+    std::printf(
+        "[cooper wedge] flush steps, kind %d: %zu hexes, %zu wedges, min SJ hex %.4f wedge %.4f\n",
+        static_cast<int>(kind), m.hexes, m.wedges, m.min_hex_sj, m.min_wedge_sj);
   }
 }
 

@@ -49,7 +49,8 @@ int first_node(const mesh::SurfaceMeshData& s) {
 double cap_height(const geom::Model& model, const mesh::MeshDB& db, int id) {
   const auto& g = *model.surface(id).geometry;
   const Vec3 x = db.node(first_node(db.surface(id)));
-  if (g.type() != geom::SurfaceType::Plane || std::abs(std::abs(g.project(x).normal.z()) - 1) > 1e-9) {
+  if (g.type() != geom::SurfaceType::Plane ||
+      std::abs(std::abs(g.project(x).normal.z()) - 1) > 1e-9) {
     return -1e300;
   }
   return x.z();
@@ -69,7 +70,8 @@ int layers_between(const geom::Model& model, const mesh::MeshDB& db, double z0, 
     const Vec3 a = model.vertex(c.start_vertex).point;
     const Vec3 b = model.vertex(c.end_vertex).point;
     if ((a - b).head<2>().norm() > 1e-9) continue;
-    if (std::abs(std::min(a.z(), b.z()) - z0) < 1e-9 && std::abs(std::max(a.z(), b.z()) - z1) < 1e-9) {
+    if (std::abs(std::min(a.z(), b.z()) - z0) < 1e-9 &&
+        std::abs(std::max(a.z(), b.z()) - z1) < 1e-9) {
       return static_cast<int>(db.curve_nodes(c.id).size()) - 1;
     }
   }
@@ -102,8 +104,12 @@ void expect_two_stacks(const geom::Model& model, const pipeline::MeshResult& r, 
     wedges += v.wedges.size();
     hexes += v.hexes.size();
   }
-  EXPECT_EQ(wedges, T.tris.size() * static_cast<size_t>(lb + l) + S.tris.size() * static_cast<size_t>(l)) << name;
-  EXPECT_EQ(hexes, T.quads.size() * static_cast<size_t>(lb + l) + S.quads.size() * static_cast<size_t>(l)) << name;
+  EXPECT_EQ(wedges,
+            T.tris.size() * static_cast<size_t>(lb + l) + S.tris.size() * static_cast<size_t>(l))
+      << name;
+  EXPECT_EQ(hexes,
+            T.quads.size() * static_cast<size_t>(lb + l) + S.quads.size() * static_cast<size_t>(l))
+      << name;
   expect_quad_sides(model, r.mesh, name);
 }
 
@@ -159,9 +165,12 @@ TEST(CooperWedgeMany, CylinderWithBossSweepsWedges) {
   EXPECT_LT(s.volume, solid);
   EXPECT_GT(s.volume, 0.99 * solid);
   EXPECT_GE(s.min_wedge_sj, 0.5);
-  ::testing::Test::RecordProperty("cylinder_boss_min_wedge_scaled_jacobian", std::to_string(s.min_wedge_sj));
-  std::printf("[cooper wedge II] cylinder_boss: %zu wedges, min wedge SJ %.4f, volume %.6f "
-              "(faceted %.6f, solid %.6f)\n", s.wedges, s.min_wedge_sj, s.volume, faceted, solid);
+  ::testing::Test::RecordProperty("cylinder_boss_min_wedge_scaled_jacobian",
+                                  std::to_string(s.min_wedge_sj));
+  std::printf(
+      "[cooper wedge II] cylinder_boss: %zu wedges, min wedge SJ %.4f, volume %.6f "
+      "(faceted %.6f, solid %.6f)\n",
+      s.wedges, s.min_wedge_sj, s.volume, faceted, solid);
 }
 
 TEST(CooperWedgeMany, SquareBossOnBrickHasTheExactVolume) {
@@ -176,7 +185,8 @@ TEST(CooperWedgeMany, SquareBossOnBrickHasTheExactVolume) {
   EXPECT_EQ(s.hexes, 0u);
   EXPECT_NEAR(s.volume, 33.0, 33.0 * 1e-9);
   EXPECT_GE(s.min_wedge_sj, 0.5);
-  std::printf("[cooper wedge II] square_boss: %zu wedges, min wedge SJ %.4f\n", s.wedges, s.min_wedge_sj);
+  std::printf("[cooper wedge II] square_boss: %zu wedges, min wedge SJ %.4f\n", s.wedges,
+              s.min_wedge_sj);
 }
 
 // Appendages on top and bottom: both real caps of the middle barrel are
@@ -192,7 +202,8 @@ TEST(CooperWedgeMany, AppendagesOnTopAndBottomWithTriangleSubcaps) {
   EXPECT_NEAR(s.volume, 52.875, 52.875 * 1e-9);
   EXPECT_GT(s.min_wedge_sj, 0.3);
   expect_quad_sides(model, r.mesh, "appendages wedge");
-  std::printf("[cooper wedge II] appendages: %zu wedges, min wedge SJ %.4f\n", s.wedges, s.min_wedge_sj);
+  std::printf("[cooper wedge II] appendages: %zu wedges, min wedge SJ %.4f\n", s.wedges,
+              s.min_wedge_sj);
 }
 
 // Mixed mode on the same cylinder: the round caps (a disc and an annulus,
@@ -207,7 +218,8 @@ TEST(CooperWedgeMany, CylinderWithBossMixedNeedsNoTriangles) {
   const auto r = mesh(model, settings_for(0.25, io::ElementKind::Mixed));
   expect_two_stacks(model, r, 3.0, 1.5, "cylinder_boss mixed");
   for (const auto& [id, entry] : r.plan.surfaces) {
-    EXPECT_TRUE(entry.scheme != "tri" && entry.scheme != "pave") << "surface " << id << ": " << entry.scheme;
+    EXPECT_TRUE(entry.scheme != "tri" && entry.scheme != "pave")
+        << "surface " << id << ": " << entry.scheme;
   }
   const testing::MixedMeshSummary s = testing::check_mixed_mesh(model, r.mesh);
   EXPECT_GT(s.hexes, 0u);

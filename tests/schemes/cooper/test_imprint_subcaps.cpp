@@ -181,12 +181,14 @@ TEST(ImprintSubcaps, IntersectionOfAStepStraddlingTwoLowerRegions) {
 TEST(ImprintSubcaps, IntersectionPicksTheClosestEvenParityNode) {
   Hand h;
   h.exterior(rect(0, 0, 4, 2));
-  Subcap a{1, {{h.node(0, {1, 0}), h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {3, 1}),
-                h.node(0, {2.2, 1}), h.node(0, {1, 1})}}};
-  Subcap d{2, {{h.node(0, {0, 0}), h.node(0, {1, 0}), h.node(0, {1, 1}), h.node(0, {2.2, 1}),
-                h.node(0, {3, 1}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}),
-                h.node(0, {4, 2}), h.node(0, {3, 2}), h.node(0, {2, 2}), h.node(0, {1, 2}),
-                h.node(0, {0, 2}), h.node(0, {0, 1})}}};
+  Subcap a{1,
+           {{h.node(0, {1, 0}), h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {3, 1}),
+             h.node(0, {2.2, 1}), h.node(0, {1, 1})}}};
+  Subcap d{2,
+           {{h.node(0, {0, 0}), h.node(0, {1, 0}), h.node(0, {1, 1}), h.node(0, {2.2, 1}),
+             h.node(0, {3, 1}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}),
+             h.node(0, {4, 2}), h.node(0, {3, 2}), h.node(0, {2, 2}), h.node(0, {1, 2}),
+             h.node(0, {0, 2}), h.node(0, {0, 1})}}};
   h.ends.upper = {a, d};
   h.subcap(1, 3, {rect(0, 0, 2, 2)});
   h.subcap(1, 4, {rect(2, 0, 4, 2)});
@@ -229,9 +231,10 @@ TEST(ImprintSubcaps, SeamingClosesSmallCracksButNeverOnTheExterior) {
   // left: (0,0) -> (2,0) -> up the line -> (2,4) -> (0,4) -> down.
   left.loops[0] = {h.node(0, {0, 0}), h.node(0, {1, 0})};
   left.loops[0].insert(left.loops[0].end(), line.begin(), line.end());
-  for (Vec2 p : {Vec2(1, 4), Vec2(0, 4), Vec2(0, 3), Vec2(0, 2), Vec2(0, 1)}) left.loops[0].push_back(h.node(0, p));
-  right.loops[0] = {h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}), h.node(0, {4, 2}),
-                    h.node(0, {4, 3}), h.node(0, {4, 4}), h.node(0, {3, 4})};
+  for (Vec2 p : {Vec2(1, 4), Vec2(0, 4), Vec2(0, 3), Vec2(0, 2), Vec2(0, 1)})
+    left.loops[0].push_back(h.node(0, p));
+  right.loops[0] = {h.node(0, {2, 0}), h.node(0, {3, 0}), h.node(0, {4, 0}), h.node(0, {4, 1}),
+                    h.node(0, {4, 2}), h.node(0, {4, 3}), h.node(0, {4, 4}), h.node(0, {3, 4})};
   right.loops[0].insert(right.loops[0].end(), line.rbegin(), line.rend() - 1);
   h.ends.upper = {left, right};
   const ImprintResult r = imprint_subcaps(h.ends);
@@ -303,7 +306,8 @@ TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
 // the boss base touches the notch's image at one node and becomes a hole
 // through it (sec. 5.2); both orders of the subcaps give the partition.
 TEST(ImprintSubcaps, FeaturesTouchingAtACornerSplitTheOpposingCap) {
-  const std::vector<Vec2> notched = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 2}, {1, 2}, {1, 1}, {0, 1}};
+  const std::vector<Vec2> notched = {{0, 0}, {4, 0}, {4, 4}, {0, 4},
+                                     {0, 2}, {1, 2}, {1, 1}, {0, 1}};
   const std::vector<std::vector<std::vector<Vec2>>> upper = {
       {notched, hole(1, 2, 2, 3)},  // the remainder
       {rect(0, 1, 1, 2)},           // the notch, on the exterior
@@ -346,7 +350,8 @@ std::optional<std::pair<size_t, size_t>> brute_first_crossing(const std::vector<
       if ((k + 1) % n == i) continue;
       const int a0 = loop[i], a1 = loop[(i + 1) % n], b0 = loop[k], b1 = loop[(k + 1) % n];
       if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
-      if (detail::segment_hit(xy.at(a0), xy.at(a1), xy.at(b0), xy.at(b1))) return std::make_pair(i, k);
+      if (detail::segment_hit(xy.at(a0), xy.at(a1), xy.at(b0), xy.at(b1)))
+        return std::make_pair(i, k);
     }
   }
   return std::nullopt;

@@ -30,8 +30,8 @@ double area(const std::vector<Vec2>& l) {
 // A 4 x 4 square with a 2 x 2 notch at its top left, whose inner corner
 // (2, 2) is also the corner of a 1 x 1 square hole below and right of it.
 TEST(PinchedLoops, AnOuterLoopAndAHoleThroughOneNodeBecomeOneLoop) {
-  std::map<int, Vec2> xy = {{1, {0, 0}},  {2, {4, 0}},  {3, {4, 4}}, {4, {2, 4}},  {5, {2, 2}},
-                            {6, {0, 2}},  {7, {3, 2}},  {8, {3, 1}}, {9, {2, 1}}};
+  std::map<int, Vec2> xy = {{1, {0, 0}}, {2, {4, 0}}, {3, {4, 4}}, {4, {2, 4}}, {5, {2, 2}},
+                            {6, {0, 2}}, {7, {3, 2}}, {8, {3, 1}}, {9, {2, 1}}};
   const std::vector<std::vector<int>> loops = {{1, 2, 3, 4, 5, 6}, {5, 7, 8, 9}};  // hole clockwise
   const UnpinchedLoops u = unpinch_loops(loops, xy);
   EXPECT_EQ(u.pinches, 1);
@@ -70,8 +70,9 @@ TEST(PinchedLoops, LoopsThatDoNotTouchAreKept) {
 // The journal: plan and mesh all four volumes, all-hex and conformal, the
 // exact volume (planar faces only), no poor element.
 TEST(PinchedLoops, CornerTouchingBossesJournalMeshes) {
-  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
-                                       "/tests/schemes/cooper/data/cooper_corner_touching_bosses.xml");
+  const io::Job job =
+      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
+                       "/tests/schemes/cooper/data/cooper_corner_touching_bosses.xml");
   ASSERT_TRUE(job.mesh.has_value());
   const geom::Model model = pipeline::build_geometry(job);
   ASSERT_EQ(model.volumes().size(), 4u);
@@ -82,8 +83,9 @@ TEST(PinchedLoops, CornerTouchingBossesJournalMeshes) {
   const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, 52.875, 52.875 * 1e-9);
   EXPECT_GE(s.min_sj, 0.3);
-  std::printf("[pinched loops] cooper_corner_touching_bosses.xml: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
-              s.min_sj);
+  std::printf(
+      "[pinched loops] cooper_corner_touching_bosses.xml: %zu hexes, min scaled Jacobian %.4f\n",
+      s.hexes, s.min_sj);
 }
 
 }  // namespace

@@ -19,11 +19,11 @@
 namespace cooperage::cooper {
 namespace {
 
+using geom::Vec3;
 using testing::oriented;
 using testing::PolyFace;
 using testing::rect_xy;
 using testing::walls;
-using geom::Vec3;
 
 const Vec3 kUp(0, 0, 1), kDown(0, 0, -1);
 
@@ -38,7 +38,8 @@ std::vector<PolyFace> cube() {
 std::vector<PolyFace> boss_on_block() {
   std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
   f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
-  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 2), kUp, false)});
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), kUp),
+               oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 2), kUp, false)});
   for (const PolyFace& w : walls(1.5, 1.5, 2.5, 2.5, 2, 3)) f.push_back(w);
   f.push_back({oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 3), kUp)});
   return f;
@@ -48,7 +49,8 @@ std::vector<PolyFace> boss_on_block() {
 std::vector<PolyFace> pocket() {
   std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
   f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
-  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1, 1, 3, 3, 2), kUp, false)});
+  f.push_back(
+      {oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1, 1, 3, 3, 2), kUp, false)});
   for (const PolyFace& w : walls(1, 1, 3, 3, 1, 2, true)) f.push_back(w);
   f.push_back({oriented(rect_xy(1, 1, 3, 3, 1), kUp)});
   return f;
@@ -62,11 +64,13 @@ std::vector<PolyFace> stepped_l() {
   f.push_back({oriented({{0, 0, 0}, {4, 0, 0}, {4, 0, 2}, {0, 0, 2}}, Vec3(0, -1, 0))});  // front
   f.push_back({oriented({{0, 4, 0}, {4, 4, 0}, {4, 4, 1}, {0, 4, 1}}, Vec3(0, 1, 0))});   // back
   for (double x : {0.0, 4.0}) {
-    f.push_back({oriented({{x, 0, 0}, {x, 4, 0}, {x, 4, 1}, {x, 2, 1}, {x, 2, 2}, {x, 0, 2}}, Vec3(x > 0 ? 1 : -1, 0, 0))});
+    f.push_back({oriented({{x, 0, 0}, {x, 4, 0}, {x, 4, 1}, {x, 2, 1}, {x, 2, 2}, {x, 0, 2}},
+                          Vec3(x > 0 ? 1 : -1, 0, 0))});
   }
-  f.push_back({oriented(rect_xy(0, 2, 4, 4, 1), kUp)});                                    // shoulder
-  f.push_back({oriented({{0, 2, 1}, {4, 2, 1}, {4, 2, 2}, {0, 2, 2}}, Vec3(0, 1, 0))});   // step back
-  f.push_back({oriented(rect_xy(0, 0, 4, 2, 2), kUp)});                                    // step top
+  f.push_back({oriented(rect_xy(0, 2, 4, 4, 1), kUp)});  // shoulder
+  f.push_back(
+      {oriented({{0, 2, 1}, {4, 2, 1}, {4, 2, 2}, {0, 2, 2}}, Vec3(0, 1, 0))});  // step back
+  f.push_back({oriented(rect_xy(0, 0, 4, 2, 2), kUp)});                          // step top
   return f;
 }
 
@@ -116,7 +120,8 @@ TEST(PlanSteps, CubeIsOneBarrelOfTwoLevels) {
   EXPECT_EQ(s.lattice.chains.size(), 8u);  // each wall: its two vertical edges
   for (const CapContact& k : s.lattice.contacts) EXPECT_TRUE(k.convex);
   // Down from the top: the top is the upper cap, every chain runs down.
-  for (const auto& [cap, upper] : s.order.upper) EXPECT_EQ(upper, facts.face(cap)->normal.z() > 0) << cap;
+  for (const auto& [cap, upper] : s.order.upper)
+    EXPECT_EQ(upper, facts.face(cap)->normal.z() > 0) << cap;
   EXPECT_EQ(s.slabs.slabs.size(), 1u);
   ASSERT_EQ(s.tree.barrels.size(), 1u);
   EXPECT_EQ(s.tree.barrels[0].sides.size(), 4u);
@@ -181,8 +186,10 @@ TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
   EXPECT_EQ(s.tree.barrels[0].sides.size(), 8u);
   EXPECT_EQ(s.tree.barrels[1].sides.size(), 4u);
   const auto& upper = s.tree.barrels[1].upper;
-  EXPECT_TRUE(std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.cap == floor; }));
-  EXPECT_TRUE(std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.interface >= 0; }));
+  EXPECT_TRUE(
+      std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.cap == floor; }));
+  EXPECT_TRUE(
+      std::any_of(upper.begin(), upper.end(), [&](const EndPiece& e) { return e.interface >= 0; }));
   EXPECT_EQ(imprint_operation(s.tree.barrels[1]), "subtract");
   // The outer walls pass the floor's level without a vertex: barrel 2 has a
   // layer only if the walls' chains exceed the pocket walls' chains.

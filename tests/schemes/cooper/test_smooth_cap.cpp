@@ -51,9 +51,11 @@ TEST(SmoothCap, KeepsAPerfectGridAndRejectsWorsening) {
   Grid g;
   const std::vector<Vec3> original = g.points;
   smooth_cap(g.points, g.quads, g.movable, Vec3::UnitZ(), nullptr);
-  for (size_t i = 0; i < g.points.size(); ++i) EXPECT_NEAR((g.points[i] - original[i]).norm(), 0, 1e-12);
+  for (size_t i = 0; i < g.points.size(); ++i)
+    EXPECT_NEAR((g.points[i] - original[i]).norm(), 0, 1e-12);
   EXPECT_NEAR(min_quad_corner_quality(g.points, g.quads, Vec3::UnitZ()), 1.0, 1e-12);
-  EXPECT_LT(min_quad_corner_quality(g.points, g.quads, -Vec3::UnitZ()), 0.0);  // seen from below: inverted
+  EXPECT_LT(min_quad_corner_quality(g.points, g.quads, -Vec3::UnitZ()),
+            0.0);  // seen from below: inverted
 }
 
 }  // namespace

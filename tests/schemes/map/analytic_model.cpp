@@ -29,13 +29,9 @@ CircleArc::CircleArc(Vec3 center, Vec3 axis, Vec3 x_dir, double radius, double t
   y_ = z_.cross(x_);
 }
 
-Vec3 CircleArc::point(double t) const {
-  return c_ + r_ * (std::cos(t) * x_ + std::sin(t) * y_);
-}
+Vec3 CircleArc::point(double t) const { return c_ + r_ * (std::cos(t) * x_ + std::sin(t) * y_); }
 
-Vec3 CircleArc::tangent(double t) const {
-  return r_ * (-std::sin(t) * x_ + std::cos(t) * y_);
-}
+Vec3 CircleArc::tangent(double t) const { return r_ * (-std::sin(t) * x_ + std::cos(t) * y_); }
 
 double CircleArc::closest_parameter(const Vec3& p) const {
   const Vec3 d = p - c_;
@@ -136,8 +132,8 @@ int ModelBuilder::circle(int v, const Vec3& center, const Vec3& axis) {
   geom::Curve c;
   c.start_vertex = v;
   c.end_vertex = v;
-  c.geometry = std::make_shared<CircleArc>(center + d.dot(z) * z, z, radial, radial.norm(), 0.0,
-                                           kTwoPi);
+  c.geometry =
+      std::make_shared<CircleArc>(center + d.dot(z) * z, z, radial, radial.norm(), 0.0, kTwoPi);
   return model_.add_curve(std::move(c));
 }
 
@@ -161,7 +157,8 @@ int ModelBuilder::surface(std::shared_ptr<const geom::SurfaceGeometry> geometry,
   return model_.add_surface(std::move(s));
 }
 
-int ModelBuilder::planar(const std::vector<int>& outer, const std::vector<std::vector<int>>& holes) {
+int ModelBuilder::planar(const std::vector<int>& outer,
+                         const std::vector<std::vector<int>>& holes) {
   Vec3 n = Vec3::Zero();
   for (size_t k = 0; k < outer.size(); ++k) {
     const Vec3& p = model_.vertex(outer[k]).point;
@@ -212,10 +209,12 @@ geom::Model ModelBuilder::finish() {
     std::sort(model_.mutable_vertex(v.id).curves.begin(), model_.mutable_vertex(v.id).curves.end());
   }
   for (const auto& c : model_.curves()) {
-    std::sort(model_.mutable_curve(c.id).surfaces.begin(), model_.mutable_curve(c.id).surfaces.end());
+    std::sort(model_.mutable_curve(c.id).surfaces.begin(),
+              model_.mutable_curve(c.id).surfaces.end());
   }
   for (const auto& v : model_.volumes()) {
-    for (int s : model_.surfaces_of(v.id)) model_.mutable_volume(v.id).box.add(model_.surface(s).box);
+    for (int s : model_.surfaces_of(v.id))
+      model_.mutable_volume(v.id).box.add(model_.surface(s).box);
   }
   model_.validate();
   return std::move(model_);
@@ -234,8 +233,8 @@ geom::Model rectangle_model(double a, double b) {
 geom::Model l_shape_model() {
   ModelBuilder m;
   std::vector<int> v;
-  for (const auto& p : {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0),
-                        Vec3(0, 2, 0)}) {
+  for (const auto& p :
+       {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0)}) {
     v.push_back(m.vertex(p));
   }
   m.planar(v);

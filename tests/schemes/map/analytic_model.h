@@ -57,9 +57,7 @@ class PlaneSurface final : public geom::SurfaceGeometry {
   geom::SurfaceProjection project(const Vec3& p) const override;
   Vec3 point(const Vec2& uv) const override { return o_ + uv.x() * x_ + uv.y() * y_; }
   Vec3 normal(const Vec2&) const override { return n_; }
-  std::pair<Vec2, Vec2> uv_bounds() const override {
-    return {Vec2(-1e6, 1e6), Vec2(-1e6, 1e6)};
-  }
+  std::pair<Vec2, Vec2> uv_bounds() const override { return {Vec2(-1e6, 1e6), Vec2(-1e6, 1e6)}; }
 
  private:
   Vec3 o_, n_, x_, y_;

@@ -16,9 +16,8 @@ void mesh_curves(const geom::Model& model, mesh::MeshDB& db, double size,
   }
   for (const auto& c : model.curves()) {
     auto it = counts.find(c.id);
-    const int n = it != counts.end()
-                      ? it->second
-                      : std::max(1, static_cast<int>(std::lround(c.length / size)));
+    const int n = it != counts.end() ? it->second
+                                     : std::max(1, static_cast<int>(std::lround(c.length / size)));
     std::vector<int> chain{db.vertex_node(c.start_vertex)};
     for (int k = 1; k < n; ++k) {
       const double t = c.geometry->parameter_at_length(c.length * k / n);
@@ -46,8 +45,8 @@ void commit_surface(mesh::MeshDB& db, int surface_id, const scheme::EntityMesh& 
                        g[static_cast<size_t>(q[2])], g[static_cast<size_t>(q[3])]});
   }
   for (const auto& t : em.tris) {
-    s.tris.push_back({g[static_cast<size_t>(t[0])], g[static_cast<size_t>(t[1])],
-                      g[static_cast<size_t>(t[2])]});
+    s.tris.push_back(
+        {g[static_cast<size_t>(t[0])], g[static_cast<size_t>(t[1])], g[static_cast<size_t>(t[2])]});
   }
 }
 
@@ -72,7 +71,8 @@ double hex_volume(const std::array<Vec3, 8>& x) {
   static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
                                        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   auto tri = [&](int a, int b, int c) {
-    return x[static_cast<size_t>(a)].dot(x[static_cast<size_t>(b)].cross(x[static_cast<size_t>(c)]));
+    return x[static_cast<size_t>(a)].dot(
+        x[static_cast<size_t>(b)].cross(x[static_cast<size_t>(c)]));
   };
   double v = 0.0;
   for (const auto& f : kFaces) {

@@ -43,7 +43,8 @@ double min_node_distance(const mesh::MeshDB& db) {
   });
   double best = 1e300;
   for (size_t i = 0; i < p.size(); ++i) {
-    for (size_t j = i + 1; j < p.size() && j < i + 64; ++j) best = std::min(best, (p[i] - p[j]).norm());
+    for (size_t j = i + 1; j < p.size() && j < i + 64; ++j)
+      best = std::min(best, (p[i] - p[j]).norm());
   }
   return best;
 }
@@ -150,7 +151,8 @@ TEST(SurfaceMapMesh, Rectangle4x6) {
   EXPECT_EQ(boundary.size(), curve_nodes);
   EXPECT_EQ(em.global.size(), curve_nodes + 15);
   commit_surface(db, 1, em);
-  for (size_t n = 0; n < db.node_count(); ++n) EXPECT_NEAR(db.node(static_cast<int>(n)).z(), 0.0, 1e-12);
+  for (size_t n = 0; n < db.node_count(); ++n)
+    EXPECT_NEAR(db.node(static_cast<int>(n)).z(), 0.0, 1e-12);
   for (const auto& q : db.surface(1).quads) {
     EXPECT_NEAR(testing::quad_scaled_jacobian(db, q, Vec3::UnitZ()), 1.0, 1e-12);
   }
@@ -376,9 +378,9 @@ geom::Model permuted_brick(const std::array<int, 8>& order) {
 }
 
 TEST(VolumeMapMesh, EitherHandednessGivesPositiveHexes) {
-  for (const auto& order : {std::array<int, 8>{0, 1, 2, 3, 4, 5, 6, 7},
-                            std::array<int, 8>{0, 3, 2, 1, 4, 5, 6, 7},
-                            std::array<int, 8>{6, 2, 5, 7, 0, 1, 3, 4}}) {
+  for (const auto& order :
+       {std::array<int, 8>{0, 1, 2, 3, 4, 5, 6, 7}, std::array<int, 8>{0, 3, 2, 1, 4, 5, 6, 7},
+        std::array<int, 8>{6, 2, 5, 7, 0, 1, 3, 4}}) {
     for (const double size : {10.0, 0.5}) {
       const geom::Model model = permuted_brick(order);
       mesh::MeshDB db;

@@ -45,7 +45,8 @@ std::set<int> coarse_nodes(const std::vector<int>& loop, const std::vector<size_
 /// Coarse edges over a single fine edge.
 int odd_edge_count(size_t n, const std::vector<size_t>& picks) {
   int odd = 0;
-  for (size_t j = 0; j < picks.size(); ++j) odd += (picks[(j + 1) % picks.size()] + n - picks[j]) % n == 1;
+  for (size_t j = 0; j < picks.size(); ++j)
+    odd += (picks[(j + 1) % picks.size()] + n - picks[j]) % n == 1;
   return odd;
 }
 
@@ -56,7 +57,7 @@ TEST(PaveCornerPicks, RectangleWithOddSidesHasAllFourCornersAsCoarseVertices) {
   const std::vector<size_t> picks = loop_picks(P, L, 0, kCorner);
   const std::set<int> coarse = coarse_nodes(L, picks);
   for (int corner : {0, 5, 8, 13}) EXPECT_TRUE(coarse.count(corner)) << "corner " << corner;
-  EXPECT_EQ(odd_edge_count(P.size(), picks), 4);  // one per odd side
+  EXPECT_EQ(odd_edge_count(P.size(), picks), 4);                 // one per odd side
   EXPECT_DOUBLE_EQ(skipped_quality_of_picks(P, L, picks), 1.0);  // only straight nodes skipped
   // Without switching: one parity, two corners skipped.
   EXPECT_NEAR(skipped_quality_of_picks(P, L, loop_picks(P, L, 0, 0.0)), std::sqrt(0.5), 1e-9);
@@ -78,18 +79,21 @@ TEST(PaveCornerPicks, OddLoopAndEvenSidesKeepFewOddEdges) {
     const V2 c[4] = {{0, 0}, {1, 0}, {1, 0.7}, {0, 0.7}};
     const int n[4] = {7, 4, 7, 5};
     for (int s = 0; s < 4; ++s)
-      for (int i = 0; i < n[s]; ++i) q.push_back(c[s] + (c[(s + 1) % 4] - c[s]) * (double(i) / n[s]));
+      for (int i = 0; i < n[s]; ++i)
+        q.push_back(c[s] + (c[(s + 1) % 4] - c[s]) * (double(i) / n[s]));
     return q;
   }();
   const std::vector<int> M = iota_loop(Q.size());
   const std::vector<size_t> odd_picks = loop_picks(Q, M, 0, kCorner);
-  for (int corner : {0, 7, 11, 18}) EXPECT_TRUE(coarse_nodes(M, odd_picks).count(corner)) << "corner " << corner;
+  for (int corner : {0, 7, 11, 18})
+    EXPECT_TRUE(coarse_nodes(M, odd_picks).count(corner)) << "corner " << corner;
   EXPECT_EQ(odd_edge_count(Q.size(), odd_picks), 3);
 }
 
 TEST(PaveCornerPicks, SameCoarseNodesWhateverTheStartingNode) {
   const std::vector<V2> P = rectangle(5, 3);
-  const std::set<int> reference = coarse_nodes(iota_loop(P.size()), loop_picks(P, iota_loop(P.size()), 0, kCorner));
+  const std::set<int> reference =
+      coarse_nodes(iota_loop(P.size()), loop_picks(P, iota_loop(P.size()), 0, kCorner));
   for (size_t start = 1; start < P.size(); ++start) {
     const std::vector<int> L = iota_loop(P.size(), start);
     EXPECT_EQ(coarse_nodes(L, loop_picks(P, L, 0, kCorner)), reference) << "start " << start;

@@ -34,7 +34,8 @@ std::vector<V2> square_loop(int per_side, double side) {
   std::vector<V2> pts;
   const V2 corners[4] = {{0, 0}, {side, 0}, {side, side}, {0, side}};
   for (int s = 0; s < 4; ++s) {
-    for (int i = 0; i < per_side; ++i) pts.push_back(corners[s] + (corners[(s + 1) % 4] - corners[s]) * (double(i) / per_side));
+    for (int i = 0; i < per_side; ++i)
+      pts.push_back(corners[s] + (corners[(s + 1) % 4] - corners[s]) * (double(i) / per_side));
   }
   return pts;
 }
@@ -54,12 +55,14 @@ TEST(PaveFrontalFill, SquareAtItsSpacingBecomesTheLattice) {
       const double i = p.x() / h, j = p.y() / h;
       EXPECT_NEAR(i, std::round(i), 1e-9) << p.transpose();
       EXPECT_NEAR(j, std::round(j), 1e-9) << p.transpose();
-      EXPECT_TRUE(seen.insert({std::lround(i), std::lround(j)}).second) << "duplicate " << p.transpose();
+      EXPECT_TRUE(seen.insert({std::lround(i), std::lround(j)}).second)
+          << "duplicate " << p.transpose();
     }
     EXPECT_EQ(t.points.size(), static_cast<size_t>((n + 1) * (n + 1)));
     // Hence two right isosceles triangles per lattice cell.
     ASSERT_EQ(t.tris.size(), static_cast<size_t>(2 * n * n));
-    for (const auto& tr : t.tris) EXPECT_NEAR(area2(t.points[tr[0]], t.points[tr[1]], t.points[tr[2]]), h * h, 1e-12);
+    for (const auto& tr : t.tris)
+      EXPECT_NEAR(area2(t.points[tr[0]], t.points[tr[1]], t.points[tr[2]]), h * h, 1e-12);
   }
 }
 

@@ -22,21 +22,37 @@ struct NamedFace {
 std::vector<NamedFace> benchmark_faces() {
   std::vector<NamedFace> f;
   f.push_back({"square", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {10, 10, 10, 10})}, true});
-  f.push_back({"square, odd sides", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {7, 7, 7, 7})}, true});
+  f.push_back(
+      {"square, odd sides", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {7, 7, 7, 7})}, true});
   f.push_back({"disk", {circle({0, 0}, 1, 40)}, true});
   f.push_back({"annulus", {circle({0, 0}, 2, 48), circle({0, 0}, 1, 24, true)}, true});
-  f.push_back({"plate with three holes",
-               {polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 12, 24, 12}), circle({1, 1}, 0.4, 16, true),
-                circle({2.2, 1}, 0.3, 12, true), circle({3.2, 0.8}, 0.25, 4, true)},
+  f.push_back(
+      {"plate with three holes",
+       {polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 12, 24, 12}), circle({1, 1}, 0.4, 16, true),
+        circle({2.2, 1}, 0.3, 12, true), circle({3.2, 0.8}, 0.25, 4, true)},
+       true});
+  f.push_back({"L-shape",
+               {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})},
                true});
-  f.push_back({"L-shape", {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})}, true});
   f.push_back({"narrow neck",
-               {polygon({{0, 0}, {1, 0}, {1, 0.45}, {2, 0.45}, {2, 0}, {3, 0}, {3, 1}, {2, 1}, {2, 0.55}, {1, 0.55},
-                         {1, 1}, {0, 1}},
+               {polygon({{0, 0},
+                         {1, 0},
+                         {1, 0.45},
+                         {2, 0.45},
+                         {2, 0},
+                         {3, 0},
+                         {3, 1},
+                         {2, 1},
+                         {2, 0.55},
+                         {1, 0.55},
+                         {1, 1},
+                         {0, 1}},
                         {10, 5, 10, 5, 10, 10, 10, 5, 10, 5, 10, 10})},
                false});
-  f.push_back({"spacing 1:8", {polygon({{-4, -4}, {4, -4}, {4, 4}, {-4, 4}}, {8, 8, 8, 8}), circle({0, 0}, 1, 50, true)},
-               false});
+  f.push_back(
+      {"spacing 1:8",
+       {polygon({{-4, -4}, {4, -4}, {4, 4}, {-4, 4}}, {8, 8, 8, 8}), circle({0, 0}, 1, 50, true)},
+       false});
   return f;
 }
 
@@ -70,7 +86,9 @@ TEST(Pave2D, UniformlySpacedSquareAndLGiveTheStructuredGrid) {
   const std::vector<Case> cases{
       {"square 10", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {10, 10, 10, 10})}, 100},
       {"square 40", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {40, 40, 40, 40})}, 1600},
-      {"L", {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})}, 108}};
+      {"L",
+       {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})},
+       108}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const QuadMesh2D m = pave_2d(c.loops);
@@ -156,13 +174,15 @@ TEST(Pave2D, OddBoundaryCountIsRejected) {
 
 TEST(Pave2D, OddLoopsWithAnEvenTotalAreMeshed) {
   const Loops two{circle({0, 0}, 2, 47), circle({0, 0}, 1, 23, true)};
-  const Loops four{polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 11, 24, 12}), circle({1, 1}, 0.4, 15, true),
-                   circle({2.2, 1}, 0.3, 11, true), circle({3.2, 0.8}, 0.25, 5, true)};
+  const Loops four{polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 11, 24, 12}),
+                   circle({1, 1}, 0.4, 15, true), circle({2.2, 1}, 0.3, 11, true),
+                   circle({3.2, 0.8}, 0.25, 5, true)};
   for (const Loops& loops : {two, four}) {
     const QuadMesh2D m = pave_2d(loops);
     EXPECT_EQ(check_mesh(loops, m), "");
     const Stats s = stats(m);
-    std::printf("odd loops (%zu): %d quads, min SJ %.3f, median %.3f\n", loops.size(), s.quads, s.min_sj, s.median_sj);
+    std::printf("odd loops (%zu): %d quads, min SJ %.3f, median %.3f\n", loops.size(), s.quads,
+                s.min_sj, s.median_sj);
     EXPECT_GT(s.min_sj, 0.3);
     EXPECT_GT(s.median_sj, 0.8);
   }
@@ -170,10 +190,12 @@ TEST(Pave2D, OddLoopsWithAnEvenTotalAreMeshed) {
 
 TEST(Pave2D, BadLoopsAreRejected) {
   EXPECT_THROW(pave_2d({}), MeshingError);
-  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12, true)}), MeshingError);           // outer clockwise
-  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({0, 0}, 0.5, 8)}), MeshingError);  // hole counter-clockwise
-  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({3, 0}, 0.5, 8, true)}), MeshingError);  // hole outside
-  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 2)}), MeshingError);                  // too few nodes
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12, true)}), MeshingError);  // outer clockwise
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({0, 0}, 0.5, 8)}),
+               MeshingError);  // hole counter-clockwise
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 12), circle({3, 0}, 0.5, 8, true)}),
+               MeshingError);                                   // hole outside
+  EXPECT_THROW(pave_2d({circle({0, 0}, 1, 2)}), MeshingError);  // too few nodes
 }
 
 TEST(Pave2D, StatsAreFilledWhenAskedAndDoNotChangeTheMesh) {
@@ -190,8 +212,8 @@ TEST(Pave2D, StatsAreFilledWhenAskedAndDoNotChangeTheMesh) {
   EXPECT_LE(stats.attempts, 2);
   EXPECT_TRUE(stats.kept == 0 || stats.kept == 1);
   EXPECT_GT(stats.sweeps, 0);
-  for (double t : {stats.boundary, stats.triangulate, stats.recombine, stats.split, stats.cleanup, stats.smooth,
-                   stats.check}) {
+  for (double t : {stats.boundary, stats.triangulate, stats.recombine, stats.split, stats.cleanup,
+                   stats.smooth, stats.check}) {
     EXPECT_GE(t, 0.0);
   }
 }
@@ -203,7 +225,8 @@ TEST(Pave2D, ThroughputIsPrinted) {
     const auto t0 = std::chrono::steady_clock::now();
     const QuadMesh2D m = pave_2d(big);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("throughput: %zu quads in %.3f s (%.0f quads/s)\n", m.quads.size(), dt, m.quads.size() / dt);
+    std::printf("throughput: %zu quads in %.3f s (%.0f quads/s)\n", m.quads.size(), dt,
+                m.quads.size() / dt);
     EXPECT_EQ(check_mesh(big, m), "");
   }
 }

@@ -27,7 +27,8 @@ CdtInput square_input(int per_side, double size, bool refine) {
   for (int s = 0; s < 4; ++s) {
     for (int i = 0; i < per_side; ++i) {
       loop.push_back(static_cast<int>(in.points.size()));
-      in.points.push_back(corners[s] + (corners[(s + 1) % 4] - corners[s]) * (double(i) / per_side));
+      in.points.push_back(corners[s] +
+                          (corners[(s + 1) % 4] - corners[s]) * (double(i) / per_side));
       in.sizes.push_back(size);
     }
   }
@@ -46,7 +47,8 @@ TEST(PaveCdt, BoundaryOnlyTriangulationHasNMinus2TrianglesAndAllLoopEdges) {
     for (int k = 0; k < 3; ++k) edges.insert({tr[k], tr[(k + 1) % 3]});
   }
   const auto& loop = in.loops[0];
-  for (size_t k = 0; k < loop.size(); ++k) EXPECT_TRUE(edges.count({loop[k], loop[(k + 1) % loop.size()]}));
+  for (size_t k = 0; k < loop.size(); ++k)
+    EXPECT_TRUE(edges.count({loop[k], loop[(k + 1) % loop.size()]}));
 }
 
 TEST(PaveCdt, RefinementFillsTheDomainAtTheLocalSize) {
@@ -116,7 +118,8 @@ TEST(PaveCleanup, DiamondIsCollapsed) {
   quads.push_back({id(1, 2), a, id(3, 2), c});
   std::vector<char> fixed(pts.size(), 0);
   for (int j = 0; j < 5; ++j) {
-    for (int i = 0; i < 5; ++i) fixed[static_cast<size_t>(id(i, j))] = i == 0 || j == 0 || i == 4 || j == 4;
+    for (int i = 0; i < 5; ++i)
+      fixed[static_cast<size_t>(id(i, j))] = i == 0 || j == 0 || i == 4 || j == 4;
   }
   for (const Quad& q : quads) ASSERT_GT(scaled_jacobian_2d(pts, q), 0);
   EXPECT_EQ(collapse_diamonds(pts, quads, fixed), 1);
@@ -137,7 +140,8 @@ TEST(PaveSmooth, UntanglesAndNeverMovesFixedNodes) {
   pts[10] = V2(1.1, 1.3);
   std::vector<Quad> quads;
   for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) quads.push_back({j * 4 + i, j * 4 + i + 1, j * 4 + i + 5, j * 4 + i + 4});
+    for (int i = 0; i < 3; ++i)
+      quads.push_back({j * 4 + i, j * 4 + i + 1, j * 4 + i + 5, j * 4 + i + 4});
   }
   std::vector<char> fixed(16, 1);
   fixed[5] = fixed[6] = fixed[9] = fixed[10] = 0;
@@ -165,8 +169,10 @@ TEST(PaveSpatialOrder, HilbertIndexVisitsEveryCellOnceThroughNeighbours) {
     }
     EXPECT_EQ(cell_at.front(), std::make_pair(0, 0));
     for (size_t d = 1; d < cell_at.size(); ++d) {
-      const int step = std::abs(cell_at[d].first - cell_at[d - 1].first) + std::abs(cell_at[d].second - cell_at[d - 1].second);
-      EXPECT_EQ(step, 1) << "cells " << d - 1 << " and " << d << " are not neighbours (bits " << bits << ")";
+      const int step = std::abs(cell_at[d].first - cell_at[d - 1].first) +
+                       std::abs(cell_at[d].second - cell_at[d - 1].second);
+      EXPECT_EQ(step, 1) << "cells " << d - 1 << " and " << d << " are not neighbours (bits "
+                         << bits << ")";
     }
   }
 }
@@ -179,7 +185,8 @@ TEST(PaveCdt, OutputIsInHilbertOrderAndKeepsTheLoopPoints) {
   Eigen::AlignedBox2d box;
   for (const V2& p : in.points) box.extend(p);
   const HilbertKeys key(box);
-  for (size_t i = in.points.size() + 1; i < t.points.size(); ++i) EXPECT_LE(key(t.points[i - 1]), key(t.points[i]));
+  for (size_t i = in.points.size() + 1; i < t.points.size(); ++i)
+    EXPECT_LE(key(t.points[i - 1]), key(t.points[i]));
   int previous_lowest = -1;
   for (const auto& tri : t.tris) {
     const int lowest = std::min({tri[0], tri[1], tri[2]});

@@ -18,7 +18,8 @@ TEST(Pave2DRandom, TwoHundredFacesMeshAllQuadWithoutInversion) {
   // COOPERAGE_PAVE_RANDOM_FACES=<n> runs a longer campaign;
   // COOPERAGE_PAVE_RANDOM_FIRST=<seed> starts it elsewhere (to rerun a seed).
   const char* first = std::getenv("COOPERAGE_PAVE_RANDOM_FIRST");
-  const unsigned first_seed = first ? static_cast<unsigned>(std::strtoul(first, nullptr, 10)) : 1000u;
+  const unsigned first_seed =
+      first ? static_cast<unsigned>(std::strtoul(first, nullptr, 10)) : 1000u;
   const char* env = std::getenv("COOPERAGE_PAVE_RANDOM_FACES");
   const int faces = env ? std::max(1, std::atoi(env)) : 240;
   int failures = 0, holes = 0, below_03 = 0, odd_loops = 0;
@@ -48,9 +49,12 @@ TEST(Pave2DRandom, TwoHundredFacesMeshAllQuadWithoutInversion) {
     below_03 += s.min_sj < 0.3;
     median_sum += s.median_sj;
   }
-  std::printf("random faces: %d faces, %d holes, %d odd loops, %d failures; worst min scaled Jacobian %.3f (seed %u), "
-              "%d faces with min < 0.3; mean median %.3f\n",
-              faces, holes, odd_loops, failures, worst, worst_seed, below_03, median_sum / std::max(1, faces - failures));
+  std::printf(
+      "random faces: %d faces, %d holes, %d odd loops, %d failures; worst min scaled Jacobian %.3f "
+      "(seed %u), "
+      "%d faces with min < 0.3; mean median %.3f\n",
+      faces, holes, odd_loops, failures, worst, worst_seed, below_03,
+      median_sum / std::max(1, faces - failures));
   EXPECT_EQ(failures, 0);
 }
 

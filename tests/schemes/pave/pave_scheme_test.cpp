@@ -69,7 +69,8 @@ FaceResult mesh_face(const geom::Model& model, int sid, const std::function<doub
   const scheme::SurfaceView view{model, sid, nullptr};
   if (counts.empty()) {
     intervals::IntervalProblem problem;
-    for (const auto& c : model.curves()) problem.add_curve(c.id, std::max(c.length / size_of(c.id), 0.5));
+    for (const auto& c : model.curves())
+      problem.add_curve(c.id, std::max(c.length / size_of(c.id), 0.5));
     scheme->constrain(view, problem);
     counts = intervals::solve(problem).intervals;
   }
@@ -82,7 +83,8 @@ FaceResult mesh_face(const geom::Model& model, int sid, const std::function<doub
   std::ostringstream err;
   if (!em.tris.empty()) err << "triangles; ";
   for (size_t i = 0; i < em.global.size(); ++i) {
-    if (em.global[i] >= 0 && (em.coords[i] - db.node(em.global[i])).norm() > 0) err << "boundary node moved; ";
+    if (em.global[i] >= 0 && (em.coords[i] - db.node(em.global[i])).norm() > 0)
+      err << "boundary node moved; ";
   }
   const geom::SurfaceGeometry& g = *model.surface(sid).geometry;
   std::vector<double> sj;
@@ -126,7 +128,8 @@ FaceResult mesh_face(const geom::Model& model, int sid, const std::function<doub
     // seam is a boundary edge in both directions).
     const bool twin = dir.count({e.second, e.first}) > 0;
     const bool on_boundary = boundary.count(e) > 0;
-    if (n != 1 || (on_boundary && twin && !boundary.count({e.second, e.first})) || (!on_boundary && !twin)) {
+    if (n != 1 || (on_boundary && twin && !boundary.count({e.second, e.first})) ||
+        (!on_boundary && !twin)) {
       err << "bad edge " << e.first << "-" << e.second << "; ";
       break;
     }
@@ -149,7 +152,8 @@ FaceResult mesh_face(const geom::Model& model, int sid, const std::function<doub
 }
 
 void report(const char* name, const FaceResult& r) {
-  std::printf("%-26s %6d %8.3f %8.3f %12.1f\n", name, r.quads, r.min_sj, r.median_sj, r.irregular_per_100);
+  std::printf("%-26s %6d %8.3f %8.3f %12.1f\n", name, r.quads, r.min_sj, r.median_sj,
+              r.irregular_per_100);
 }
 
 TEST(PaveScheme, ApplicableToEveryFaceWithALoopOnly) {
@@ -191,7 +195,8 @@ TEST(PaveScheme, ConstrainMakesTheBoundaryEvenAndOddImpossible) {
     int total = 0;
     for (const auto& loop : s.loops) {
       int sum = 0;
-      for (const auto& use : loop.uses) sum += solution.intervals.at(use.curve);  // a seam counts twice
+      for (const auto& use : loop.uses)
+        sum += solution.intervals.at(use.curve);  // a seam counts twice
       EXPECT_GE(sum, 4) << "surface " << s.id;
       total += sum;
     }
@@ -219,7 +224,8 @@ TEST(PaveScheme, OddLoopsWithAnEvenTotalAreMeshed) {
   int inner = 0;
   for (const auto& use : m.surface(sid).loops[1].uses) inner += (counts[use.curve] = 0);
   counts[m.surface(sid).loops[1].uses[0].curve] = 13;  // odd; total 42
-  const FaceResult r = mesh_face(m, sid, [](int) { return 1.0; }, counts);
+  const FaceResult r = mesh_face(
+      m, sid, [](int) { return 1.0; }, counts);
   report("plate, odd loops 29 + 13", r);
   EXPECT_EQ(r.problems, "");
   EXPECT_GT(r.min_sj, 0.3);
@@ -290,7 +296,8 @@ TEST(PaveScheme, OddBoundaryIsRejectedByApplicableAndMeshNamingTheSurface) {
     EXPECT_EQ(e.entity().dim, 2);
     EXPECT_EQ(e.entity().id, sid);
     EXPECT_NE(std::string(e.what()).find("odd"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("surface " + std::to_string(sid)), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("surface " + std::to_string(sid)), std::string::npos)
+        << e.what();
   }
 }
 
@@ -324,7 +331,8 @@ TEST(PaveScheme, CadFacesMeshAllQuadWithoutInversion) {
     const FaceResult r = check("disk", m, top_planar_face(m), [](int) { return 0.15; });
     EXPECT_GT(r.median_sj, 0.8);
     EXPECT_GT(r.min_sj, 0.3);
-    check("cylinder side (seam)", m, largest_face_of_type(m, geom::SurfaceType::Cylinder), [](int) { return 0.15; });
+    check("cylinder side (seam)", m, largest_face_of_type(m, geom::SurfaceType::Cylinder),
+          [](int) { return 0.15; });
   }
   {
     occ::Workbench b;
@@ -344,14 +352,17 @@ TEST(PaveScheme, CadFacesMeshAllQuadWithoutInversion) {
     b.cylinder("h3", Vec3(3.2, 0.8, -1), Vec3(0, 0, 1), 0.25, 3);
     b.cut("p", {"plate", "h1", "h2", "h3"});
     const geom::Model m = b.build_model();
-    const FaceResult r = check("plate with three holes", m, top_planar_face(m), [](int) { return 0.12; });
+    const FaceResult r =
+        check("plate with three holes", m, top_planar_face(m), [](int) { return 0.12; });
     EXPECT_GT(r.median_sj, 0.8);
     EXPECT_GT(r.min_sj, 0.3);
   }
   {
     occ::Workbench b;
-    b.prism("L", {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0)}, {},
-            Vec3(0, 0, 0.5));
+    b.prism(
+        "L",
+        {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 2, 0), Vec3(0, 2, 0)},
+        {}, Vec3(0, 0, 0.5));
     const geom::Model m = b.build_model();
     const FaceResult r = check("L-shape", m, top_planar_face(m), [](int) { return 0.15; });
     EXPECT_GT(r.median_sj, 0.8);
@@ -360,8 +371,9 @@ TEST(PaveScheme, CadFacesMeshAllQuadWithoutInversion) {
   {
     occ::Workbench b;
     b.prism("neck",
-            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0.45, 0), Vec3(2, 0.45, 0), Vec3(2, 0, 0), Vec3(3, 0, 0),
-             Vec3(3, 1, 0), Vec3(2, 1, 0), Vec3(2, 0.55, 0), Vec3(1, 0.55, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)},
+            {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0.45, 0), Vec3(2, 0.45, 0), Vec3(2, 0, 0),
+             Vec3(3, 0, 0), Vec3(3, 1, 0), Vec3(2, 1, 0), Vec3(2, 0.55, 0), Vec3(1, 0.55, 0),
+             Vec3(1, 1, 0), Vec3(0, 1, 0)},
             {}, Vec3(0, 0, 0.5));
     const geom::Model m = b.build_model();
     check("narrow neck", m, top_planar_face(m), [](int) { return 0.1; });
@@ -380,11 +392,12 @@ TEST(PaveScheme, CadFacesMeshAllQuadWithoutInversion) {
   {
     // A quarter of a thick tube: its outer face is a cylindrical patch.
     occ::Workbench b;
-    b.revolve("tube", {Vec3(1, 0, 0), Vec3(1.5, 0, 0), Vec3(1.5, 0, 1), Vec3(1, 0, 1)}, Vec3(0, 0, 0), Vec3(0, 0, 1),
-              90.0);
+    b.revolve("tube", {Vec3(1, 0, 0), Vec3(1.5, 0, 0), Vec3(1.5, 0, 1), Vec3(1, 0, 1)},
+              Vec3(0, 0, 0), Vec3(0, 0, 1), 90.0);
     const geom::Model m = b.build_model();
     const FaceResult r =
-        check("cylindrical patch", m, largest_face_of_type(m, geom::SurfaceType::Cylinder), [](int) { return 0.1; });
+        check("cylindrical patch", m, largest_face_of_type(m, geom::SurfaceType::Cylinder),
+              [](int) { return 0.1; });
     EXPECT_GT(r.median_sj, 0.8);
     EXPECT_GT(r.min_sj, 0.3);
   }
@@ -392,18 +405,21 @@ TEST(PaveScheme, CadFacesMeshAllQuadWithoutInversion) {
     occ::Workbench b;
     b.cone("k", Vec3(0, 0, 0), Vec3(0, 0, 1), 1.0, 0.5, 1.0);
     const geom::Model m = b.build_model();
-    check("cone side (seam)", m, largest_face_of_type(m, geom::SurfaceType::Cone), [](int) { return 0.1; });
+    check("cone side (seam)", m, largest_face_of_type(m, geom::SurfaceType::Cone),
+          [](int) { return 0.1; });
   }
   {
     std::vector<std::vector<Vec3>> grid;
     for (int i = 0; i < 4; ++i) {
       grid.emplace_back();
-      for (int j = 0; j < 4; ++j) grid.back().push_back(Vec3(i, j, 0.3 * std::sin(i) * std::cos(j)));
+      for (int j = 0; j < 4; ++j)
+        grid.back().push_back(Vec3(i, j, 0.3 * std::sin(i) * std::cos(j)));
     }
     occ::Workbench b;
     b.bspline_patch("patch", grid, 0.0);
     const geom::Model m = b.build_model();
-    check("B-spline patch", m, largest_face_of_type(m, geom::SurfaceType::BSpline), [](int) { return 0.2; });
+    check("B-spline patch", m, largest_face_of_type(m, geom::SurfaceType::BSpline),
+          [](int) { return 0.2; });
   }
 }
 
@@ -419,7 +435,8 @@ TEST(PaveScheme, RotatedFaceGivesTheRotatedMesh) {
   };
   const geom::Model m0 = build(false), m1 = build(true);
   ASSERT_EQ(m0.surfaces().size(), m1.surfaces().size());
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(37.0 * M_PI / 180.0, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(37.0 * M_PI / 180.0, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const Vec3 o(0.5, -1, 2);
   const int sid = top_planar_face(m0);
   ASSERT_GT(sid, 0);
@@ -439,7 +456,8 @@ TEST(PaveScheme, RotatedFaceGivesTheRotatedMesh) {
   ASSERT_GT(sid1, 0);
   auto mesh_of = [](const geom::Model& m, int s, mesh::MeshDB& db) {
     std::map<int, int> counts;
-    for (const auto& c : m.curves()) counts[c.id] = std::max(2, 2 * static_cast<int>(std::lround(c.length / 0.25)));
+    for (const auto& c : m.curves())
+      counts[c.id] = std::max(2, 2 * static_cast<int>(std::lround(c.length / 0.25)));
     pipeline::mesh_curves(m, counts, io::MeshSettings{}, db);
     return make_pave()->mesh({m, s, &db}, scheme::MeshParams{});
   };
@@ -465,8 +483,9 @@ TEST(PaveScheme, RotatedFaceGivesTheRotatedMesh) {
   for (const auto& q : b.quads) qb.insert(canonical(q));
   size_t common = 0;
   for (const auto& q : a.quads) {
-    common += qb.count(canonical({to_b[static_cast<size_t>(q[0])], to_b[static_cast<size_t>(q[1])],
-                                  to_b[static_cast<size_t>(q[2])], to_b[static_cast<size_t>(q[3])]}));
+    common +=
+        qb.count(canonical({to_b[static_cast<size_t>(q[0])], to_b[static_cast<size_t>(q[1])],
+                            to_b[static_cast<size_t>(q[2])], to_b[static_cast<size_t>(q[3])]}));
   }
   EXPECT_EQ(common, a.quads.size()) << "quads of the rotated face that are not the rotated quads";
 }
@@ -477,14 +496,16 @@ TEST(PaveScheme, ThroughputIsPrinted) {
   const geom::Model m = b.build_model();
   for (int sid : {top_planar_face(m), largest_face_of_type(m, geom::SurfaceType::Cylinder)}) {
     std::map<int, int> counts;
-    for (const auto& c : m.curves()) counts[c.id] = 2 * static_cast<int>(std::lround(c.length / 0.006 / 2));
+    for (const auto& c : m.curves())
+      counts[c.id] = 2 * static_cast<int>(std::lround(c.length / 0.006 / 2));
     mesh::MeshDB db;
     pipeline::mesh_curves(m, counts, io::MeshSettings{}, db);
     const auto t0 = std::chrono::steady_clock::now();
     const scheme::EntityMesh em = make_pave()->mesh({m, sid, &db}, scheme::MeshParams{});
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("pave on %s surface %d: %zu quads in %.3f s (%.0f quads/s)\n",
-                geom::to_string(m.surface(sid).geometry->type()), sid, em.quads.size(), dt, em.quads.size() / dt);
+                geom::to_string(m.surface(sid).geometry->type()), sid, em.quads.size(), dt,
+                em.quads.size() / dt);
     EXPECT_GT(em.quads.size(), 10000u);
   }
 }

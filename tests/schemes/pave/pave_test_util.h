@@ -76,7 +76,8 @@ inline Stats stats(const QuadMesh2D& m) {
   for (const auto& q : m.quads) {
     for (int x : q) ++val[static_cast<size_t>(x)];
   }
-  for (size_t i = static_cast<size_t>(m.boundary_count); i < val.size(); ++i) s.irregular += val[i] != 4;
+  for (size_t i = static_cast<size_t>(m.boundary_count); i < val.size(); ++i)
+    s.irregular += val[i] != 4;
   return s;
 }
 
@@ -129,7 +130,8 @@ inline std::string check_mesh(const Loops& loops, const QuadMesh2D& m) {
     const bool is_b = boundary.count(e) > 0;
     const bool twin = dir.count({e.second, e.first}) > 0;
     if (is_b == twin) {
-      err << "edge " << e.first << "-" << e.second << (is_b ? " on boundary has a twin" : " is a free edge") << "; ";
+      err << "edge " << e.first << "-" << e.second
+          << (is_b ? " on boundary has a twin" : " is a free edge") << "; ";
       break;
     }
   }
@@ -150,7 +152,8 @@ inline double distance_to_polygon(const V2& q, const std::vector<V2>& p) {
   double d = 1e300;
   for (size_t k = 0; k < p.size(); ++k) {
     const V2 a = p[k], b = p[(k + 1) % p.size()];
-    const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+    const double t =
+        std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
     d = std::min(d, (q - (a + t * (b - a))).norm());
   }
   return d;
@@ -221,14 +224,16 @@ inline Loops random_face(unsigned seed) {
     const V2 c(-0.5 + U(rng), -0.5 + U(rng));
     const double hh = h * (0.5 + U(rng));  // holes may be finer or coarser than the outer loop
     const double gap = 1.5 * std::max(h, hh);
-    if (!inside_polygon(c, outer_points) || distance_to_polygon(c, outer_points) < r + gap) continue;
+    if (!inside_polygon(c, outer_points) || distance_to_polygon(c, outer_points) < r + gap)
+      continue;
     bool clear = true;
     for (const auto& [c2, r2] : placed) clear = clear && (c - c2).norm() > r + r2 + gap;
     if (!clear) continue;
     placed.emplace_back(c, r);
     const int kind = static_cast<int>(rng() % 4);
     if (kind == 0) {
-      holes.push_back(random_star(rng, c, 3 + static_cast<int>(rng() % 5), 0.6 * r, r, hh).points(true));
+      holes.push_back(
+          random_star(rng, c, 3 + static_cast<int>(rng() % 5), 0.6 * r, r, hh).points(true));
     } else if (kind == 1) {
       const int n = std::max(5, static_cast<int>(std::lround(2 * M_PI * r / hh)));
       holes.push_back(circle(c, r, n, true));

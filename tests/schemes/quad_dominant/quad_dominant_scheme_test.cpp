@@ -91,7 +91,8 @@ TEST(QuadDominantScheme, SplitsOnlyThePoorQuad) {
 TEST(QuadDominantScheme, PavedFaceWithA20DegreeCornerHasTrianglesOnlyThere) {
   const double size = 0.25, corner = 20.0 * M_PI / 180.0;
   occ::Workbench wb;
-  wb.prism("blade", {{0, 0, 0}, {8, 0, 0}, {8, 2, 0}, {2.0 / std::tan(corner), 2, 0}}, {}, {0, 0, 1});
+  wb.prism("blade", {{0, 0, 0}, {8, 0, 0}, {8, 2, 0}, {2.0 / std::tan(corner), 2, 0}}, {},
+           {0, 0, 1});
   const geom::Model model = wb.build_model();
   int sid = 0;
   for (const auto& s : model.surfaces()) {
@@ -113,7 +114,8 @@ TEST(QuadDominantScheme, PavedFaceWithA20DegreeCornerHasTrianglesOnlyThere) {
   ASSERT_FALSE(m.quads.empty());
   double farthest = 0;
   for (const auto& t : m.tris) {
-    for (int n : t) farthest = std::max(farthest, m.coords[static_cast<size_t>(n)].head<2>().norm());
+    for (int n : t)
+      farthest = std::max(farthest, m.coords[static_cast<size_t>(n)].head<2>().norm());
   }
   EXPECT_LE(farthest, 3 * size);
   const Vec3 normal = model.surface(sid).geometry->project(m.coords.front()).normal;

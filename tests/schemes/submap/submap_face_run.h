@@ -82,12 +82,9 @@ inline bool satisfied(const intervals::Constraint& c, const std::map<int, int>& 
   for (const auto& t : c.terms) sum += static_cast<long>(t.coeff) * x.at(t.curve_id);
   if (c.kind == intervals::Constraint::Kind::Even) return sum % 2 == 0;
   switch (c.sense) {
-    case intervals::Sense::Equal:
-      return sum == c.rhs;
-    case intervals::Sense::LessEqual:
-      return sum <= c.rhs;
-    case intervals::Sense::GreaterEqual:
-      return sum >= c.rhs;
+    case intervals::Sense::Equal: return sum == c.rhs;
+    case intervals::Sense::LessEqual: return sum <= c.rhs;
+    case intervals::Sense::GreaterEqual: return sum >= c.rhs;
   }
   return false;
 }

@@ -260,8 +260,8 @@ TEST(SubmapFaces, RejectionsSayWhy) {
     const geom::Model m = prism({{0, 0}, {4, 0}, {2, 2 * std::sqrt(3.0)}});
     const auto app = scheme->applicable({m, cap_at(m, 1.0), nullptr});
     EXPECT_FALSE(app.ok);
-    EXPECT_EQ(app.why.rfind("surface " + std::to_string(cap_at(m, 1.0)) + ": loop sum 3, needs 4", 0),
-              0u)
+    EXPECT_EQ(
+        app.why.rfind("surface " + std::to_string(cap_at(m, 1.0)) + ": loop sum 3, needs 4", 0), 0u)
         << app.why;
   }
   {  // a sharp triangle: a vertex at ~14 degrees has no type

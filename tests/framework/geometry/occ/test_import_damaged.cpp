@@ -32,7 +32,8 @@ TEST(OccImportDamaged, AKernelCrashBecomesAnErrorNamingTheFile) {
   const std::string path = kData + "damaged/crash_brick.step";
   const std::string msg = expect_error(ErrorCode::ParseError, [&] { load_model(path); });
   EXPECT_NE(msg.find("crash_brick.step: the CAD kernel could not read it (it crashed"),
-            std::string::npos) << msg;
+            std::string::npos)
+      << msg;
 }
 
 TEST(OccImportDamaged, AReaderThatNeverReturnsIsStoppedAtTheTimeLimit) {
@@ -48,8 +49,8 @@ TEST(OccImportDamaged, AReaderThatNeverReturnsIsStoppedAtTheTimeLimit) {
 }
 
 TEST(OccImportDamaged, AVertexOffItsEdgesIsRefusedNotMeshed) {
-  const std::string msg = expect_error(ErrorCode::GeometryError,
-                                       [&] { load_model(kData + "damaged/vertex_off_edges.brep"); });
+  const std::string msg = expect_error(
+      ErrorCode::GeometryError, [&] { load_model(kData + "damaged/vertex_off_edges.brep"); });
   EXPECT_NE(msg.find("away from its vertex"), std::string::npos) << msg;
   EXPECT_NE(msg.find("the B-rep is not valid"), std::string::npos) << msg;
 }
@@ -60,7 +61,8 @@ TEST(OccImportDamaged, AnOpenLoopIsBadInputNotAnInternalError) {
     ADD_FAILURE() << "no error";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::GeometryError) << e.what();
-    EXPECT_NE(std::string(e.what()).find("boundary loop is not closed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("boundary loop is not closed"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -134,7 +136,8 @@ TEST(OccImportDamaged, EveryRealCadFileLoadsAndValidates) {
       // A surface model whose faces do not close a volume even sewn is
       // refused, saying so; the file itself must say it has no solid.
       std::ifstream in(entry.path());
-      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const std::string text((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
       const bool surface_model = text.find("SHELL_BASED_SURFACE_MODEL") != std::string::npos &&
                                  text.find("MANIFOLD_SOLID_BREP") == std::string::npos;
       if (!surface_model || std::string(e.what()).find("holds no solids") == std::string::npos)

@@ -56,8 +56,8 @@ TEST(OccLoft, TwistedSquarePrism) {
   const double exact = 3.0 * (1.0 - (1.0 - std::cos(15.0 * kPi / 180)) / 3.0);
   EXPECT_TRUE(near_rel(v, exact, 1e-6)) << v << " vs " << exact;
   RecordProperty("twisted_prism_volume", std::to_string(v));
-  std::cout << "[ loft     ] twisted prism volume " << std::setprecision(10) << v
-            << " (exact " << exact << ")\n";
+  std::cout << "[ loft     ] twisted prism volume " << std::setprecision(10) << v << " (exact "
+            << exact << ")\n";
   EXPECT_NEAR(m.volume(1).box.min.z(), 0.0, 1e-7);
   EXPECT_NEAR(m.volume(1).box.max.z(), 3.0, 1e-7);
 }
@@ -134,7 +134,8 @@ TEST(OccLoft, SmoothLoftBetweenDifferentCounts) {
   Workbench wb;
   std::vector<Vec3> octagon;
   for (int k = 0; k < 8; ++k)
-    octagon.emplace_back(0.6 * std::cos(kPi * (k + 0.5) / 4), 0.6 * std::sin(kPi * (k + 0.5) / 4), 2);
+    octagon.emplace_back(0.6 * std::cos(kPi * (k + 0.5) / 4), 0.6 * std::sin(kPi * (k + 0.5) / 4),
+                         2);
   wb.loft("blend", {square(1.0, 0.0), octagon}, /*ruled=*/false);
   Model m;
   ASSERT_NO_THROW(m = wb.build_model());

@@ -52,7 +52,8 @@ void check_planar_loops(const Model& m) {
       if (i == 0) {
         EXPECT_GT(along, 0) << "surface " << s.id << " outer loop runs clockwise";
       } else {
-        EXPECT_LT(along, 0) << "surface " << s.id << " hole loop " << i << " runs counter-clockwise";
+        EXPECT_LT(along, 0) << "surface " << s.id << " hole loop " << i
+                            << " runs counter-clockwise";
       }
       EXPECT_NEAR(std::abs(along), a.norm(), 1e-9 * a.norm()) << "loop not in the plane";
       enclosed += along;
@@ -143,8 +144,10 @@ TEST(OccOrientation, CurveUsesChainHeadToTail) {
         const auto& b = loop.uses[(i + 1) % loop.uses.size()];
         const auto& ga = *m.curve(a.curve).geometry;
         const auto& gb = *m.curve(b.curve).geometry;
-        const Vec3 end = ga.point(a.sense == geom::Sense::Forward ? ga.range().second : ga.range().first);
-        const Vec3 start = gb.point(b.sense == geom::Sense::Forward ? gb.range().first : gb.range().second);
+        const Vec3 end =
+            ga.point(a.sense == geom::Sense::Forward ? ga.range().second : ga.range().first);
+        const Vec3 start =
+            gb.point(b.sense == geom::Sense::Forward ? gb.range().first : gb.range().second);
         EXPECT_LT((end - start).norm(), 1e-7);
       }
 }

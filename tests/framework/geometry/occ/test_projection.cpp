@@ -103,9 +103,8 @@ TEST(OccProjection, WarmStartAgreesWithTheGlobalSearch) {
       // A good hint (the answer nudged), a poor one (the box centre), a
       // useless one (a far corner) and a non-finite one.
       for (const Vec2& hint : {Vec2(global.uv + 0.01 * Vec2(u.y() - u.x(), v.y() - v.x())),
-                              Vec2(0.5 * (u.x() + u.y()), 0.5 * (v.x() + v.y())),
-                              Vec2(u.y(), v.y()),
-                              Vec2(std::nan(""), 0.0)}) {
+                               Vec2(0.5 * (u.x() + u.y()), 0.5 * (v.x() + v.y())),
+                               Vec2(u.y(), v.y()), Vec2(std::nan(""), 0.0)}) {
         const auto near = s.geometry->project_near(p, hint);
         EXPECT_NEAR((near.point - global.point).norm(), 0, 1e-7) << p.transpose();
         EXPECT_LE(near.distance, brute_distance(*s.geometry, p) + 1e-9);
@@ -122,7 +121,8 @@ TEST(OccProjection, SeededSearchFindsTheClosestPointFarFromTheFace) {
   for (const auto& s : m.surfaces()) {
     if (s.geometry->type() != geom::SurfaceType::BSpline) continue;
     // Feet inside the face (on its boundary the global search clamps, not exact).
-    for (const Vec3& p : {Vec3(2, 1.5, 1.5), Vec3(3, 1, -0.8), Vec3(0.7, 2.2, 1.1), Vec3(1, 2, 0.4)}) {
+    for (const Vec3& p :
+         {Vec3(2, 1.5, 1.5), Vec3(3, 1, -0.8), Vec3(0.7, 2.2, 1.1), Vec3(1, 2, 0.4)}) {
       const auto proj = s.geometry->project(p);
       EXPECT_LE(proj.distance, brute_distance(*s.geometry, p) + 1e-9) << p.transpose();
       ++checked;

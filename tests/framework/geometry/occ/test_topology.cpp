@@ -38,7 +38,8 @@ TEST(OccTopology, Brick) {
     EXPECT_EQ(c.geometry->type(), geom::CurveType::Line);
     EXPECT_EQ(c.surfaces.size(), 2u);
     EXPECT_TRUE(near_rel(c.length, 2, 1e-12) || near_rel(c.length, 3, 1e-12) ||
-                near_rel(c.length, 4, 1e-12)) << c.length;
+                near_rel(c.length, 4, 1e-12))
+        << c.length;
   }
   for (const auto& v : m.vertices()) EXPECT_EQ(v.curves.size(), 3u);
 }

@@ -48,7 +48,8 @@ ExoFile read_exodus(const std::string& path) {
   if (exo < 0) return f;
   char title[MAX_LINE_LENGTH + 1];
   EXPECT_GE(ex_get_init(exo, title, &f.dim, &f.nodes, &f.elems, &f.n_blocks, &f.n_node_sets,
-                        &f.n_side_sets), 0);
+                        &f.n_side_sets),
+            0);
   EXPECT_EQ(io_ws, 8) << "coordinates are stored as doubles";
   f.x.resize(f.nodes);
   f.y.resize(f.nodes);
@@ -63,8 +64,9 @@ ExoFile read_exodus(const std::string& path) {
     ExoBlock b;
     char type[MAX_STR_LENGTH + 1];
     int edges = 0, faces = 0, attrs = 0;
-    EXPECT_GE(ex_get_block(exo, EX_ELEM_BLOCK, f.block_ids[i], type, &b.count, &b.nodes_per,
-                           &edges, &faces, &attrs), 0);
+    EXPECT_GE(ex_get_block(exo, EX_ELEM_BLOCK, f.block_ids[i], type, &b.count, &b.nodes_per, &edges,
+                           &faces, &attrs),
+              0);
     b.type = type;
     b.name = names[i];
     b.conn.resize(static_cast<size_t>(b.count * b.nodes_per));
@@ -138,8 +140,10 @@ void check_common(const TestMesh& t, const ExoFile& f) {
   ASSERT_EQ(f.node_sets.size(), t.db.surfaces().size());
   for (const auto& [sid, s] : t.db.surfaces()) {
     std::vector<int> expect;
-    for (const auto& q : s.quads) for (int v : q) expect.push_back(v + 1);
-    for (const auto& q : s.tris) for (int v : q) expect.push_back(v + 1);
+    for (const auto& q : s.quads)
+      for (int v : q) expect.push_back(v + 1);
+    for (const auto& q : s.tris)
+      for (int v : q) expect.push_back(v + 1);
     std::sort(expect.begin(), expect.end());
     expect.erase(std::unique(expect.begin(), expect.end()), expect.end());
     EXPECT_EQ(f.node_sets.at(sid), expect) << "node set " << sid;

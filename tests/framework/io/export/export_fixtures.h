@@ -60,9 +60,8 @@ class MeshBuilder {
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-          hex(vol, {p(i, j, k), p(i + 1, j, k), p(i + 1, j + 1, k), p(i, j + 1, k),
-                    p(i, j, k + 1), p(i + 1, j, k + 1), p(i + 1, j + 1, k + 1),
-                    p(i, j + 1, k + 1)});
+          hex(vol, {p(i, j, k), p(i + 1, j, k), p(i + 1, j + 1, k), p(i, j + 1, k), p(i, j, k + 1),
+                    p(i + 1, j, k + 1), p(i + 1, j + 1, k + 1), p(i, j + 1, k + 1)});
   }
   /// Two wedges filling [lo, hi] (split along the diagonal of the z = lo face).
   void prism_pair(int vol, const Vec3& lo, const Vec3& hi) {
@@ -79,7 +78,10 @@ class MeshBuilder {
     geom::BoundingBox box;
     for (const auto& x : pts_) box.add(x);
     // Collect faces: key = sorted nodes -> (volume, oriented nodes) uses.
-    struct Use { int vol; std::vector<int> nodes; };
+    struct Use {
+      int vol;
+      std::vector<int> nodes;
+    };
     std::map<std::vector<int>, std::vector<Use>> faces;
     auto add_faces = [&](int vol, const int* e, const std::vector<std::vector<int>>& table) {
       for (const auto& f : table) {
@@ -90,8 +92,10 @@ class MeshBuilder {
         faces[key].push_back({vol, nodes});
       }
     };
-    for (auto& [v, hs] : hexes_) for (auto& h : hs) add_faces(v, h.data(), hex_outward_faces());
-    for (auto& [v, ws] : wedges_) for (auto& w : ws) add_faces(v, w.data(), wedge_outward_faces());
+    for (auto& [v, hs] : hexes_)
+      for (auto& h : hs) add_faces(v, h.data(), hex_outward_faces());
+    for (auto& [v, ws] : wedges_)
+      for (auto& w : ws) add_faces(v, w.data(), wedge_outward_faces());
     // Surface key: (first volume, second volume or 0, box side 0..5 or 6 = shared).
     std::map<std::tuple<int, int, int>, std::vector<std::vector<int>>> surf;
     for (auto& [key, uses] : faces) {
@@ -141,13 +145,21 @@ class MeshBuilder {
         t.model.mutable_volume(std::get<1>(key)).shells[0].push_back({sid, geom::Sense::Reversed});
       }
       surface_elems_[sid] = elems;
-      for (auto& e : elems) for (int n : e) if (!node_surface[n]) node_surface[n] = sid;
+      for (auto& e : elems)
+        for (int n : e)
+          if (!node_surface[n]) node_surface[n] = sid;
     }
     // Nodes with owners: box corners -> vertices, surface nodes -> lowest
     // surface, the rest -> the first volume using them.
     std::vector<int> node_volume(pts_.size(), 0);
-    for (auto& [v, hs] : hexes_) for (auto& h : hs) for (int n : h) if (!node_volume[n]) node_volume[n] = v;
-    for (auto& [v, ws] : wedges_) for (auto& w : ws) for (int n : w) if (!node_volume[n]) node_volume[n] = v;
+    for (auto& [v, hs] : hexes_)
+      for (auto& h : hs)
+        for (int n : h)
+          if (!node_volume[n]) node_volume[n] = v;
+    for (auto& [v, ws] : wedges_)
+      for (auto& w : ws)
+        for (int n : w)
+          if (!node_volume[n]) node_volume[n] = v;
     for (size_t i = 0; i < pts_.size(); ++i) {
       mesh::NodeOwner o{3, node_volume[i]};
       if (node_surface[i]) o = {2, node_surface[i]};
@@ -160,8 +172,10 @@ class MeshBuilder {
     for (auto& [sid, elems] : surface_elems_) {
       auto& s = t.db.mutable_surface(sid);
       for (auto& e : elems) {
-        if (e.size() == 4) s.quads.push_back({e[0], e[1], e[2], e[3]});
-        else s.tris.push_back({e[0], e[1], e[2]});
+        if (e.size() == 4)
+          s.quads.push_back({e[0], e[1], e[2], e[3]});
+        else
+          s.tris.push_back({e[0], e[1], e[2]});
       }
     }
     if (!surfaces_only) {

@@ -82,7 +82,8 @@ TEST(ExportSafety, ABatchCommitsEveryFileAtOnce) {
   const TestMesh t = two_blocks();
   const std::string dir = scratch_dir();
   io::ExportBatch batch;
-  for (const char* name : {"/m.exo", "/m.msh", "/m.vtu", "/m.inp"}) batch.stage(dir + name, t.db, t.model);
+  for (const char* name : {"/m.exo", "/m.msh", "/m.vtu", "/m.inp"})
+    batch.stage(dir + name, t.db, t.model);
   EXPECT_EQ(entries(dir).size(), 4u);  // four private directories, no target yet
   for (const auto& e : entries(dir)) EXPECT_EQ(e.rfind(".cooperage-", 0), 0u) << e;
   const auto written = batch.commit();

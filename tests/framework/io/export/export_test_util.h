@@ -43,8 +43,8 @@ inline std::string read_all(const std::string& p) {
 
 /// True when Debian's python has meshio and gmsh.
 inline bool have_meshio() {
-  const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) +
-                          " -c 'import meshio, numpy' > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import meshio, numpy' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
 }
 
@@ -93,16 +93,17 @@ inline std::vector<std::string> value(const std::vector<std::vector<std::string>
 
 /// True when Debian's python also has netCDF4 (meshio's Exodus reader needs it).
 inline bool have_netcdf4() {
-  const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) +
-                          " -c 'import netCDF4' > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import netCDF4' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
 }
 
-#define COOPERAGE_REQUIRE_MESHIO()                                                        \
-  do {                                                                                    \
-    if (!::cooperage::test::have_meshio())                                                \
-      GTEST_SKIP() << COOPERAGE_DEBIAN_PYTHON << " lacks meshio/numpy: python read-back " \
-                      "skipped (apt install python3-meshio)";                             \
+#define COOPERAGE_REQUIRE_MESHIO()                             \
+  do {                                                         \
+    if (!::cooperage::test::have_meshio())                     \
+      GTEST_SKIP() << COOPERAGE_DEBIAN_PYTHON                  \
+                   << " lacks meshio/numpy: python read-back " \
+                      "skipped (apt install python3-meshio)";  \
   } while (0)
 
 }  // namespace cooperage::test

@@ -145,8 +145,8 @@ void expect_refused(const std::string& path, const TestMesh& t, const io::Export
       EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << e.what() << " lacks " << p;
   }
   EXPECT_FALSE(std::filesystem::exists(path)) << path;
-  for (const auto& entry : std::filesystem::directory_iterator(
-           std::filesystem::path(path).parent_path()))
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
     ADD_FAILURE() << "left behind: " << entry.path();
 }
 
@@ -166,8 +166,7 @@ TEST(NamedGroups, BlocksOfTheWrongDimensionAreRefused) {
                  {"job.xml:6: <block>: block 1 \"skin\" lists surfaces", "takes volumes="});
   o.groups.blocks = {{1, "body", {1}, {}, line(7, "block")}};
   expect_refused(scratch_dir() + "/a.inp", surface_only(), o,
-                 {"job.xml:7: <block>: block 1 \"body\" lists volumes", "--dim 2",
-                  "surfaces="});
+                 {"job.xml:7: <block>: block 1 \"body\" lists volumes", "--dim 2", "surfaces="});
 }
 
 TEST(NamedGroups, GroupsWithNothingMeshedAreRefusedOrLeftOutOfAPartialRun) {

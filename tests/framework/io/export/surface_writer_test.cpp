@@ -117,13 +117,14 @@ TEST_P(SurfaceFormat, AVolumeMeshWritesItsBoundaryFacingOut) {
   check(t, outer, path, std::string(GetParam().ext) == "stl", 2.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Formats, SurfaceFormat,
-    ::testing::Values(Case{"obj", false}, Case{"off", false}, Case{"stl", false},
-                      Case{"ply", false}, Case{"stl", true}, Case{"ply", true}),
-    [](const auto& p) {
-      return std::string(p.param.ext) + (p.param.binary ? "_binary" : "_ascii");
-    });
+INSTANTIATE_TEST_SUITE_P(Formats, SurfaceFormat,
+                         ::testing::Values(Case{"obj", false}, Case{"off", false},
+                                           Case{"stl", false}, Case{"ply", false},
+                                           Case{"stl", true}, Case{"ply", true}),
+                         [](const auto& p) {
+                           return std::string(p.param.ext) +
+                                  (p.param.binary ? "_binary" : "_ascii");
+                         });
 
 TEST(SurfaceWriter, WedgesAndTrianglesToo) {
   COOPERAGE_REQUIRE_MESHIO();

@@ -218,7 +218,8 @@ TEST_P(VtuEncoding, ReadsBackWithMeshio) {
     for (const auto& l : with_key(r, "BLOCK")) {
       const int id = std::stoi(l[2]);
       const auto& v = t.db.volume(id);
-      EXPECT_EQ(std::stoi(l[3]), static_cast<int>(l[1] == "wedge" ? v.wedges.size() : v.hexes.size()));
+      EXPECT_EQ(std::stoi(l[3]),
+                static_cast<int>(l[1] == "wedge" ? v.wedges.size() : v.hexes.size()));
     }
   }
 }

@@ -57,7 +57,8 @@ TEST(WriteMesh, UnknownExtensionListsAllowedOnes) {
     } catch (const MeshingError& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
       const std::string m = e.what();
-      for (const char* ext : {".exo", ".e", ".g", ".msh", ".vtu", ".inp", ".obj", ".off", ".stl", ".ply"})
+      for (const char* ext :
+           {".exo", ".e", ".g", ".msh", ".vtu", ".inp", ".obj", ".off", ".stl", ".ply"})
         EXPECT_NE(m.find(ext), std::string::npos) << m;
     }
   }
@@ -141,7 +142,8 @@ TEST(ScaledJacobian, VerdictValues) {
   EXPECT_NEAR(scaled_jacobian(mesh::Wedge{0, 1, 2, 3, 4, 5}, w), 1.0, 1e-12);
   EXPECT_LT(scaled_jacobian(mesh::Wedge{0, 2, 1, 3, 5, 4}, w), 0.0);
   EXPECT_NEAR(scaled_jacobian(mesh::Quad{0, 1, 2, 3}, x), 1.0, 1e-15);
-  EXPECT_NEAR(scaled_jacobian(mesh::Tri{0, 1, 3}, x), std::min(1.0, 2 / std::sqrt(3.0) * std::sqrt(0.5)), 1e-12);
+  EXPECT_NEAR(scaled_jacobian(mesh::Tri{0, 1, 3}, x),
+              std::min(1.0, 2 / std::sqrt(3.0) * std::sqrt(0.5)), 1e-12);
 }
 
 }  // namespace

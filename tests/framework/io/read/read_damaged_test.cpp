@@ -53,7 +53,8 @@ std::size_t dimension_length_offset(const std::string& bytes, const std::string&
 }
 
 void put_u32(std::string& bytes, std::size_t at, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(v >> (24 - 8 * i));
+  for (int i = 0; i < 4; ++i)
+    bytes[at + static_cast<std::size_t>(i)] = static_cast<char>(v >> (24 - 8 * i));
 }
 
 TEST(ReadDamaged, TheDataFilesRead) {

@@ -67,8 +67,9 @@ TEST(ReadErrors, MshWithoutEndElements) {
 
 TEST(ReadErrors, MshBadNumberNamesTheLine) {
   const std::string path = scratch_dir() + "/bad.msh";
-  write_file(path, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n3 1 0 1\n1\n0 zero 0\n"
-                   "$EndNodes\n");
+  write_file(path,
+             "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n3 1 0 1\n1\n0 zero 0\n"
+             "$EndNodes\n");
   expect_error(path, ErrorCode::ParseError, "line 8");
 }
 

@@ -23,8 +23,8 @@ bool run_python(const std::string& dir, const std::string& script,
                 std::map<std::string, size_t>& counts) {
   const std::string py = dir + "/make.py", out = dir + "/make.txt";
   std::ofstream(py) << script;
-  const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) + " '" + py + "' > '" + out +
-                          "' 2> '" + out + ".err'";
+  const std::string cmd =
+      std::string(COOPERAGE_DEBIAN_PYTHON) + " '" + py + "' > '" + out + "' 2> '" + out + ".err'";
   if (std::system(cmd.c_str()) != 0) {
     ADD_FAILURE() << "python failed: " << read_all(out + ".err");
     return false;
@@ -37,8 +37,8 @@ bool run_python(const std::string& dir, const std::string& script,
 }
 
 bool have_module(const char* module) {
-  const std::string cmd = std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import " + module +
-                          "' > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(COOPERAGE_DEBIAN_PYTHON) + " -c 'import " + module + "' > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
 }
 
@@ -149,7 +149,8 @@ TEST(ReadForeign, GmshTransfiniteBox) {
     EXPECT_GT(min_volume(f), 0.0);
     double total = 0;
     for (size_t e = 0; e < f.blocks[0].size(); ++e) {
-      total += signed_volume(f.coords, f.blocks[0].connectivity.data() + 8 * e, hex_outward_faces());
+      total +=
+          signed_volume(f.coords, f.blocks[0].connectivity.data() + 8 * e, hex_outward_faces());
     }
     EXPECT_NEAR(total, 6.0, 1e-9);
   }

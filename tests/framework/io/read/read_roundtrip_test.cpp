@@ -52,7 +52,8 @@ TEST_P(RoundTrip, TwoBlocksKeepTheirBlocks) {
   check_round_trip(t, path);
   const io::MeshFile f = io::read_mesh_file(path);
   std::vector<size_t> hex_blocks;
-  for (const auto& b : f.blocks) if (b.type == ElementType::Hex) hex_blocks.push_back(b.size());
+  for (const auto& b : f.blocks)
+    if (b.type == ElementType::Hex) hex_blocks.push_back(b.size());
   EXPECT_EQ(hex_blocks, (std::vector<size_t>{8, 8}));
 }
 
@@ -115,7 +116,8 @@ TEST(ReadMeshFile, ExodusBlockNamesAreTheVolumeNames) {
   io::write_mesh(path, t.db, t.model);
   const io::MeshFile f = io::read_mesh_file(path);
   std::vector<std::string> names;
-  for (const auto& b : f.blocks) if (b.type == ElementType::Hex) names.push_back(b.name);
+  for (const auto& b : f.blocks)
+    if (b.type == ElementType::Hex) names.push_back(b.name);
   EXPECT_EQ(names, (std::vector<std::string>{"left", "right"}));
 }
 

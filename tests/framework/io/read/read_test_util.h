@@ -44,8 +44,10 @@ inline std::vector<CoordElement> db_elements(const mesh::MeshDB& db, bool wedges
   for (size_t i = 0; i < db.node_count(); ++i) x.push_back(db.node(static_cast<int>(i)));
   std::vector<CoordElement> out;
   for (const auto& [vid, v] : db.volumes()) {
-    if (wedges) for (const auto& w : v.wedges) out.push_back(coord_element(x, w.data(), 6));
-    else for (const auto& h : v.hexes) out.push_back(coord_element(x, h.data(), 8));
+    if (wedges)
+      for (const auto& w : v.wedges) out.push_back(coord_element(x, w.data(), 6));
+    else
+      for (const auto& h : v.hexes) out.push_back(coord_element(x, h.data(), 8));
   }
   std::sort(out.begin(), out.end());
   return out;

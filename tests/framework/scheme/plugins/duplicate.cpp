@@ -8,7 +8,8 @@ namespace {
 class FakePave final : public cooperage::scheme::SurfaceScheme {
  public:
   std::string_view name() const override { return "pave"; }
-  cooperage::scheme::Applicability applicable(const cooperage::scheme::SurfaceView&) const override {
+  cooperage::scheme::Applicability applicable(
+      const cooperage::scheme::SurfaceView&) const override {
     return cooperage::scheme::Applicability::no("never");
   }
   void constrain(const cooperage::scheme::SurfaceView&,
