@@ -1,6 +1,7 @@
 #include "schemes/map/surface_map.h"
 
 #include "framework/core/error.h"
+#include "schemes/map/map_plan.h"
 #include "schemes/map/map_sides.h"
 #include "schemes/map/tfi.h"
 
@@ -48,22 +49,32 @@ std::vector<Vec3> points_of(const mesh::MeshDB& db, const std::vector<int>& node
   return p;
 }
 
+std::shared_ptr<const SurfaceMapPlan> plan(const scheme::SurfaceView& view) {
+  return carried_or<SurfaceMapPlan>(view, view.surface_id, [&] {
+    auto p = std::make_shared<SurfaceMapPlan>();
+    p->surface_id = view.surface_id;
+    p->sides = analyse_map_surface(view.model, view.surface_id);
+    return std::shared_ptr<const SurfaceMapPlan>(std::move(p));
+  });
+}
+
 }  // namespace
 
 scheme::Applicability SurfaceMap::applicable(const scheme::SurfaceView& view) const {
-  const MapSides sides = analyse_map_surface(view.model, view.surface_id);
+  std::shared_ptr<const SurfaceMapPlan> p = plan(view);
+  const MapSides& sides = p->sides;
   if (!sides.ok) return scheme::Applicability::no(sides.why);
-  return scheme::Applicability::yes(
-      sides.score,
-      "surface " + std::to_string(view.surface_id) + ": 4 END vertices (" +
-          join_ids({sides.corner_vertices.begin(), sides.corner_vertices.end()}, ", ") + ")");
+  std::string why = "surface " + std::to_string(view.surface_id) + ": 4 END vertices (" +
+                    join_ids({sides.corner_vertices.begin(), sides.corner_vertices.end()}, ", ") +
+                    ")";
+  return scheme::Applicability::yes(sides.score, std::move(why), std::move(p));
 }
 
 void SurfaceMap::constrain(const scheme::SurfaceView& view,
                            intervals::IntervalProblem& problem) const {
-  const MapSides sides = analyse_map_surface(view.model, view.surface_id);
-  if (!sides.ok) return;  // not ours to mesh; applicable() said why
-  add_map_constraints(view.surface_id, sides, problem);
+  const std::shared_ptr<const SurfaceMapPlan> p = plan(view);
+  if (!p->sides.ok) return;  // not ours to mesh; applicable() said why
+  add_map_constraints(view.surface_id, p->sides, problem);
 }
 
 scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
@@ -71,7 +82,8 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, "map needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;
-  const MapSides sides = analyse_map_surface(view.model, sid);
+  const std::shared_ptr<const SurfaceMapPlan> planned = plan(view);
+  const MapSides& sides = planned->sides;
   if (!sides.ok) fail(sid, "not mappable: " + sides.why);
 
   std::array<std::vector<int>, 4> chains;

@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "schemes/map/block_lattice.h"
+#include "schemes/map/map_plan.h"
 #include "schemes/map/map_sides.h"
 #include "schemes/map/tfi.h"
 
@@ -20,8 +21,10 @@ std::string volume_name(int id) { return "volume " + std::to_string(id); }
   throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
 }
 
-// Empty when the volume is a mappable block, else the reason.
-std::string block_problem(const geom::Model& model, int volume_id, double* score) {
+// Empty when the volume is a mappable block, else the reason; the faces'
+// logical sides go to `face_sides` as they are found.
+std::string block_problem(const geom::Model& model, int volume_id, double* score,
+                          std::map<int, MapSides>& face_sides) {
   const geom::Volume& volume = model.volume(volume_id);
   const std::string name = volume_name(volume_id);
   if (volume.shells.size() != 1) {
@@ -36,7 +39,7 @@ std::string block_problem(const geom::Model& model, int volume_id, double* score
   std::map<int, std::vector<int>> corner_faces;             // vertex -> surfaces
   double worst = 1.0;
   for (const auto& use : shell) {
-    const MapSides sides = analyse_map_surface(model, use.surface);
+    const MapSides& sides = face_sides[use.surface] = analyse_map_surface(model, use.surface);
     if (!sides.ok) {
       return name + ": surface " + std::to_string(use.surface) + " is not mappable (" + sides.why +
              ")";
@@ -74,21 +77,38 @@ std::string block_problem(const geom::Model& model, int volume_id, double* score
   return {};
 }
 
+struct Analysis {
+  std::shared_ptr<const VolumeMapPlan> plan;
+  std::string why;  // empty when the volume is a block
+  double score = 0.0;
+};
+
+Analysis analyse(const scheme::VolumeView& view) {
+  Analysis a;
+  auto p = std::make_shared<VolumeMapPlan>();
+  p->volume_id = view.volume_id;
+  a.why = block_problem(view.model, view.volume_id, &a.score, p->faces);
+  a.plan = std::move(p);
+  return a;
+}
+
 }  // namespace
 
 scheme::Applicability VolumeMap::applicable(const scheme::VolumeView& view) const {
-  double score = 0.0;
-  const std::string why = block_problem(view.model, view.volume_id, &score);
-  if (!why.empty()) return scheme::Applicability::no(why);
+  Analysis a = analyse(view);
+  if (!a.why.empty()) return scheme::Applicability::no(a.why);
   return scheme::Applicability::yes(
-      score, volume_name(view.volume_id) + ": 6 mappable surfaces forming a block");
+      a.score, volume_name(view.volume_id) + ": 6 mappable surfaces forming a block",
+      std::move(a.plan));
 }
 
 void VolumeMap::constrain(const scheme::VolumeView& view,
                           intervals::IntervalProblem& problem) const {
+  const std::shared_ptr<const VolumeMapPlan> p =
+      carried_or<VolumeMapPlan>(view, view.volume_id, [&] { return analyse(view).plan; });
   for (int surface_id : view.model.surfaces_of(view.volume_id)) {
-    const MapSides sides = analyse_map_surface(view.model, surface_id);
-    if (sides.ok) add_map_constraints(surface_id, sides, problem);
+    const auto it = p->faces.find(surface_id);
+    if (it != p->faces.end() && it->second.ok) add_map_constraints(surface_id, it->second, problem);
   }
 }
 
