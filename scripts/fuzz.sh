@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, ASan + UBSan) in their own build
 # directory and runs one of them for a while (issue 21 item 5).
+# scripts/fuzz_ci.sh runs all four briefly, without sanitizers, in CI.
 #   scripts/fuzz.sh TARGET SECONDS [libFuzzer options...]
-#   TARGET: journal | mesh_read | triangulate | cad_import
+#   TARGET: journal | mesh_read | triangulate | cad_import; SECONDS 0 only builds
 # Seeds: examples/ and the journals of tests/ (journal), the mesh files of
 # tests/framework/io/read/data (mesh_read), the CAD files of
 # tests/framework/geometry/occ/data and, when present, ../shared/real-cad or
@@ -10,6 +11,8 @@
 # build-fuzz/corpus/TARGET; a finding is saved in build-fuzz/artifacts/TARGET
 # and makes the script exit non-zero. One process, one core.
 #   COOPERAGE_FUZZ_BUILD_DIR=...   build directory (default: build-fuzz)
+#   COOPERAGE_FUZZ_SANITIZERS=none libFuzzer alone, no ASan/UBSan (default:
+#                                  address,undefined); use its own build dir
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 usage="usage: scripts/fuzz.sh journal|mesh_read|triangulate|cad_import SECONDS [libFuzzer options]"
@@ -28,17 +31,26 @@ if ! command -v clang++ >/dev/null; then
   echo "scripts/fuzz.sh needs clang: apt-get install clang libclang-rt-14-dev" >&2
   exit 2
 fi
-sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+sanitize="${COOPERAGE_FUZZ_SANITIZERS:-address,undefined}"
+sanitizers="-fsanitize=$sanitize -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+build_type=RelWithDebInfo
+if [ "$sanitize" = none ]; then
+  # Coverage instrumentation for libFuzzer only: a quick build for CI.
+  sanitizers=""
+  build_type=Release
+fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
   launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=$build_type \
     -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
     -DCMAKE_CXX_FLAGS="$sanitizers -fsanitize=fuzzer-no-link" \
     -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" -DCMAKE_SHARED_LINKER_FLAGS="$sanitizers" \
+    -DCOOPERAGE_BUILD_PYTHON=OFF \
     -DCOOPERAGE_BUILD_TESTS=OFF -DCOOPERAGE_BUILD_BENCH=OFF -DCOOPERAGE_BUILD_FUZZ=ON >/dev/null
 fi
 cmake --build "$build" -j2 --target "fuzz_$target"
+[ "$seconds" = 0 ] && exit 0  # SECONDS 0: build only
 
 seeds="$build/seeds/$target"
 corpus="$build/corpus/$target"
