@@ -17,18 +17,34 @@ constexpr int kSearchFaceCuts = 2000;
 
 }  // namespace
 
+std::vector<RefusedVolume> refused_volumes(const geom::Model& model,
+                                           const scheme::Registry& registry,
+                                           const scheme::Settings* settings) {
+  std::vector<RefusedVolume> out;
+  for (const geom::Volume& v : model.volumes()) {
+    PieceVerdict verdict = best_scheme(model, v.id, registry, settings);
+    if (!verdict.ok) out.push_back({v.id, std::move(verdict.why)});
+  }
+  return out;
+}
+
 std::vector<int> unmeshable_volumes(const geom::Model& model, const scheme::Registry& registry,
                                     const scheme::Settings* settings) {
   std::vector<int> out;
-  for (const geom::Volume& v : model.volumes()) {
-    if (!best_scheme(model, v.id, registry, settings).ok) out.push_back(v.id);
-  }
+  for (const RefusedVolume& r : refused_volumes(model, registry, settings)) out.push_back(r.volume);
   return out;
 }
 
 Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
                      const scheme::Registry& registry, const ModelCheck& check,
                      const DecomposeOptions& options) {
+  return decompose(solids, model, registry, check, options,
+                   refused_volumes(model, registry, options.settings));
+}
+
+Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
+                     const scheme::Registry& registry, const ModelCheck& check,
+                     const DecomposeOptions& options, const std::vector<RefusedVolume>& refused) {
   if (!(options.size > 0)) {
     throw MeshingError(ErrorCode::InvalidInput,
                        "automatic decomposition needs a positive element size");
@@ -45,13 +61,12 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
   occ::SolidPieces result = solids;
   // Volumes in descending id order so that replacing one solid by its pieces
   // keeps the indices of the ones still to do.
-  const std::vector<int> todo = unmeshable_volumes(model, registry);
-  for (auto it = todo.rbegin(); it != todo.rend(); ++it) {
-    const int v = *it;
+  for (auto it = refused.rbegin(); it != refused.rend(); ++it) {
+    const int v = it->volume;
     VolumeDecomposition d;
     d.volume = v;
     d.name = model.volume(v).name;
-    d.why = best_scheme(model, v, registry).why;
+    d.why = it->why;
     // Each candidate cut costs a boolean and a plan of the pieces, both
     // growing with the faces: the number of cuts tried shrinks with them, and
     // a volume too intricate for cuts through its own faces to help is left
@@ -89,7 +104,7 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     origin.insert(origin.begin() + (v - 1), static_cast<size_t>(plan->pieces.size()), v);
     out.report.volumes.insert(out.report.volumes.begin(), std::move(d));
   }
-  if (todo.empty()) {
+  if (refused.empty()) {
     out.model = model;
   } else {
     out.model = result.build_model(true);

@@ -22,6 +22,16 @@ struct DecomposeOptions {
   int max_cuts = 80;  ///< candidate cuts given to the kernel, per volume in all
   int max_depth = 3;  ///< cuts along one chain (a cut, a cut of a piece, ...)
   int branches = 2;   ///< cuts that leave pieces to cut again, explored per level
+  /// The job's settings (null: defaults), for every a-priori verdict on the
+  /// volume and its pieces; per-entity settings never reach a decomposition
+  /// (the pipeline refuses them first: cuts renumber the entities).
+  const scheme::Settings* settings = nullptr;
+};
+
+/// A volume to which no volume scheme applies, and every scheme's reason.
+struct RefusedVolume {
+  int volume = 0;
+  std::string why;
 };
 
 /// One cut of the decomposition.
@@ -72,6 +82,17 @@ struct Decomposed {
 Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
                      const scheme::Registry& registry, const ModelCheck& check,
                      const DecomposeOptions& options);
+/// The same, for the volumes refused_volumes() found (computed once by a
+/// caller that needed them already).
+Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
+                     const scheme::Registry& registry, const ModelCheck& check,
+                     const DecomposeOptions& options, const std::vector<RefusedVolume>& refused);
+
+/// The volumes of `model` to which no volume scheme applies for the job's
+/// `settings` (null: defaults), ascending, with the reasons.
+std::vector<RefusedVolume> refused_volumes(const geom::Model& model,
+                                           const scheme::Registry& registry,
+                                           const scheme::Settings* settings = nullptr);
 
 /// The volumes of `model` to which no volume scheme applies for the job's
 /// `settings` (null: defaults), ascending.

@@ -92,7 +92,7 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
                                           const std::vector<CutCandidate>& inherited) {
   const geom::Model model = solid.build_model(false);
   if (model.volumes().size() != 1) return std::nullopt;
-  if (best_scheme(model, 1, registry_).ok) return SolidPlan{solid, {}};
+  if (best_scheme(model, 1, registry_, options_.settings).ok) return SolidPlan{solid, {}};
   if (depth >= options_.max_depth) return std::nullopt;
 
   const double size = options_.size;
@@ -125,7 +125,7 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     const double thinnest = thinnest_piece(e.model, c.surface);
     if (thinnest < size) continue;  // a sliver thinner than one element layer
     for (const geom::Volume& v : e.model.volumes())
-      e.verdicts.push_back(best_scheme(e.model, v.id, registry_));
+      e.verdicts.push_back(best_scheme(e.model, v.id, registry_, options_.settings));
     e.outcome = summarise(e.model, e.verdicts, thinnest, size);
     if (log::threshold() <= log::Level::Info) {
       std::string schemes;

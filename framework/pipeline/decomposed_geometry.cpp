@@ -72,15 +72,16 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   const io::MeshSettings& settings = *job.mesh;
 
   const scheme::Settings job_settings = scheme::Settings::of(settings);
-  const std::vector<int> todo = decompose::unmeshable_volumes(out.model, registry, &job_settings);
-  if (todo.empty()) return out;
-  for (int v : todo) {
-    if (scheme_pinned(settings, v)) return out;  // the planner refuses the pin, naming it
+  const std::vector<decompose::RefusedVolume> refused =
+      decompose::refused_volumes(out.model, registry, &job_settings);
+  if (refused.empty()) return out;
+  for (const auto& r : refused) {
+    if (scheme_pinned(settings, r.volume)) return out;  // the planner refuses the pin, naming it
   }
   std::string setting = entity_setting(settings);
   if (setting.empty()) setting = group_setting(job.groups);
   if (!setting.empty()) {
-    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(todo.front()),
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(refused.front().volume),
                        "no hex scheme applies, and automatic decomposition would renumber the "
                        "entities that " +
                            setting +
@@ -105,8 +106,9 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   };
   decompose::DecomposeOptions options;
   options.size = decomposition_size(settings, out.model);
-  decompose::Decomposed d =
-      decompose::decompose(occ::SolidPieces::of(bench, build), out.model, registry, check, options);
+  options.settings = &job_settings;
+  decompose::Decomposed d = decompose::decompose(occ::SolidPieces::of(bench, build), out.model,
+                                                 registry, check, options, refused);
   out.model = std::move(d.model);
   out.decomposition = std::move(d.report);
   return out;
