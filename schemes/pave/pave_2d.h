@@ -44,6 +44,7 @@
 // Requirement: an even total node count and at least 4 nodes per loop.
 #pragma once
 
+#include "schemes/pave/halfedge_cleanup.h"
 #include "schemes/pave/smooth_2d.h"
 
 #include <Eigen/Core>
@@ -80,8 +81,13 @@ struct PaveOptions {
   double ring_width = 0.75;    ///< ring around a 4-node hole, in hole widths
   double tip_angle =
       250.0;  ///< skipped nodes above this interior angle [deg] get paving's corner template
-  bool cleanup = true;        ///< remove doublets
-  bool boundary_rows = true;  ///< seed a coarse row along flat boundary stretches
+  bool cleanup = true;  ///< remove doublets, collapse diamonds
+  /// Clean up on OpenMesh's half-edge mesh with edge rotation
+  /// (halfedge_cleanup.h) instead of the arrays (cleanup_2d.h); off by
+  /// default: measured in bench/RESULTS.md (2026-12-02, session 4).
+  bool halfedge_cleanup = false;
+  detail::HalfEdgeCleanupOptions halfedge;  ///< its settings
+  bool boundary_rows = true;                ///< seed a coarse row along flat boundary stretches
   double retry_below =
       0.5;  ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
   int odd_edge_rank =
