@@ -211,6 +211,7 @@ class Cleaner {
     for (const FH g : fa) {
       if (g != f && std::find(fc.begin(), fc.end(), g) != fc.end()) return false;
     }
+    if (!options_.boundary_counts && (is_fixed(b) || is_fixed(d))) return false;
     const int qb = quads_at(b), qd = quads_at(d);
     const Irregularity before = Irregularity{} + at(a, 3) + at(c, 3) + at(b, qb) + at(d, qd);
     const Irregularity after = Irregularity{} + at(a, 4) + at(b, qb - 1) + at(d, qd - 1);
@@ -285,6 +286,9 @@ class Cleaner {
     std::array<Corners, 2> best;
     for (size_t s = 1; s <= 2; ++s) {  // new diagonal H[s] - H[s + 3]
       if (m_.find_halfedge(H[s], H[s + 3]).is_valid()) continue;
+      if (!options_.boundary_counts &&
+          (is_fixed(H[0]) || is_fixed(H[3]) || is_fixed(H[s]) || is_fixed(H[s + 3])))
+        continue;
       std::array<int, 6> m = n;
       --m[0];
       --m[3];

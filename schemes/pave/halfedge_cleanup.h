@@ -39,6 +39,9 @@ struct HalfEdgeCleanupOptions {
   double min_quality = 0.2;
   int max_passes = 8;  ///< rounds of (doublets, diamonds, rotations)
   bool rotate = true;  ///< edge rotation (off: doublets and diamonds only)
+  /// Let diamonds and rotations change how many quads a boundary node has
+  /// (off: only free nodes' counts change, doublets aside).
+  bool boundary_counts = true;
 };
 
 /// Number of changes of each kind made.

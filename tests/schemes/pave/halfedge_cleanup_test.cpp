@@ -149,6 +149,28 @@ TEST(HalfEdgeCleanup, EdgeRotationLowersIrregularNodesAndKeepsQuadsValid) {
   EXPECT_EQ(irregular_interior(g.mesh), 0);
 }
 
+TEST(HalfEdgeCleanup, RotationAtTheBoundaryOnlyWhenBoundaryCountsMayChange) {
+  // As above at the bottom edge of a 4 x 2 grid: the boundary node u (2, 0)
+  // is in one quad (ideal: two) and cannot be pushed out, so the cut quad
+  // is flat there (no check before); rotating back gives the grid.
+  Grid g = grid(4, 2);
+  const int p = g.at(1, 1), q = g.at(3, 0), u = g.at(2, 0), v = g.at(2, 1);
+  g.mesh.points[static_cast<size_t>(v)].y() = 1.3;
+  replace_quad(g, 1, 0, {});
+  replace_quad(g, 2, 0, {{q, g.at(3, 1), v, p}, {p, g.at(1, 0), u, q}});
+  ASSERT_EQ(irregular_interior(g.mesh), 2);  // v in three quads, p in five
+
+  HalfEdgeCleanupOptions fixed_counts;
+  fixed_counts.boundary_counts = false;
+  QuadMesh2D kept = g.mesh;
+  EXPECT_EQ(clean(kept, fixed_counts).rotations, 0);
+  EXPECT_EQ(kept.quads.size(), g.mesh.quads.size());
+
+  EXPECT_EQ(clean(g.mesh).rotations, 1);
+  EXPECT_EQ(check_mesh(g.loops(), g.mesh), "");
+  EXPECT_EQ(irregular_interior(g.mesh), 0);
+}
+
 TEST(HalfEdgeCleanup, RegularGridIsLeftAlone) {
   Grid g = grid(5, 4);
   const QuadMesh2D before = g.mesh;
