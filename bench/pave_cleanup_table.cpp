@@ -58,7 +58,7 @@ std::vector<Variant> variants() {
   return {{"arrays", arrays},
           {"half-edge", halfedge},
           {"half-edge, no rotation", no_rotation},
-          {"half-edge, conversion only", convert}};
+          {"half-edge, conversions only (no clean-up)", convert}};
 }
 
 struct Result {
