@@ -208,7 +208,13 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
   // (f) cleanup and smoothing.
   std::vector<char> fixed(P.size(), 0);
   for (int i = 0; i < nb; ++i) fixed[static_cast<size_t>(i)] = 1;
-  if (options.cleanup) {
+  if (options.cleanup && options.halfedge_cleanup) {
+    try {
+      detail::halfedge_cleanup(P, quads, fixed, options.halfedge);
+    } catch (const std::runtime_error& err) {
+      failed(err.what());
+    }
+  } else if (options.cleanup) {
     detail::remove_doublets(P, quads, fixed);
     for (int pass = 0; pass < 3 && detail::collapse_diamonds(P, quads, fixed) > 0; ++pass) {
     }

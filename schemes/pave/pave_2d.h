@@ -28,7 +28,8 @@
 //      (split_to_quads.h): a coarse loop edge's midpoint is exactly the skipped
 //      boundary node, so no node is added on the boundary; the boundary rows
 //      are quads with an edge on the boundary;
-//  (f) cleanup (doublets, diamonds) and smoothing that never inverts
+//  (f) cleanup (doublets, diamonds; optionally on OpenMesh's half-edge mesh
+//      with edge rotation, halfedge_cleanup.h) and smoothing that never inverts
 //      (cleanup_2d.h, smooth_2d.h); checks: every quad valid, the quads
 //      tile the domain exactly.
 //  Odd loops: a loop with an odd node count keeps one coarse edge without
@@ -44,6 +45,7 @@
 // Requirement: an even total node count and at least 4 nodes per loop.
 #pragma once
 
+#include "schemes/pave/halfedge_cleanup.h"
 #include "schemes/pave/smooth_2d.h"
 
 #include <Eigen/Core>
@@ -80,8 +82,15 @@ struct PaveOptions {
   double ring_width = 0.75;    ///< ring around a 4-node hole, in hole widths
   double tip_angle =
       250.0;  ///< skipped nodes above this interior angle [deg] get paving's corner template
-  bool cleanup = true;        ///< remove doublets
-  bool boundary_rows = true;  ///< seed a coarse row along flat boundary stretches
+  bool cleanup = true;  ///< remove doublets, collapse diamonds
+  /// Clean up on OpenMesh's half-edge mesh with edge rotation
+  /// (halfedge_cleanup.h) instead of the arrays (cleanup_2d.h). Off: it
+  /// lowers irregular nodes by 3-5 % but some faces' minimum scaled
+  /// Jacobian by more than noise, at 30x the arrays' time (bench/RESULTS.md,
+  /// 2026-12-02 session 4).
+  bool halfedge_cleanup = false;
+  detail::HalfEdgeCleanupOptions halfedge;  ///< its settings
+  bool boundary_rows = true;                ///< seed a coarse row along flat boundary stretches
   double retry_below =
       0.5;  ///< worst scaled Jacobian below which other settings are tried too (the issue's bar)
   int odd_edge_rank =

@@ -13,49 +13,6 @@
 namespace cooperage::pave::testing {
 namespace {
 
-struct NamedFace {
-  const char* name;
-  Loops loops;
-  bool simple;  // quality bars asserted (median > 0.8, min > 0.3)
-};
-
-std::vector<NamedFace> benchmark_faces() {
-  std::vector<NamedFace> f;
-  f.push_back({"square", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {10, 10, 10, 10})}, true});
-  f.push_back(
-      {"square, odd sides", {polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {7, 7, 7, 7})}, true});
-  f.push_back({"disk", {circle({0, 0}, 1, 40)}, true});
-  f.push_back({"annulus", {circle({0, 0}, 2, 48), circle({0, 0}, 1, 24, true)}, true});
-  f.push_back(
-      {"plate with three holes",
-       {polygon({{0, 0}, {4, 0}, {4, 2}, {0, 2}}, {24, 12, 24, 12}), circle({1, 1}, 0.4, 16, true),
-        circle({2.2, 1}, 0.3, 12, true), circle({3.2, 0.8}, 0.25, 4, true)},
-       true});
-  f.push_back({"L-shape",
-               {polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, {12, 6, 6, 6, 6, 12})},
-               true});
-  f.push_back({"narrow neck",
-               {polygon({{0, 0},
-                         {1, 0},
-                         {1, 0.45},
-                         {2, 0.45},
-                         {2, 0},
-                         {3, 0},
-                         {3, 1},
-                         {2, 1},
-                         {2, 0.55},
-                         {1, 0.55},
-                         {1, 1},
-                         {0, 1}},
-                        {10, 5, 10, 5, 10, 10, 10, 5, 10, 5, 10, 10})},
-               false});
-  f.push_back(
-      {"spacing 1:8",
-       {polygon({{-4, -4}, {4, -4}, {4, 4}, {-4, 4}}, {8, 8, 8, 8}), circle({0, 0}, 1, 50, true)},
-       false});
-  return f;
-}
-
 TEST(Pave2D, BenchmarkFacesAreValidAndPrintQuality) {
   std::printf("%-24s %6s %8s %8s %12s\n", "face", "quads", "min SJ", "med SJ", "irreg/100q");
   for (const NamedFace& face : benchmark_faces()) {
