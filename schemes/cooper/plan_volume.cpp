@@ -3,6 +3,7 @@
 #include "framework/core/log.h"
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_scheme.h"
+#include "schemes/cooper/coincident_curves.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,6 +127,13 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   }
   p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even,
                               volume_name(p.volume) + " (cooper)");
+  if (p.down) {
+    std::vector<int> caps;
+    for (const auto& [cap, upper] : p.order.upper) caps.push_back(cap);
+    for (IntervalRow& r : coincident_curve_rows(coincident_cap_curves(facts, caps, *p.down),
+                                                volume_name(p.volume) + " (cooper)"))
+      p.rows.push_back(std::move(r));
+  }
   if (p.one_barrel()) {
     p.source = cand.source;
     p.target = cand.target;

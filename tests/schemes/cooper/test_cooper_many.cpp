@@ -555,6 +555,23 @@ TEST(CooperMany, JournalsMeshThroughThePipeline) {
   }
 }
 
+// A round boss above a round foot of the same radius: the rims get equal
+// counts in the plan and seam node for node (issue 15).
+TEST(CooperMany, RoundBossAboveARoundFootMeshes) {
+  const auto registry = with_polygon_mesher();
+  const io::Job job =
+      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
+                       "/tests/schemes/cooper/data/cooper_round_boss_over_foot.xml");
+  const geom::Model model = pipeline::build_geometry(job);
+  const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper II] cooper_round_boss_over_foot.xml: %zu hexes, min scaled Jacobian %.4f\n",
+              s.hexes, s.min_sj);
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {

@@ -9,6 +9,7 @@
 #include "schemes/cooper/barrel_tree.h"
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_roles.h"
+#include "schemes/cooper/coincident_curves.h"
 #include "schemes/cooper/plan_volume.h"
 
 #include <gtest/gtest.h>
@@ -196,6 +197,40 @@ TEST(PlanSteps, ALongBossOverhangingItsBlockHasItsTopCut) {
   const VolumeFacts inside = testing::polyhedron_facts(
       {{oriented(rect_xy(0, 0, 4, 4, 0), kDown)}, {oriented(rect_xy(1.5, 1.5, 2.5, 3.5, 3), kUp)}});
   EXPECT_EQ(cut_caps(inside, {1, 2}, kDown, 5e-3), (std::vector<int>{1}));
+}
+
+// Cap curves that project onto each other (issue 15: a round boss above a
+// round foot of the same radius needs equal counts on both rims): the
+// boss top's four edges over the shoulder's hole, the top's outer edges
+// over the bottom's; nothing else. Two long parallel edges 1 apart (the
+// campaign's 7,500-long boss) are not coincident.
+TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
+  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const auto z = z_caps(facts);
+  const auto pairs = coincident_cap_curves(facts, std::vector<int>(z.begin(), z.end()), kDown);
+  EXPECT_EQ(pairs.size(), 8u);
+  for (const auto& [a, b] : pairs) {
+    const CurveFact& ca = facts.curves.at(a);
+    const CurveFact& cb = facts.curves.at(b);
+    std::set<std::pair<long, long>> ea, eb;
+    for (int v : {ca.start, ca.end}) {
+      const Vec3& p = facts.vertices.at(v);
+      ea.insert({std::lround(p.x() * 1e6), std::lround(p.y() * 1e6)});
+    }
+    for (int v : {cb.start, cb.end}) {
+      const Vec3& p = facts.vertices.at(v);
+      eb.insert({std::lround(p.x() * 1e6), std::lround(p.y() * 1e6)});
+    }
+    EXPECT_EQ(ea, eb) << "curves " << a << " and " << b;
+  }
+  const auto rows = coincident_curve_rows(pairs, "t");
+  ASSERT_EQ(rows.size(), 8u);
+  EXPECT_EQ(rows[0].sense, intervals::Sense::Equal);
+  const VolumeFacts apart =
+      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 7500.25, 2.5), kUp)},
+                                 {oriented(rect_xy(5, 0.25, 6, 7500.25, 2), kUp)}});
+  // Only the shared line x = 5 coincides.
+  EXPECT_EQ(coincident_cap_curves(apart, {1, 2}, kDown).size(), 1u);
 }
 
 TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
