@@ -21,6 +21,14 @@ std::vector<std::pair<int, int>> coincident_cap_curves(const VolumeFacts& facts,
                                                        const std::vector<int>& caps,
                                                        const geom::Vec3& down);
 
+/// Pairs (a < b) of curves of `caps` whose projections along `down` run on
+/// one line over part of their length (a shared stretch longer than 1e-3 of
+/// the shorter curve) without coinciding as in coincident_cap_curves: a
+/// boss's footprint and a foot's that share part of an edge.
+std::vector<std::pair<int, int>> overlapping_cap_curves(const VolumeFacts& facts,
+                                                        const std::vector<int>& caps,
+                                                        const geom::Vec3& down);
+
 /// One equality row per pair; `tag` starts every label.
 std::vector<IntervalRow> coincident_curve_rows(const std::vector<std::pair<int, int>>& pairs,
                                                const std::string& tag);

@@ -233,6 +233,29 @@ TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
   EXPECT_EQ(coincident_cap_curves(apart, {1, 2}, kDown).size(), 1u);
 }
 
+// Footprints sharing part of an edge (issue 15, case 8110): a boss base
+// x 4..5, y 0.25..2.25 over a foot top x 3.5..5, y 1.5..3 share y 1.5..2.25
+// of the line x = 5. Edges on one line that do not overlap, or coincide
+// whole, are not such a stretch.
+TEST(PlanSteps, CapCurvesSharingPartOfALineAreFound) {
+  const VolumeFacts facts =
+      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 2.25, 2), kUp)},
+                                 {oriented(rect_xy(3.5, 1.5, 5, 3, 0), kDown)}});
+  const auto pairs = overlapping_cap_curves(facts, {1, 2}, kDown);
+  ASSERT_EQ(pairs.size(), 1u);
+  for (int c : {pairs[0].first, pairs[0].second}) {
+    const CurveFact& f = facts.curves.at(c);
+    EXPECT_NEAR(facts.vertices.at(f.start).x(), 5.0, 1e-12);
+    EXPECT_NEAR(facts.vertices.at(f.end).x(), 5.0, 1e-12);
+  }
+  // Beside each other on the line y = 1.5 (x 0..1 and 2..3), or the same square.
+  const VolumeFacts apart =
+      testing::polyhedron_facts({{oriented(rect_xy(0, 1.5, 1, 2.5, 2), kUp)},
+                                 {oriented(rect_xy(2, 1.5, 3, 2.5, 0), kDown)},
+                                 {oriented(rect_xy(0, 1.5, 1, 2.5, -1), kDown)}});
+  EXPECT_TRUE(overlapping_cap_curves(apart, {1, 2, 3}, kDown).empty());
+}
+
 TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
   const VolumeFacts facts = testing::polyhedron_facts(pocket());
   const Steps s = run_steps(facts, z_caps(facts), down());
