@@ -26,9 +26,43 @@ std::vector<P2> project_loop(const VolumeFacts& facts, const std::vector<UseFact
   return out;
 }
 
-bool inside(const std::vector<std::vector<P2>>& loops, const P2& p) {
+// A cap's loops projected along the sweep, with their bounding box.
+struct Footprint {
+  std::vector<std::vector<P2>> loops;
+  Eigen::AlignedBox2d box;
+  double width = 0;  ///< twice the area over the perimeter: a strip's width, a disc's radius
+};
+
+double signed_area(const std::vector<P2>& poly) {
+  double a = 0;
+  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    a += poly[j].x() * poly[i].y() - poly[i].x() * poly[j].y();
+  }
+  return 0.5 * a;
+}
+
+Footprint footprint_of(const VolumeFacts& facts, int cap, const geom::Vec3& u,
+                       const geom::Vec3& v) {
+  Footprint f;
+  double largest = 0, others = 0, perimeter = 0;
+  for (const auto& loop : facts.face(cap)->loops) {
+    f.loops.push_back(project_loop(facts, loop, u, v));
+    const auto& poly = f.loops.back();
+    for (size_t i = 0; i < poly.size(); ++i) {
+      f.box.extend(poly[i]);
+      perimeter += (poly[(i + 1) % poly.size()] - poly[i]).norm();
+    }
+    const double a = std::abs(signed_area(poly));
+    others += std::min(a, largest);
+    largest = std::max(a, largest);
+  }
+  f.width = perimeter > 0 ? 2 * std::max(largest - others, 0.0) / perimeter : 0;
+  return f;
+}
+
+bool inside(const Footprint& f, const P2& p) {
   bool in = false;
-  for (const auto& poly : loops) {
+  for (const auto& poly : f.loops) {
     for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
       if ((poly[i].y() > p.y()) != (poly[j].y() > p.y()) &&
           p.x() <
@@ -41,9 +75,9 @@ bool inside(const std::vector<std::vector<P2>>& loops, const P2& p) {
   return in;
 }
 
-double distance(const std::vector<std::vector<P2>>& loops, const P2& p) {
+double distance(const Footprint& f, const P2& p) {
   double best = std::numeric_limits<double>::infinity();
-  for (const auto& poly : loops) {
+  for (const auto& poly : f.loops) {
     for (size_t i = 0; i < poly.size(); ++i) {
       const P2& a = poly[i];
       const P2& b = poly[(i + 1) % poly.size()];
@@ -56,32 +90,62 @@ double distance(const std::vector<std::vector<P2>>& loops, const P2& p) {
   return best;
 }
 
+// Whether the segment ab runs inside the footprint deeper than `tol`: its
+// ends, and the middles of its pieces between crossings of the footprint's
+// boundary (a long edge can cross a narrow cap between its two ends).
+bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol) {
+  Eigen::AlignedBox2d seg(a);
+  seg.extend(b);
+  if (!f.box.intersects(seg)) return false;
+  std::vector<double> ts{0.0, 1.0};
+  const P2 ab = b - a;
+  for (const auto& poly : f.loops) {
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const P2& p = poly[i];
+      const P2 pq = poly[(i + 1) % poly.size()] - p;
+      const double den = ab.x() * pq.y() - ab.y() * pq.x();
+      if (den == 0) continue;  // parallel: its ends are tested as points
+      const P2 ap = p - a;
+      const double t = (ap.x() * pq.y() - ap.y() * pq.x()) / den;
+      const double s = (ap.x() * ab.y() - ap.y() * ab.x()) / den;
+      if (t > 0 && t < 1 && s >= 0 && s <= 1) ts.push_back(t);
+    }
+  }
+  std::sort(ts.begin(), ts.end());
+  auto deep = [&](double t) {
+    const P2 x = a + t * ab;
+    return inside(f, x) && distance(f, x) > tol;
+  };
+  if (deep(0.0)) return true;
+  for (size_t k = 0; k + 1 < ts.size(); ++k) {
+    if (deep(0.5 * (ts[k] + ts[k + 1]))) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps,
-                          const geom::Vec3& down, double tolerance) {
+                          const geom::Vec3& down, double relative) {
   const geom::Vec3 d = down.normalized();
   const geom::Vec3 e = std::abs(d.x()) > 0.6 ? geom::Vec3::UnitY() : geom::Vec3::UnitX();
   const geom::Vec3 u = (e - e.dot(d) * d).normalized();
   const geom::Vec3 v = d.cross(u);
-  std::map<int, std::vector<std::vector<P2>>> footprint;
-  for (int c : caps) {
-    for (const auto& loop : facts.face(c)->loops)
-      footprint[c].push_back(project_loop(facts, loop, u, v));
-  }
+  std::map<int, Footprint> footprint;
+  for (int c : caps) footprint[c] = footprint_of(facts, c, u, v);
   std::vector<int> out;
   for (int c : caps) {
-    const auto& mine = footprint.at(c);
+    const Footprint& mine = footprint.at(c);
+    // Relative to the cap's own width, not only the volume's size: a long
+    // boss overhanging its block by less than 0.5 % of the whole part still
+    // has its top cut by the block's edge (issue 15).
+    const double tol = relative * std::min(facts.size(), mine.width);
     bool cut = false;
     for (int o : caps) {
       if (o == c || cut) continue;
-      for (const auto& loop : footprint.at(o)) {
-        for (const P2& p : loop) {
-          if (inside(mine, p) && distance(mine, p) > tolerance) {
-            cut = true;
-            break;
-          }
-        }
+      for (const auto& loop : footprint.at(o).loops) {
+        for (size_t k = 0; k < loop.size() && !cut; ++k)
+          cut = reaches_inside(mine, loop[k], loop[(k + 1) % loop.size()], tol);
         if (cut) break;
       }
     }
@@ -98,7 +162,7 @@ CapRoles cap_roles(const VolumeFacts& facts, const SweepOrder& order, const Barr
   std::vector<int> caps;
   for (const auto& [cap, upper] : order.upper) caps.push_back(cap);
   if (down) {
-    out.cut = cut_caps(facts, caps, *down, 5e-3 * facts.size());
+    out.cut = cut_caps(facts, caps, *down, 5e-3);
   } else {
     for (size_t b = 0; b < tree.barrels.size(); ++b) {
       if (tree.barrels[b].lower.size() > 1) {

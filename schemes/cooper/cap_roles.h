@@ -42,9 +42,11 @@ CapRoles cap_roles(const VolumeFacts& facts, const SweepOrder& order, const Barr
                    const geom::Vec3* down, const CapSchemeOf& scheme_of, bool polygon_mesher);
 
 /// Footprint test used by cap_roles: the caps of `facts` into whose region
-/// (projected along `down`) a loop of another cap of `caps` reaches deeper
-/// than `tolerance`.
+/// (projected along `down`) a loop of another cap of `caps` reaches: a point
+/// of it, or of an edge crossing it between two points, lies inside deeper
+/// than `relative` times the cap's width (twice its area over its
+/// perimeter), at most `relative` times the volume's size.
 std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps,
-                          const geom::Vec3& down, double tolerance);
+                          const geom::Vec3& down, double relative);
 
 }  // namespace cooperage::cooper

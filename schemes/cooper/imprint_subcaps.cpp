@@ -44,6 +44,8 @@ ImprintResult Imprinter::run() {
       return r_;
     }
     if (try_matches()) continue;
+    // Before the gaps: a subtraction would cut a zero-area sliver along it.
+    if (try_coincident()) continue;
     if (try_gaps()) continue;
     r_.why = "no imprinting step applies to the unmatched subcaps" + unmatched_list();
     return r_;
@@ -454,6 +456,67 @@ bool Imprinter::hole_loops(int e, const Subcap& a) {
       subtract_inside(1 - e, bi, Loop(img.rbegin(), img.rend()));
       r_.steps.push_back(ImprintStep::Subtract);
       return true;
+    }
+  }
+  return false;
+}
+
+bool Imprinter::try_coincident() {
+  for (int e = 0; e < 2; ++e) {
+    for (const Subcap& a : caps(e)) {
+      if (matched(a.id)) continue;
+      for (const Loop& l : a.loops) {
+        if (coincident_loop(e, l)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Seam tolerance as in project(): a fraction of the shorter edge at each node.
+bool Imprinter::coincident_loop(int e, const Loop& la) {
+  const size_t n = la.size();
+  for (int v : la) {
+    if (partner(e, v)) return false;
+  }
+  auto tol = [&](size_t i) {
+    const Vec2& x = xy().at(la[i]);
+    return options_.seam_fraction * std::min((xy().at(la[(i + 1) % n]) - x).norm(),
+                                             (xy().at(la[(i + n - 1) % n]) - x).norm());
+  };
+  for (const Subcap& b : caps(1 - e)) {
+    if (matched(b.id)) continue;
+    for (const Loop& lb : b.loops) {
+      if (lb.size() != n) continue;
+      const bool free = std::none_of(lb.begin(), lb.end(), [&](int w) {
+        return partner_[1 - e].count(w) > 0 || exterior_.count(w) > 0;
+      });
+      if (!free) continue;
+      // The node of lb at la[0], then the same cyclic order either way round.
+      long first = -1;
+      for (size_t k = 0; k < n && first < 0; ++k) {
+        if ((xy().at(lb[k]) - xy().at(la[0])).norm() < tol(0)) first = static_cast<long>(k);
+      }
+      if (first < 0) continue;
+      for (const long step : {1L, -1L}) {
+        auto at = [&](size_t i) {
+          const long m = static_cast<long>(n);
+          return lb[static_cast<size_t>(((first + step * static_cast<long>(i)) % m + m) % m)];
+        };
+        bool same = true;
+        for (size_t i = 0; i < n && same; ++i)
+          same = (xy().at(at(i)) - xy().at(la[i])).norm() < tol(i);
+        if (!same) continue;
+        for (size_t i = 0; i < n; ++i) {
+          link(e, la[i], at(i));
+          r_.interior_ribs.pop_back();  // seams, not new rib nodes
+          r_.interior_ribs.push_back(e == 0 ? std::make_pair(la[i], at(i))
+                                            : std::make_pair(at(i), la[i]));
+          r_.seams.push_back({la[i], at(i)});
+        }
+        r_.steps.push_back(ImprintStep::Seam);
+        return true;
+      }
     }
   }
   return false;

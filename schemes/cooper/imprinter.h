@@ -81,6 +81,11 @@ class Imprinter {
   // giving a's loop ribs; the gaps between them are then subtracted.
   bool free_crossing(int e, const Subcap& a);
 
+  // sec. 5.2/5.4 when a free loop projects exactly onto an opposing loop (a
+  // boss above a foot of the same footprint): every node seams onto its
+  // opposing node, loop for loop; the subcaps then match (sec. 5.1).
+  bool try_coincident();
+  bool coincident_loop(int e, const Loop& la);
   // Splits subcap bi of end e along a path x -> path -> y between two nodes
   // of one of its hole loops: the piece between the path and one arc of the
   // hole becomes a subcap, the hole grows by it (sec. 5.2-5.3).

@@ -3,8 +3,10 @@
 #include "framework/core/log.h"
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_scheme.h"
+#include "schemes/cooper/coincident_curves.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <sstream>
 
@@ -87,6 +89,44 @@ std::string summary(const VolumePlan& p) {
   return w.str();
 }
 
+// Footprints that share part of an edge across the volume (a boss's base
+// and a foot's top along one line, with no side face joining the two
+// curves): imprinting splits subcaps along such a stretch wrongly or not
+// at all (issue 15), so the plan refuses, naming the curves; decompose
+// "auto" may then cut along the line. Empty when there is none.
+std::string shared_edge_stretch(const VolumeFacts& facts, const SweepOrder& order,
+                                const geom::Vec3& down) {
+  std::vector<int> caps;
+  for (const auto& [cap, upper] : order.upper) caps.push_back(cap);
+  auto face_of = [&](int curve, int skip) {
+    std::vector<int> out;
+    for (const FaceFact& f : facts.faces) {
+      if (f.id == skip) continue;
+      for (const auto& loop : f.loops) {
+        for (const UseFact& u : loop) {
+          if (u.curve == curve) out.push_back(f.id);
+        }
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  for (const auto& [a, b] : overlapping_cap_curves(facts, caps, down)) {
+    const auto fa = face_of(a, 0), fb = face_of(b, 0);
+    std::vector<int> both;
+    std::set_intersection(fa.begin(), fa.end(), fb.begin(), fb.end(), std::back_inserter(both));
+    // Sides of one wall: the lattice ties their counts, the ribs their nodes.
+    if (std::any_of(both.begin(), both.end(), [&](int f) { return !order.upper.count(f); }))
+      continue;
+    return "curves " + std::to_string(a) + " (surfaces " + join(fa) + ") and " + std::to_string(b) +
+           " (surfaces " + join(fb) +
+           ") run on one line along the sweep over part of their length; imprinting cannot yet "
+           "split the subcaps along a shared stretch of edge, not supported (decompose along "
+           "that line, e.g. with <webcut>)";
+  }
+  return {};
+}
+
 // Runs the steps for one sorting of the faces.
 VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                     const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
@@ -115,6 +155,10 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   p.roles =
       cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
+  if (p.down) {
+    if (const std::string why = shared_edge_stretch(facts, p.order, *p.down); !why.empty())
+      return fail(5, why);
+  }
   if (const std::string h = check_hints(p, in.hints); !h.empty()) return fail(6, h);
   std::set<int> even;
   for (const auto& [cap, upper] : p.order.upper) {
@@ -126,6 +170,13 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   }
   p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even,
                               volume_name(p.volume) + " (cooper)");
+  if (p.down) {
+    std::vector<int> caps;
+    for (const auto& [cap, upper] : p.order.upper) caps.push_back(cap);
+    for (IntervalRow& r : coincident_curve_rows(coincident_cap_curves(facts, caps, *p.down),
+                                                volume_name(p.volume) + " (cooper)"))
+      p.rows.push_back(std::move(r));
+  }
   if (p.one_barrel()) {
     p.source = cand.source;
     p.target = cand.target;

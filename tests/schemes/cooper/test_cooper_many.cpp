@@ -540,9 +540,10 @@ TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
 TEST(CooperMany, JournalsMeshThroughThePipeline) {
   const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
   const std::vector<std::pair<std::string, double>> journals = {
-      {"cooper_square_boss.xml", 33.0},    {"cooper_two_bosses_hole.xml", 67.0},
-      {"cooper_stacked_bosses.xml", 21.0}, {"cooper_appendages.xml", 52.875},
-      {"cooper_fig3a_webcut.xml", 34.0},   {"cooper_straddling_step.xml", 58.0}};
+      {"cooper_square_boss.xml", 33.0},      {"cooper_two_bosses_hole.xml", 67.0},
+      {"cooper_stacked_bosses.xml", 21.0},   {"cooper_appendages.xml", 52.875},
+      {"cooper_fig3a_webcut.xml", 34.0},     {"cooper_straddling_step.xml", 58.0},
+      {"cooper_overhanging_boss.xml", 77.5}, {"cooper_boss_over_foot.xml", 34.0}};
   const auto registry = with_polygon_mesher();
   for (const auto& [file, exact] : journals) {
     SCOPED_TRACE(file);
@@ -552,6 +553,23 @@ TEST(CooperMany, JournalsMeshThroughThePipeline) {
     const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
     expect_many_to_one(model, r, exact, file.c_str());
   }
+}
+
+// A round boss above a round foot of the same radius: the rims get equal
+// counts in the plan and seam node for node (issue 15).
+TEST(CooperMany, RoundBossAboveARoundFootMeshes) {
+  const auto registry = with_polygon_mesher();
+  const io::Job job =
+      io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
+                       "/tests/schemes/cooper/data/cooper_round_boss_over_foot.xml");
+  const geom::Model model = pipeline::build_geometry(job);
+  const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper II] cooper_round_boss_over_foot.xml: %zu hexes, min scaled Jacobian %.4f\n",
+              s.hexes, s.min_sj);
 }
 
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:

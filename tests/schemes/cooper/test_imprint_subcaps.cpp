@@ -147,6 +147,25 @@ TEST(ImprintSubcaps, SubtractionOfASubcapInsideTheOpposingCap) {
   EXPECT_EQ(r.ends.lower.size(), 2u);
 }
 
+// A boss above a foot of the same footprint (a hub through a plate): the
+// boss base and the foot top project onto each other node for node, and
+// neither has a rib; they seam and match, and so do the shoulder and the
+// bottom around them (issue 15: planned, then "no imprinting step
+// applies").
+TEST(ImprintSubcaps, ABossAboveAFootOfTheSameFootprintSeamsLoopForLoop) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(0, 0, 4, 4), hole(1, 1, 3, 3)});  // shoulder
+  h.subcap(0, 2, {rect(1, 1, 3, 3)});                    // boss base
+  h.subcap(1, 3, {rect(0, 0, 4, 4), hole(1, 1, 3, 3)});  // bottom
+  h.subcap(1, 4, {rect(1, 1, 3, 3)});                    // foot top
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 16);
+  EXPECT_EQ(r.matches, (std::vector<std::pair<int, int>>{{1, 3}, {2, 4}}));
+  EXPECT_EQ(r.seams.size(), 8u);                             // the 8 nodes of the common loop
+  EXPECT_EQ(r.ends.upper.size() + r.ends.lower.size(), 4u);  // nothing split
+}
+
 // Gamma_ab continuous on part of a's loop: the left half of the upper cap.
 TEST(ImprintSubcaps, SubtractionAlongTheBoundarySplitsTheOpposingCap) {
   Hand h;

@@ -9,6 +9,7 @@
 #include "schemes/cooper/barrel_tree.h"
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_roles.h"
+#include "schemes/cooper/coincident_curves.h"
 #include "schemes/cooper/plan_volume.h"
 
 #include <gtest/gtest.h>
@@ -172,8 +173,87 @@ TEST(PlanSteps, ABossEndsItsBarrelOnTheShoulder) {
   // One container: two calls would give iterators into two temporaries.
   const auto z = z_caps(facts);
   std::vector<int> caps(z.begin(), z.end());
-  const auto cut = cut_caps(facts, caps, kDown, 1e-3);
+  const auto cut = cut_caps(facts, caps, kDown, 5e-3);
   EXPECT_EQ(cut.size(), 1u);  // the bottom: the boss's footprint lies inside it
+}
+
+// A boss overhanging its 4 x 4 block far (issue 15, campaign cases 8110 and
+// 8556): the block's edge y = 4 crosses the boss top's footprint, so
+// imprinting cuts the top. Only the caps matter to the footprint test. The
+// cut is 0.5 deep (0.15 for the narrow boss) in a part 200 long: a
+// tolerance relative to the part's size missed it; and the narrow boss lies
+// between two samples of the block's edge, so only the crossing shows.
+TEST(PlanSteps, ALongBossOverhangingItsBlockHasItsTopCut) {
+  for (const auto& [x0, x1] : {std::pair{1.5, 2.5}, std::pair{1.1, 1.4}}) {
+    SCOPED_TRACE(x0);
+    const VolumeFacts facts =
+        testing::polyhedron_facts({{oriented(rect_xy(0, 0, 4, 4, 0), kDown)},
+                                   {oriented(rect_xy(x0, 1.5, x1, 201.5, 3), kUp)}});
+    const auto cut = cut_caps(facts, {1, 2}, kDown, 5e-3);
+    // The bottom holds part of the top's footprint, the top part of the bottom's.
+    EXPECT_EQ(cut, (std::vector<int>{1, 2}));
+  }
+  // The same boss standing inside the block: nothing cuts its top.
+  const VolumeFacts inside = testing::polyhedron_facts(
+      {{oriented(rect_xy(0, 0, 4, 4, 0), kDown)}, {oriented(rect_xy(1.5, 1.5, 2.5, 3.5, 3), kUp)}});
+  EXPECT_EQ(cut_caps(inside, {1, 2}, kDown, 5e-3), (std::vector<int>{1}));
+}
+
+// Cap curves that project onto each other (issue 15: a round boss above a
+// round foot of the same radius needs equal counts on both rims): the
+// boss top's four edges over the shoulder's hole, the top's outer edges
+// over the bottom's; nothing else. Two long parallel edges 1 apart (the
+// campaign's 7,500-long boss) are not coincident.
+TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
+  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const auto z = z_caps(facts);
+  const auto pairs = coincident_cap_curves(facts, std::vector<int>(z.begin(), z.end()), kDown);
+  EXPECT_EQ(pairs.size(), 8u);
+  for (const auto& [a, b] : pairs) {
+    const CurveFact& ca = facts.curves.at(a);
+    const CurveFact& cb = facts.curves.at(b);
+    std::set<std::pair<long, long>> ea, eb;
+    for (int v : {ca.start, ca.end}) {
+      const Vec3& p = facts.vertices.at(v);
+      ea.insert({std::lround(p.x() * 1e6), std::lround(p.y() * 1e6)});
+    }
+    for (int v : {cb.start, cb.end}) {
+      const Vec3& p = facts.vertices.at(v);
+      eb.insert({std::lround(p.x() * 1e6), std::lround(p.y() * 1e6)});
+    }
+    EXPECT_EQ(ea, eb) << "curves " << a << " and " << b;
+  }
+  const auto rows = coincident_curve_rows(pairs, "t");
+  ASSERT_EQ(rows.size(), 8u);
+  EXPECT_EQ(rows[0].sense, intervals::Sense::Equal);
+  const VolumeFacts apart =
+      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 7500.25, 2.5), kUp)},
+                                 {oriented(rect_xy(5, 0.25, 6, 7500.25, 2), kUp)}});
+  // Only the shared line x = 5 coincides.
+  EXPECT_EQ(coincident_cap_curves(apart, {1, 2}, kDown).size(), 1u);
+}
+
+// Footprints sharing part of an edge (issue 15, case 8110): a boss base
+// x 4..5, y 0.25..2.25 over a foot top x 3.5..5, y 1.5..3 share y 1.5..2.25
+// of the line x = 5. Edges on one line that do not overlap, or coincide
+// whole, are not such a stretch.
+TEST(PlanSteps, CapCurvesSharingPartOfALineAreFound) {
+  const VolumeFacts facts =
+      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 2.25, 2), kUp)},
+                                 {oriented(rect_xy(3.5, 1.5, 5, 3, 0), kDown)}});
+  const auto pairs = overlapping_cap_curves(facts, {1, 2}, kDown);
+  ASSERT_EQ(pairs.size(), 1u);
+  for (int c : {pairs[0].first, pairs[0].second}) {
+    const CurveFact& f = facts.curves.at(c);
+    EXPECT_NEAR(facts.vertices.at(f.start).x(), 5.0, 1e-12);
+    EXPECT_NEAR(facts.vertices.at(f.end).x(), 5.0, 1e-12);
+  }
+  // Beside each other on the line y = 1.5 (x 0..1 and 2..3), or the same square.
+  const VolumeFacts apart =
+      testing::polyhedron_facts({{oriented(rect_xy(0, 1.5, 1, 2.5, 2), kUp)},
+                                 {oriented(rect_xy(2, 1.5, 3, 2.5, 0), kDown)},
+                                 {oriented(rect_xy(0, 1.5, 1, 2.5, -1), kDown)}});
+  EXPECT_TRUE(overlapping_cap_curves(apart, {1, 2, 3}, kDown).empty());
 }
 
 TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {

@@ -1,0 +1,123 @@
+#include "schemes/cooper/coincident_curves.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace cooperage::cooper {
+namespace {
+
+using P2 = Eigen::Vector2d;
+
+std::vector<P2> projected(const CurveFact& c, const geom::Vec3& u, const geom::Vec3& v) {
+  std::vector<P2> out;
+  for (const geom::Vec3& x : c.samples) out.emplace_back(x.dot(u), x.dot(v));
+  return out;
+}
+
+// Sample for sample, one way round or the other: the same geometry
+// sampled at the same parameters (a B-spline copy of a circle is not seen,
+// and keeps the behaviour without the row).
+bool same_samples(const std::vector<P2>& a, const std::vector<P2>& b, double tol) {
+  if (a.size() != b.size()) return false;
+  bool forward = true, backward = true;
+  for (size_t k = 0; k < a.size(); ++k) {
+    forward = forward && (a[k] - b[k]).norm() <= tol;
+    backward = backward && (a[k] - b[b.size() - 1 - k]).norm() <= tol;
+  }
+  return forward || backward;
+}
+
+// The length over which segments p0p1 and q0q1 run on one line.
+double shared_length(const P2& p0, const P2& p1, const P2& q0, const P2& q1, double tol) {
+  const P2 d = p1 - p0;
+  const double len = d.norm();
+  if (!(len > 0)) return 0;
+  const P2 t = d / len;
+  auto off = [&](const P2& x) { return std::abs(t.x() * (x - p0).y() - t.y() * (x - p0).x()); };
+  if (off(q0) > tol || off(q1) > tol) return 0;
+  const double a = (q0 - p0).dot(t), b = (q1 - p0).dot(t);
+  return std::max(0.0, std::min(len, std::max(a, b)) - std::max(0.0, std::min(a, b)));
+}
+
+struct Projected {
+  std::vector<const CurveFact*> curves;
+  std::vector<std::vector<P2>> lines;
+};
+
+Projected project_cap_curves(const VolumeFacts& facts, const std::vector<int>& caps,
+                             const geom::Vec3& down) {
+  const geom::Vec3 d = down.normalized();
+  const geom::Vec3 e = std::abs(d.x()) > 0.6 ? geom::Vec3::UnitY() : geom::Vec3::UnitX();
+  const geom::Vec3 u = (e - e.dot(d) * d).normalized();
+  const geom::Vec3 v = d.cross(u);
+  std::set<int> ids;
+  for (int c : caps) {
+    for (const auto& loop : facts.face(c)->loops) {
+      for (const UseFact& use : loop) ids.insert(use.curve);
+    }
+  }
+  Projected out;
+  for (int id : ids) {
+    out.curves.push_back(&facts.curves.at(id));
+    out.lines.push_back(projected(*out.curves.back(), u, v));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> overlapping_cap_curves(const VolumeFacts& facts,
+                                                        const std::vector<int>& caps,
+                                                        const geom::Vec3& down) {
+  const Projected p = project_cap_curves(facts, caps, down);
+  const double tol = 1e-6 * facts.size();
+  std::vector<std::pair<int, int>> out;
+  for (size_t i = 0; i < p.curves.size(); ++i) {
+    for (size_t j = i + 1; j < p.curves.size(); ++j) {
+      const auto& a = p.lines[i];
+      const auto& b = p.lines[j];
+      if (same_samples(a, b, tol)) continue;
+      double shared = 0;
+      for (size_t k = 0; k + 1 < a.size(); ++k) {
+        for (size_t m = 0; m + 1 < b.size(); ++m)
+          shared += shared_length(a[k], a[k + 1], b[m], b[m + 1], tol);
+      }
+      if (shared > 1e-3 * std::min(p.curves[i]->length, p.curves[j]->length))
+        out.push_back({p.curves[i]->id, p.curves[j]->id});
+    }
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> coincident_cap_curves(const VolumeFacts& facts,
+                                                       const std::vector<int>& caps,
+                                                       const geom::Vec3& down) {
+  const Projected p = project_cap_curves(facts, caps, down);
+  const double tol = 1e-6 * facts.size();
+  std::vector<std::pair<int, int>> out;
+  for (size_t i = 0; i < p.curves.size(); ++i) {
+    for (size_t j = i + 1; j < p.curves.size(); ++j) {
+      if (same_samples(p.lines[i], p.lines[j], tol))
+        out.push_back({p.curves[i]->id, p.curves[j]->id});
+    }
+  }
+  return out;
+}
+
+std::vector<IntervalRow> coincident_curve_rows(const std::vector<std::pair<int, int>>& pairs,
+                                               const std::string& tag) {
+  std::vector<IntervalRow> rows;
+  for (const auto& [a, b] : pairs) {
+    IntervalRow r;
+    r.terms = {{a, 1}, {b, -1}};
+    r.label = tag + ": curves " + std::to_string(a) + " and " + std::to_string(b) +
+              " project onto each other along the sweep (their nodes seam)";
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+}  // namespace cooperage::cooper
