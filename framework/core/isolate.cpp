@@ -54,6 +54,12 @@ std::size_t address_space_in_use() {
   }
   const rlimit no_core{0, 0};
   ::setrlimit(RLIMIT_CORE, &no_core);
+  if (limits.cpu_seconds > 0) {
+    // SIGXCPU at the soft limit (fatal: no handler, no core), SIGKILL soon after.
+    const rlim_t soft = static_cast<rlim_t>(std::ceil(std::min(limits.cpu_seconds, 1e7)));
+    const rlimit cpu{soft, soft + 2};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+  }
   if (limits.memory_bytes > 0) {
     const rlim_t cap = static_cast<rlim_t>(address_space_in_use() + limits.memory_bytes);
     const rlimit as{cap, cap};
@@ -114,8 +120,13 @@ std::string IsolatedRun::describe(const IsolationLimits& limits) const {
              (name ? std::string(", ") + name : std::string()) + ")";
     }
     case Outcome::TimedOut: {
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "it did not finish within %g s", limits.seconds);
+      char buf[80];
+      if (cpu) {
+        std::snprintf(buf, sizeof buf, "it used more than %g s of processor time",
+                      std::ceil(limits.cpu_seconds));
+      } else {
+        std::snprintf(buf, sizeof buf, "it did not finish within %g s", limits.seconds);
+      }
       return buf;
     }
     case Outcome::OutOfMemory:
@@ -177,8 +188,9 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
     return run;
   }
   // EOF came; the child is exiting. Give it until the deadline, then kill it.
+  rusage usage{};
   for (;;) {
-    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    const pid_t r = ::wait4(pid, &status, WNOHANG, &usage);
     if (r == pid) break;
     if (r < 0 && errno != EINTR) break;
     if (Clock::now() >= deadline) {
@@ -189,6 +201,16 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
       return run;
     }
     ::usleep(1000);
+  }
+  const double cpu_used =
+      static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+      1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  if (WIFSIGNALED(status) && limits.cpu_seconds > 0 &&
+      (WTERMSIG(status) == SIGXCPU ||
+       (WTERMSIG(status) == SIGKILL && cpu_used >= std::floor(limits.cpu_seconds)))) {
+    run.outcome = IsolatedRun::Outcome::TimedOut;
+    run.cpu = true;
+    return run;
   }
   if (WIFSIGNALED(status)) {
     run.outcome = IsolatedRun::Outcome::Crashed;

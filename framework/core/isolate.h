@@ -16,6 +16,11 @@ namespace cooperage {
 struct IsolationLimits {
   double seconds = 60;           ///< wall-clock limit; the child is killed after it
   std::size_t memory_bytes = 0;  ///< extra address space the child may take (0: no limit)
+  /// Processor time the child may use (0: no limit). Unlike the wall-clock
+  /// limit it does not shrink when the machine is busy: a valid file is not
+  /// refused because other work slowed its reading, while a kernel loop
+  /// still ends after this much computing.
+  double cpu_seconds = 0;
 };
 
 /// How an isolated piece of work ended.
@@ -24,13 +29,14 @@ struct IsolatedRun {
     Done,         ///< work returned; `payload` holds the bytes it produced
     Failed,       ///< work threw; `code` and `payload` (the message) say why
     Crashed,      ///< the child died of `signal` (or exited without a word)
-    TimedOut,     ///< killed after IsolationLimits::seconds
+    TimedOut,     ///< killed after IsolationLimits::seconds (or cpu_seconds: `cpu`)
     OutOfMemory,  ///< an allocation failed under IsolationLimits::memory_bytes
   };
   Outcome outcome = Outcome::Crashed;
   std::string payload;
   ErrorCode code = ErrorCode::Internal;
   int signal = 0;
+  bool cpu = false;  ///< TimedOut by the processor-time limit, not the wall clock
 
   /// A clause for a person: "it crashed (signal 11, SIGSEGV)", "it did not
   /// finish within 30 s", "it needed more than 2 GB of memory"; "" for Done.

@@ -236,20 +236,26 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
   out = header + bytes.str();
 }
 
-/// Time and memory the child may take: generous for real files (30 s plus
-/// 10 s per MB; 4 GB plus 100 times the file), bounded for damaged ones.
-/// COOPERAGE_CAD_TIMEOUT (seconds) overrides the time.
+/// Time and memory the child may take: generous for real files (30 s of
+/// processor time plus 10 s per MB; 4 GB plus 100 times the file), bounded
+/// for damaged ones. Processor time, not wall time: on a busy machine an
+/// 18-volume assembly that reads in 9 s alone ran past a 31-s wall-clock
+/// limit and was refused as unreadable. The wall clock stays as a backstop
+/// (4 times the processor time plus a minute) for a child that waits
+/// without computing. COOPERAGE_CAD_TIMEOUT (seconds) overrides the
+/// processor time.
 IsolationLimits limits_for(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   const double mb = ec ? 0.0 : static_cast<double>(size) / 1e6;
   IsolationLimits limits;
-  limits.seconds = 30.0 + 10.0 * mb;
+  limits.cpu_seconds = 30.0 + 10.0 * mb;
   if (const char* env = std::getenv("COOPERAGE_CAD_TIMEOUT")) {
     char* end = nullptr;
     const double s = std::strtod(env, &end);
-    if (end != env && s > 0 && s < 1e6) limits.seconds = s;
+    if (end != env && s > 0 && s < 1e6) limits.cpu_seconds = s;
   }
+  limits.seconds = 4.0 * limits.cpu_seconds + 60.0;
   limits.memory_bytes = static_cast<std::size_t>(4e9 + 100.0 * mb * 1e6);
   return limits;
 }

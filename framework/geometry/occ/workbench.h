@@ -38,8 +38,9 @@ class Workbench {
   /// STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep); the file's length
   /// unit is kept (no conversion to mm). `heal` runs shape healing for small
   /// tolerance defects. The kernel reads the file in a child process with a
-  /// time and memory limit (30 s + 10 s per MB, or $COOPERAGE_CAD_TIMEOUT
-  /// seconds): a crash or a hang there is a ParseError "<file>: the CAD
+  /// processor-time and memory limit (30 s + 10 s per MB, or
+  /// $COOPERAGE_CAD_TIMEOUT seconds; the wall clock only as a backstop at 4
+  /// times that plus a minute): a crash or a hang there is a ParseError "<file>: the CAD
   /// kernel could not read it (...)". The child also builds and validates
   /// the model of the file's shape, so a fault there stays in the child too.
   void import_file(const std::string& name, const std::string& path, bool heal = true);

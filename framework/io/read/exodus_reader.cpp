@@ -256,7 +256,10 @@ MeshFile read_exodus(const std::string& path) {
   std::error_code ec;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
   IsolationLimits limits;
-  limits.seconds = 30.0 + 10.0 * static_cast<double>(size) / 1e6;
+  // Processor time, so a busy machine does not fail a valid file; the wall
+  // clock only as a backstop (as for CAD files, framework/geometry/occ/import.cpp).
+  limits.cpu_seconds = 30.0 + 10.0 * static_cast<double>(size) / 1e6;
+  limits.seconds = 4.0 * limits.cpu_seconds + 60.0;
   limits.memory_bytes = static_cast<std::size_t>(2e9 + 50.0 * static_cast<double>(size));
   const IsolatedRun run = run_isolated(
       [&](std::string& out) { out = serialise(read_with_libexodus(path, size)); }, limits);

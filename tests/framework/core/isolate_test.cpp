@@ -80,5 +80,40 @@ TEST(Isolate, TheChildsOutputDoesNotReachThisProcess) {
   EXPECT_EQ(r.payload, "ok");
 }
 
+TEST(Isolate, AComputingLoopIsStoppedByTheProcessorTimeLimit) {
+  const auto t0 = std::chrono::steady_clock::now();
+  IsolationLimits limits;
+  limits.seconds = 60;  // the wall clock would wait much longer
+  limits.cpu_seconds = 1;
+  const IsolatedRun r = run_isolated(
+      [](std::string&) {
+        volatile unsigned long x = 0;
+        for (;;) x = x + 1;
+      },
+      limits);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(r.outcome, Outcome::TimedOut);
+  EXPECT_TRUE(r.cpu);
+  EXPECT_LT(seconds, 30.0);  // 1 s of processor time, whatever else the machine runs
+  EXPECT_EQ(r.describe(limits), "it used more than 1 s of processor time");
+}
+
+TEST(Isolate, WaitingIsNotChargedAsProcessorTime) {
+  // A child that sleeps 2 s under a 1-s processor-time limit finishes: only
+  // computing counts, so a slow (busy) machine does not fail a valid file.
+  IsolationLimits limits;
+  limits.seconds = 60;
+  limits.cpu_seconds = 1;
+  const IsolatedRun r = run_isolated(
+      [](std::string& out) {
+        std::this_thread::sleep_for(std::chrono::seconds(2));
+        out = "done";
+      },
+      limits);
+  ASSERT_EQ(r.outcome, Outcome::Done);
+  EXPECT_EQ(r.payload, "done");
+}
+
 }  // namespace
 }  // namespace cooperage
