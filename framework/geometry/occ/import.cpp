@@ -238,12 +238,11 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
 
 /// Time and memory the child may take: generous for real files (30 s of
 /// processor time plus 10 s per MB; 4 GB plus 100 times the file), bounded
-/// for damaged ones. Processor time, not wall time: on a busy machine an
-/// 18-volume assembly that reads in 9 s alone ran past a 31-s wall-clock
-/// limit and was refused as unreadable. The wall clock stays as a backstop
-/// (4 times the processor time plus a minute) for a child that waits
-/// without computing. COOPERAGE_CAD_TIMEOUT (seconds) overrides the
-/// processor time.
+/// for damaged ones. Processor time, not wall time, so that other work on a
+/// busy machine cannot make a valid file look unreadable; the wall clock
+/// stays as a backstop (4 times the processor time plus a minute) for a
+/// child that waits without computing. COOPERAGE_CAD_TIMEOUT (seconds)
+/// overrides the processor time.
 IsolationLimits limits_for(const std::string& path) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
