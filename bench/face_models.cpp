@@ -3,6 +3,8 @@
 #include "bench_models.h"
 #include "framework/geometry/occ/workbench.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -123,6 +125,35 @@ BenchFace bench_face(int k, const std::string& brep_path) {
   f.model = wb.build_model();
   f.surface = top ? top_surface(f.model) : largest_cylinder(f.model);
   return f;
+}
+
+Loops2D unit_square_2d(int n) {
+  std::vector<Eigen::Vector2d> loop;
+  const Eigen::Vector2d corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int side = 0; side < 4; ++side)
+    for (int i = 0; i < n; ++i)
+      loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
+  return {loop};
+}
+
+Loops2D plate_with_holes_2d(int n) {
+  Loops2D loops(1);
+  const Eigen::Vector2d corners[] = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
+  for (int side = 0; side < 4; ++side) {
+    const int k = (side % 2 == 0 ? 4 : 2) * n;
+    for (int i = 0; i < k; ++i)
+      loops[0].push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / k);
+  }
+  const double holes[3][3] = {{1.0, 1.0, 0.4}, {2.2, 1.0, 0.3}, {3.2, 0.8, 0.25}};
+  for (const auto& h : holes) {
+    const int k = 2 * std::max(2, static_cast<int>(std::lround(M_PI * h[2] * n)));  // even
+    loops.emplace_back();
+    for (int i = 0; i < k; ++i) {
+      const double a = -2.0 * M_PI * i / k;  // clockwise
+      loops.back().emplace_back(h[0] + h[2] * std::cos(a), h[1] + h[2] * std::sin(a));
+    }
+  }
+  return loops;
 }
 
 }  // namespace cooperage::bench

@@ -5,8 +5,11 @@
 
 #include "framework/geometry/model.h"
 
+#include <Eigen/Core>
+
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace cooperage::bench {
 
@@ -35,5 +38,16 @@ BenchFace bench_face(int k, const std::string& brep_path = "");
 /// The 10 x 6 x 1 plate with three through holes of radius 0.8 (the peers'
 /// plate_three_holes); its top face is bench_face(3).surface.
 geom::Model plate_three_holes();
+
+/// Boundary loops of a 2D face for pave_2d (outer loop counter-clockwise,
+/// holes clockwise), used by BM_Pave2D* and bench/pave_cleanup_table.cpp.
+using Loops2D = std::vector<std::vector<Eigen::Vector2d>>;
+
+/// The unit square with n boundary segments per side.
+Loops2D unit_square_2d(int n);
+
+/// The 4 x 2 plate with three round holes of the pave tests, n boundary
+/// segments per unit length; each hole gets an even count.
+Loops2D plate_with_holes_2d(int n);
 
 }  // namespace cooperage::bench

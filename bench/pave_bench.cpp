@@ -223,13 +223,7 @@ void run_pave_2d(benchmark::State& state, const std::vector<std::vector<Eigen::V
 // half a spacing apart and meet at seams (with n even the frontal mesh is
 // the structured grid, ~1.8 M quads/s: no test of the general path).
 void BM_Pave2D(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  std::vector<Eigen::Vector2d> loop;
-  const Eigen::Vector2d corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (int side = 0; side < 4; ++side)
-    for (int i = 0; i < n; ++i)
-      loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
-  run_pave_2d(state, {loop});
+  run_pave_2d(state, bench::unit_square_2d(static_cast<int>(state.range(0))));
 }
 // ~5.6k, ~55k, ~555k quads.
 BENCHMARK(BM_Pave2D)->Arg(75)->Arg(235)->Arg(745)->Unit(benchmark::kMillisecond);
@@ -238,24 +232,7 @@ BENCHMARK(BM_Pave2D)->Arg(75)->Arg(235)->Arg(745)->Unit(benchmark::kMillisecond)
 // segments per unit length (~7 n^2 quads): unstructured, fronts collide
 // around and between the holes, so both coarse triangulations run.
 void BM_Pave2DHoles(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  std::vector<std::vector<Eigen::Vector2d>> loops(1);
-  const Eigen::Vector2d corners[] = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
-  for (int side = 0; side < 4; ++side) {
-    const int k = (side % 2 == 0 ? 4 : 2) * n;
-    for (int i = 0; i < k; ++i)
-      loops[0].push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / k);
-  }
-  const double holes[3][3] = {{1.0, 1.0, 0.4}, {2.2, 1.0, 0.3}, {3.2, 0.8, 0.25}};
-  for (const auto& h : holes) {
-    const int k = 2 * std::max(2, static_cast<int>(std::lround(M_PI * h[2] * n)));  // even
-    loops.emplace_back();
-    for (int i = 0; i < k; ++i) {
-      const double a = -2.0 * M_PI * i / k;  // clockwise
-      loops.back().emplace_back(h[0] + h[2] * std::cos(a), h[1] + h[2] * std::sin(a));
-    }
-  }
-  run_pave_2d(state, loops);
+  run_pave_2d(state, bench::plate_with_holes_2d(static_cast<int>(state.range(0))));
 }
 // ~5k, ~50k, ~500k quads.
 BENCHMARK(BM_Pave2DHoles)->Arg(27)->Arg(85)->Arg(267)->Unit(benchmark::kMillisecond);

@@ -195,35 +195,6 @@ void print_totals(const char* what, const std::vector<Totals>& t) {
   }
 }
 
-Loops unit_square(int n) {
-  std::vector<Eigen::Vector2d> loop;
-  const Eigen::Vector2d corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (int side = 0; side < 4; ++side)
-    for (int i = 0; i < n; ++i)
-      loop.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / n);
-  return {loop};
-}
-
-Loops plate_with_holes(int n) {
-  Loops loops(1);
-  const Eigen::Vector2d corners[] = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
-  for (int side = 0; side < 4; ++side) {
-    const int k = (side % 2 == 0 ? 4 : 2) * n;
-    for (int i = 0; i < k; ++i)
-      loops[0].push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * i / k);
-  }
-  const double holes[3][3] = {{1.0, 1.0, 0.4}, {2.2, 1.0, 0.3}, {3.2, 0.8, 0.25}};
-  for (const auto& h : holes) {
-    const int k = 2 * std::max(2, static_cast<int>(std::lround(M_PI * h[2] * n)));
-    loops.emplace_back();
-    for (int i = 0; i < k; ++i) {
-      const double a = -2.0 * M_PI * i / k;
-      loops.back().emplace_back(h[0] + h[2] * std::cos(a), h[1] + h[2] * std::sin(a));
-    }
-  }
-  return loops;
-}
-
 std::vector<Result> all_2d(const Loops& loops) {
   std::vector<Result> rs;
   for (const auto& v : variants()) rs.push_back(run_2d(loops, v.options));
@@ -299,12 +270,12 @@ int main(int argc, char** argv) {
 
   header("BM_Pave2D faces (2D)");
   for (int n : {75, 235, 745}) {
-    const auto rs = all_2d(unit_square(n));
+    const auto rs = all_2d(bench::unit_square_2d(n));
     row("square n=" + std::to_string(n), rs);
     add_totals(bench2d, rs);
   }
   for (int n : {27, 85, 267}) {
-    const auto rs = all_2d(plate_with_holes(n));
+    const auto rs = all_2d(bench::plate_with_holes_2d(n));
     row("holes n=" + std::to_string(n), rs);
     add_totals(bench2d, rs);
   }
