@@ -201,7 +201,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1.0, 1e9));
     cmd->add_option("--volume-tolerance", limits.volume_tolerance,
                     "Fail when a meshed volume (area) deviates from the CAD's by more than this "
-                    "many percent (default 1)")
+                    "many percent (default 1); round faces are sized to lose at most half "
+                    "of it")
         ->check(CLI::Range(1e-6, 100.0));
     cmd->add_flag("--allow-partial", limits.allow_partial,
                   "Write the volumes that meshed when others cannot be meshed (exit code 1)");

@@ -20,6 +20,7 @@ struct Sampled {
   double size = 1.0;      ///< the element size that applies
   std::vector<double> h;  ///< local size at each sample
   int min = 1;
+  double turning = 0.0;
   geom::BoundingBox box;
 };
 
@@ -64,6 +65,7 @@ Sampled sample(const geom::Curve& curve, double size, const SizingOptions& optio
   out.s.back() = 1.0;
   const bool closed = curve.start_vertex == curve.end_vertex;
   const double per = options.turn_per_interval_deg * M_PI / 180.0;
+  out.turning = turning;
   out.min = std::max(closed ? 2 : 1, static_cast<int>(std::ceil(turning / per - 1e-6)));
   out.h.assign(out.p.size(), size);
   return out;
@@ -158,11 +160,22 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
     const Sampled& sc = of(c.id);
     CurveSizing z;
     z.min = sc.min;
+    z.turning = sc.turning;
     z.sizes.at = sc.s;
     z.sizes.size = sc.h;
     z.goal = c.length > 0 ? z.sizes.intervals(c.length) : 1e-3;
     for (double h : sc.h) z.graded = z.graded || h < sc.size * (1.0 - 1e-9);
     out.emplace(c.id, std::move(z));
+  }
+  // Faceting: minima raised around round faces that would lose volume.
+  std::map<int, TurningCurve> turning;
+  for (const auto& [id, z] : out) {
+    if (!(z.turning > 0)) continue;
+    turning[id] = {z.turning, std::max(z.min, static_cast<int>(std::lround(z.goal)))};
+  }
+  for (const auto& [id, n] : faceting_minima(model, turning, options.faceting)) {
+    CurveSizing& z = out.at(id);
+    z.min = std::max(z.min, n);
   }
   return out;
 }

@@ -13,12 +13,16 @@
 //    there (a short curve gets one interval of its length), and along a
 //    curve the size grows from a vertex or a gap by at most `growth` per
 //    unit length, so intervals grade from a small feature up to the size.
+//  * faceting: the curves around round faces get more intervals where the
+//    volume (or area) their facets cut off would exceed a small fraction of
+//    the volume's (faceting_budget.h).
 // The result is a size function per curve (sizes at arc-length fractions):
 // its integral of ds / size is the goal, and curve meshing places nodes
 // equidistributed under it (framework/mesh/curve_spacing.h, Kind::Sized).
 #pragma once
 
 #include "framework/geometry/model.h"
+#include "framework/intervals/faceting_budget.h"
 #include "framework/mesh/curve_spacing.h"
 
 #include <functional>
@@ -32,11 +36,13 @@ struct SizingOptions {
   double min_fraction = 0.125;          ///< local size >= this fraction of the size
   double growth = 0.5;                  ///< d(size)/ds away from a small feature
   int samples = 24;                     ///< sample intervals per curve
+  FacetingOptions faceting;             ///< volume kept around round faces
 };
 
 struct CurveSizing {
   double goal = 1.0;         ///< intervals wanted: the integral of ds / size
-  int min = 1;               ///< fewest intervals (turning)
+  int min = 1;               ///< fewest intervals (turning, faceting)
+  double turning = 0.0;      ///< total turning of the tangent [rad]
   mesh::SizeFunction sizes;  ///< local sizes along the curve
   /// True when the sizes are not all the element size (a feature made them
   /// smaller somewhere): the curve's nodes should follow them.

@@ -4,4 +4,5 @@ cooperage_framework_part(intervals SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/ilp.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solve.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curve_sizing.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/faceting_budget.cpp
   PRIVATE_DEPS PkgConfig::CBC)

@@ -58,10 +58,14 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
                                                   const SchemePlan& plan,
                                                   const io::MeshSettings& settings) {
   intervals::IntervalProblem problem;
-  // Goals that keep features (circles >= 6 intervals, thin faces and small
-  // neighbours graded): framework/intervals/curve_sizing.h.
+  // Goals that keep features (circles >= 6 intervals, round faces' volume,
+  // thin faces and small neighbours graded): framework/intervals/curve_sizing.h.
+  // Faceting may take half the volume tolerance, so that a round part at a
+  // coarse size passes the run's own check with room for the rest.
+  intervals::SizingOptions sizing_options;
+  sizing_options.faceting.fraction = 0.5 * settings.volume_tolerance.value_or(0.01);
   const std::map<int, intervals::CurveSizing> sizing = intervals::curve_sizing(
-      model, [&](int id) { return curve_target_size(model, settings, id); });
+      model, [&](int id) { return curve_target_size(model, settings, id); }, sizing_options);
   for (const geom::Curve& curve : model.curves()) {
     const bool closed = curve.start_vertex == curve.end_vertex;
     const int min = closed ? 2 : 1;  // a closed curve with one interval has no extent

@@ -165,8 +165,16 @@ IncompleteMesh::IncompleteMesh(const Verdict& first, std::vector<Verdict> verdic
                                const std::string& hint)
     : MeshingError(first.code, first.entity, first.reason, hint), verdicts_(std::move(verdicts)) {}
 
-MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
+MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_settings,
                       const scheme::Registry& registry, const MeshOptions& options) {
+  // --volume-tolerance overrides the journal's for the sizing too (the
+  // faceting budget of curve_sizing.h takes half of it).
+  std::optional<io::MeshSettings> overridden;
+  if (options.volume_tolerance) {
+    overridden = job_settings;
+    overridden->volume_tolerance = options.volume_tolerance;
+  }
+  const io::MeshSettings& settings = overridden ? *overridden : job_settings;
   const auto threads = limit_threads(options.threads);
   MeshResult result;
   auto stage_start = Clock::now();

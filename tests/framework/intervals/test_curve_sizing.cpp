@@ -24,13 +24,21 @@ std::map<int, CurveSizing> sizing_at(const geom::Model& model, double size) {
   return curve_sizing(model, [size](int) { return size; });
 }
 
+/// The turning rule alone (the faceting budget off; test_faceting_budget.cpp).
+std::map<int, CurveSizing> turning_only(const geom::Model& model, double size) {
+  SizingOptions options;
+  options.faceting.fraction = 0;
+  return curve_sizing(
+      model, [size](int) { return size; }, options);
+}
+
 TEST(CurveSizing, AFullCircleGetsSixIntervalsAtACoarseSize) {
   // The rod: diameter 10, here at size 20 (the circle's goal alone
   // would be 1.6, i.e. the 2 a closed curve needs: a slot, not a rod).
   occ::Workbench bench;
   bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
   const geom::Model model = bench.build_model();
-  const auto sizing = sizing_at(model, 20.0);
+  const auto sizing = turning_only(model, 20.0);
   int circles = 0;
   for (const auto& c : model.curves()) {
     const CurveSizing& z = sizing.at(c.id);
@@ -64,7 +72,7 @@ TEST(CurveSizing, HalfAndQuarterArcsGetThreeAndTwo) {
   bench.revolve("quarter", {{20, 0, 0}, {24, 0, 0}, {24, 0, 1}, {20, 0, 1}}, {20, 0, 0}, {0, 0, 1},
                 90.0);
   const geom::Model model = bench.build_model();
-  const auto sizing = sizing_at(model, 50.0);
+  const auto sizing = turning_only(model, 50.0);
   int halves = 0, quarters = 0;
   for (const auto& c : model.curves()) {
     if (c.geometry->type() != geom::CurveType::Circle) continue;
