@@ -67,8 +67,7 @@ double convexity(const geom::Model& model, int s, int v, int c) {
   const geom::Vec3 p = curve.point(t);
   // Towards the centre of curvature: the chord's midpoint lies inside the arc.
   const geom::Vec3 inward = 0.5 * (curve.point(t - dt) + curve.point(t + dt)) - p;
-  const geom::Vec3 normal =
-      model.outward_normal(s, v, model.surface(s).geometry->project(p).uv);
+  const geom::Vec3 normal = model.outward_normal(s, v, model.surface(s).geometry->project(p).uv);
   return normal.dot(inward) < 0 ? 1.0 : -1.0;
 }
 
@@ -170,7 +169,8 @@ std::map<int, int> faceting_minima(const geom::Model& model,
       for (std::size_t i = 0; i < faces.size(); ++i) {
         if (can_raise(faces[i])) heaviest = std::max(heaviest, weight(loss[i]));
       }
-      if (!(heaviest > 0)) break;  // every round face at its finest: the run's check reports the rest
+      if (!(heaviest > 0))
+        break;  // every round face at its finest: the run's check reports the rest
       std::set<int> raise;
       for (std::size_t i = 0; i < faces.size(); ++i) {
         if (can_raise(faces[i]) && weight(loss[i]) >= heaviest * (1.0 - kSameWeight))

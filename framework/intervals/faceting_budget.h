@@ -20,9 +20,9 @@
 //     arc, so the face's area loss is A_f times the length-weighted mean of
 //     that fraction.
 // Where a volume is over budget, the faces erring most (in the direction of
-// the total, for the volume) get 25 % more intervals on their turning curves (never finer than min_turn_deg an
-// interval), until within budget. The cost goes where the volume goes: a
-// rod is refined, a small hole in a large plate is not.
+// the total, for the volume) get 25 % more intervals on their turning curves (never finer than
+// min_turn_deg an interval), until within budget. The cost goes where the volume goes: a rod is
+// refined, a small hole in a large plate is not.
 #pragma once
 
 #include "framework/geometry/model.h"

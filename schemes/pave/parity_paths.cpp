@@ -3,6 +3,7 @@
 #include "schemes/pave/split_to_quads.h"
 
 #include <algorithm>
+#include <unordered_set>
 #include <stdexcept>
 
 namespace cooperage::pave::detail {
@@ -72,6 +73,45 @@ CellEdges cell_edges(const std::vector<Cell>& cells) {
 }
 
 }  // namespace
+
+int split_loop_triangles(std::vector<Cell>& cells, std::vector<Eigen::Vector2d>& points,
+                         const std::vector<std::vector<int>>& loops,
+                         const std::vector<std::uint64_t>& odd_edges, LoopTriangles which) {
+  if (odd_edges.empty()) return 0;
+  std::unordered_set<std::uint64_t> loop_edges;
+  for (const auto& loop : loops) {
+    for (size_t k = 0; k < loop.size(); ++k)
+      loop_edges.insert(undirected_key(loop[k], loop[(k + 1) % loop.size()]));
+  }
+  const std::unordered_set<std::uint64_t> odd(odd_edges.begin(), odd_edges.end());
+  int split = 0;
+  const size_t n = cells.size();
+  for (size_t c = 0; c < n; ++c) {
+    const Cell t = cells[c];
+    if (t[3] >= 0) continue;
+    int odd_count = 0, plain_loop = 0;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t key =
+          undirected_key(t[static_cast<size_t>(k)], t[static_cast<size_t>((k + 1) % 3)]);
+      if (odd.count(key)) {
+        ++odd_count;
+      } else if (loop_edges.count(key)) {
+        ++plain_loop;
+      }
+    }
+    if (plain_loop == 0) continue;
+    if (which == LoopTriangles::OddEars && odd_count != 1) continue;
+    const int g = static_cast<int>(points.size());
+    points.push_back((points[static_cast<size_t>(t[0])] + points[static_cast<size_t>(t[1])] +
+                      points[static_cast<size_t>(t[2])]) /
+                     3.0);
+    cells[c] = {t[0], t[1], g, -1};
+    cells.push_back({t[1], t[2], g, -1});
+    cells.push_back({t[2], t[0], g, -1});
+    ++split;
+  }
+  return split;
+}
 
 std::unordered_set<std::uint64_t> parity_paths(const std::vector<Cell>& cells,
                                                const std::vector<std::uint64_t>& odd_edges) {

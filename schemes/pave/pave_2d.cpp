@@ -187,18 +187,28 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     }
     laps.lap(&PaveStats::triangulate);
     // (d) recombination, (e) all-quad split.
-    const std::vector<detail::Cell> cells =
+    std::vector<detail::Cell> cells =
         detail::recombine(tri, options.recombine_quality, coarse.min_cells);
+    detail::split_loop_triangles(cells, tri.points, coarse.loops, coarse.odd_edges,
+                                 detail::LoopTriangles::OddEars);
 
-    std::vector<int> fine_of_coarse(tri.points.size(), -1);
-    for (size_t c = 0; c < coarse.fine_of_coarse.size(); ++c)
-      fine_of_coarse[c] = coarse.fine_of_coarse[c];
     std::unordered_set<std::uint64_t> no_midpoint;
     try {
       no_midpoint = detail::parity_paths(cells, coarse.odd_edges);
-    } catch (const std::runtime_error& err) {
-      failed(err.what());
+    } catch (const std::runtime_error& first) {
+      // Boundary triangles walled the odd edges in: open them all and retry.
+      if (detail::split_loop_triangles(cells, tri.points, coarse.loops, coarse.odd_edges,
+                                       detail::LoopTriangles::All) == 0)
+        failed(first.what());
+      try {
+        no_midpoint = detail::parity_paths(cells, coarse.odd_edges);
+      } catch (const std::runtime_error& err) {
+        failed(err.what());
+      }
     }
+    std::vector<int> fine_of_coarse(tri.points.size(), -1);
+    for (size_t c = 0; c < coarse.fine_of_coarse.size(); ++c)
+      fine_of_coarse[c] = coarse.fine_of_coarse[c];
     laps.lap(&PaveStats::recombine);
     detail::split_to_quads(cells, tri.points, fine_of_coarse, coarse.midpoint, P, quads,
                            no_midpoint);
