@@ -78,7 +78,8 @@ TEST(PaveTabs, SharpTabsWithOddSidesMesh) {
     ++cases;
     SCOPED_TRACE("case " + std::to_string(k));
     // The angle between a tab's sides (its tip's, when pointed).
-    const double tip_deg = 2.0 * std::atan((std::sin(0.5 * width) - 0.5 * tip) / reach) * 180 / M_PI;
+    const double tip_deg =
+        2.0 * std::atan((std::sin(0.5 * width) - 0.5 * tip) / reach) * 180 / M_PI;
     try {
       const QuadMesh2D m = pave_2d(loops);
       EXPECT_EQ(check_mesh(loops, m), "");
@@ -87,8 +88,8 @@ TEST(PaveTabs, SharpTabsWithOddSidesMesh) {
     } catch (const std::exception& e) {
       // Tabs narrower than 15 degrees leave no room for a coarse chord
       // across them: refused (a known limit), never any other failure.
-      const bool known = tip_deg < 15.0 && std::string(e.what()).find("loop edges intersect") !=
-                                               std::string::npos;
+      const bool known =
+          tip_deg < 15.0 && std::string(e.what()).find("loop edges intersect") != std::string::npos;
       if (!known) ADD_FAILURE() << "tip " << tip_deg << " degrees: " << e.what();
       ++refused_spikes;
     }
