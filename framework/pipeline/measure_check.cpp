@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace cooperage::pipeline {
 namespace {
@@ -32,6 +33,25 @@ std::array<Vec3, N> gather(const std::array<int, N>& e, const mesh::MeshDB& db) 
   std::array<Vec3, N> p;
   for (std::size_t i = 0; i < N; ++i) p[i] = db.node(e[i]);
   return p;
+}
+
+/// Sum of term(0..count-1) over fixed chunks, each summed in order, the
+/// chunk sums then added in order: parallel, and the same bits for any
+/// thread count (the chunks do not depend on the scheduling).
+template <class Term>
+double chunked_sum(std::size_t count, Term term) {
+  constexpr std::size_t kChunk = 8192;
+  const std::size_t chunks = (count + kChunk - 1) / kChunk;
+  std::vector<double> partial(chunks, 0.0);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    double sum = 0;
+    const std::size_t end = std::min(count, (c + 1) * kChunk);
+    for (std::size_t e = c * kChunk; e < end; ++e) sum += term(e);
+    partial[c] = sum;
+  });
+  double total = 0;
+  for (double p : partial) total += p;
+  return total;
 }
 
 /// Area of a bilinear quad (2 x 2 Gauss points of |x_u x x_v|).
@@ -76,18 +96,22 @@ MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int 
   m.entity = EntityRef::volume(vid);
   m.cad = model.volume(vid).volume;
   const mesh::VolumeMeshData& v = db.volume(vid);
-  for (const mesh::Hex& h : v.hexes) m.mesh += hex_volume(gather(h, db));
-  for (const mesh::Wedge& w : v.wedges) m.mesh += wedge_volume(gather(w, db));
+  m.mesh = chunked_sum(v.hexes.size(),
+                       [&](std::size_t e) { return hex_volume(gather(v.hexes[e], db)); }) +
+           chunked_sum(v.wedges.size(),
+                       [&](std::size_t e) { return wedge_volume(gather(v.wedges[e], db)); });
   for (const auto& shell : model.volume(vid).shells) {
     for (const geom::SurfaceUse& use : shell) {
       const geom::Surface& s = model.surface(use.surface);
       if (!db.surface_meshed(s.id) || s.geometry->type() == geom::SurfaceType::Plane) continue;
       const mesh::SurfaceMeshData& sm = db.surface(s.id);
       const double out = geom::sign(use.sense);
-      for (const mesh::Quad& q : sm.quads)
-        m.faceting += facet_sliver(gather(q, db), *s.geometry, out);
-      for (const mesh::Tri& t : sm.tris)
-        m.faceting += facet_sliver(gather(t, db), *s.geometry, out);
+      m.faceting += chunked_sum(sm.quads.size(), [&](std::size_t e) {
+        return facet_sliver(gather(sm.quads[e], db), *s.geometry, out);
+      });
+      m.faceting += chunked_sum(sm.tris.size(), [&](std::size_t e) {
+        return facet_sliver(gather(sm.tris[e], db), *s.geometry, out);
+      });
     }
   }
   return m;
