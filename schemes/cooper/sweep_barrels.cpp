@@ -75,6 +75,9 @@ void append_sweep(SweepState& s, const BarrelState& st, const std::vector<int>& 
   const size_t base = s.out.coords.size();
   const size_t fresh = J > 1 ? (J - 1) * inner : 0;
   scheme::EntityMesh& out = s.out;
+  // Room for the MeshDB's nodes as well: its commit then takes this array
+  // over instead of copying it (MeshDB::append_nodes).
+  out.coords.reserve(base + fresh + s.db.node_count());
   out.coords.resize(base + fresh);  // Vec3 is left uninitialised: every slot is written below
   out.global.resize(base + fresh, -1);
   if (!out.owners.empty()) out.owners.resize(base + fresh);
