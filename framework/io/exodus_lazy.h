@@ -19,7 +19,7 @@ namespace cooperage::io::exodus_lazy {
 #define COOPERAGE_EXODUS_FUNCTIONS(X)                                                          \
   X(ex_create_int) X(ex_open_int) X(ex_close) X(ex_set_option) X(ex_put_init)               \
   X(ex_put_coord_names) X(ex_put_block) X(ex_put_sets) X(ex_put_names)                         \
-  X(ex_put_partial_coord) X(ex_put_set) X(ex_get_init_ext) X(ex_inquire_int)                   \
+  X(ex_put_partial_coord) X(ex_put_set) X(ex_put_info) X(ex_get_init_ext) X(ex_inquire_int)                   \
   X(ex_set_max_name_length) X(ex_get_coord) X(ex_get_ids) X(ex_get_block) X(ex_get_conn)      \
   X(ex_get_name) X(ex_set_int64_status) X(nc_inq_varid) X(nc_put_vara_int) X(nc_redef) X(nc__enddef)
 // clang-format on
@@ -48,6 +48,7 @@ const Api& api();
 #define ex_put_partial_coord(...) \
   ::cooperage::io::exodus_lazy::api().ex_put_partial_coord(__VA_ARGS__)
 #define ex_put_set(...) ::cooperage::io::exodus_lazy::api().ex_put_set(__VA_ARGS__)
+#define ex_put_info(...) ::cooperage::io::exodus_lazy::api().ex_put_info(__VA_ARGS__)
 #define ex_get_init_ext(...) ::cooperage::io::exodus_lazy::api().ex_get_init_ext(__VA_ARGS__)
 #define ex_inquire_int(...) ::cooperage::io::exodus_lazy::api().ex_inquire_int(__VA_ARGS__)
 #define ex_set_max_name_length(...) \

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 namespace cooperage::pipeline {
 namespace {
@@ -32,6 +33,25 @@ std::array<Vec3, N> gather(const std::array<int, N>& e, const mesh::MeshDB& db) 
   std::array<Vec3, N> p;
   for (std::size_t i = 0; i < N; ++i) p[i] = db.node(e[i]);
   return p;
+}
+
+/// Sum of term(0..count-1) over fixed chunks, each summed in order, the
+/// chunk sums then added in order: parallel, and the same bits for any
+/// thread count (the chunks do not depend on the scheduling).
+template <class Term>
+double chunked_sum(std::size_t count, Term term) {
+  constexpr std::size_t kChunk = 8192;
+  const std::size_t chunks = (count + kChunk - 1) / kChunk;
+  std::vector<double> partial(chunks, 0.0);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    double sum = 0;
+    const std::size_t end = std::min(count, (c + 1) * kChunk);
+    for (std::size_t e = c * kChunk; e < end; ++e) sum += term(e);
+    partial[c] = sum;
+  });
+  double total = 0;
+  for (double p : partial) total += p;
+  return total;
 }
 
 /// Area of a bilinear quad (2 x 2 Gauss points of |x_u x x_v|).
@@ -76,18 +96,22 @@ MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int 
   m.entity = EntityRef::volume(vid);
   m.cad = model.volume(vid).volume;
   const mesh::VolumeMeshData& v = db.volume(vid);
-  for (const mesh::Hex& h : v.hexes) m.mesh += hex_volume(gather(h, db));
-  for (const mesh::Wedge& w : v.wedges) m.mesh += wedge_volume(gather(w, db));
+  m.mesh = chunked_sum(v.hexes.size(),
+                       [&](std::size_t e) { return hex_volume(gather(v.hexes[e], db)); }) +
+           chunked_sum(v.wedges.size(),
+                       [&](std::size_t e) { return wedge_volume(gather(v.wedges[e], db)); });
   for (const auto& shell : model.volume(vid).shells) {
     for (const geom::SurfaceUse& use : shell) {
       const geom::Surface& s = model.surface(use.surface);
       if (!db.surface_meshed(s.id) || s.geometry->type() == geom::SurfaceType::Plane) continue;
       const mesh::SurfaceMeshData& sm = db.surface(s.id);
       const double out = geom::sign(use.sense);
-      for (const mesh::Quad& q : sm.quads)
-        m.faceting += facet_sliver(gather(q, db), *s.geometry, out);
-      for (const mesh::Tri& t : sm.tris)
-        m.faceting += facet_sliver(gather(t, db), *s.geometry, out);
+      m.faceting += chunked_sum(sm.quads.size(), [&](std::size_t e) {
+        return facet_sliver(gather(sm.quads[e], db), *s.geometry, out);
+      });
+      m.faceting += chunked_sum(sm.tris.size(), [&](std::size_t e) {
+        return facet_sliver(gather(sm.tris[e], db), *s.geometry, out);
+      });
     }
   }
   return m;
@@ -241,20 +265,29 @@ double MeasureCheck::deviation() const {
 }
 
 double hex_volume(const std::array<Vec3, 8>& p) {
-  const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  // x(u,v,w) = p0 + b u + c v + d w + e uv + f uw + g vw + h uvw on the unit
+  // cube; x_u depends on (v,w) only, x_v on (u,w), x_w on (u,v), so each
+  // takes 4 values at the 2 x 2 x 2 Gauss points, built once (half the work
+  // of forming the three derivatives at every point; 8 % of a 1 M-hex run).
+  const Vec3 b = p[1] - p[0], c = p[3] - p[0], d = p[4] - p[0];
+  const Vec3 e = (p[2] - p[3]) - b;
+  const Vec3 f = (p[5] - p[4]) - b;
+  const Vec3 g = (p[7] - p[4]) - c;
+  const Vec3 h = (p[6] - p[7]) - (p[5] - p[4]) - (p[2] - p[3]) + b;
+  const double q[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+  Vec3 xu[2][2], xv[2][2], xw[2][2];
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      const double s = q[i], t = q[j], st = s * t;
+      xu[i][j] = b + s * e + t * f + st * h;  // at v = s, w = t
+      xv[i][j] = c + s * e + t * g + st * h;  // at u = s, w = t
+      xw[i][j] = d + s * f + t * g + st * h;  // at u = s, v = t
+    }
   double v = 0;
-  for (double a : g)
-    for (double b : g)
-      for (double c : g) {
-        const Vec3 du = (1 - b) * (1 - c) * (p[1] - p[0]) + b * (1 - c) * (p[2] - p[3]) +
-                        (1 - b) * c * (p[5] - p[4]) + b * c * (p[6] - p[7]);
-        const Vec3 dv = (1 - a) * (1 - c) * (p[3] - p[0]) + a * (1 - c) * (p[2] - p[1]) +
-                        (1 - a) * c * (p[7] - p[4]) + a * c * (p[6] - p[5]);
-        const Vec3 dw = (1 - a) * (1 - b) * (p[4] - p[0]) + a * (1 - b) * (p[5] - p[1]) +
-                        a * b * (p[6] - p[2]) + (1 - a) * b * (p[7] - p[3]);
-        v += 0.125 * du.cross(dv).dot(dw);
-      }
-  return v;
+  for (int a = 0; a < 2; ++a)
+    for (int bb = 0; bb < 2; ++bb)
+      for (int cc = 0; cc < 2; ++cc) v += xu[bb][cc].dot(xv[a][cc].cross(xw[a][bb]));
+  return 0.125 * v;
 }
 
 double wedge_volume(const std::array<Vec3, 6>& p) {

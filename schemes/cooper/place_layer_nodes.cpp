@@ -86,15 +86,23 @@ bool place_layer_nodes(const SweepInput& in, std::vector<Vec3>& points, std::str
   const std::size_t n = static_cast<std::size_t>(in.cap_nodes);
   const std::size_t B = static_cast<std::size_t>(in.boundary);
   const std::size_t J = static_cast<std::size_t>(in.layers);
-  points.assign(n * (J + 1), Vec3::Zero());
   const std::vector<Vec3> ring = layer_major_rings(in);
-  for (std::size_t j = 0; j <= J; ++j) {
+  // Each layer: its ring, then the source's interior nodes (layer 0) or
+  // zeros. Layers are written in parallel (the first touch of the largest
+  // array of the sweep is spread over the threads); same values for any
+  // thread count.
+  points.clear();
+  points.resize(n * (J + 1));  // Vec3 is left uninitialised: every entry is written below
+  tbb::parallel_for(std::size_t{0}, J + 1, [&](std::size_t j) {
+    Vec3* layer = &points[j * n];
     std::copy(ring.begin() + static_cast<long>(j * B),
-              ring.begin() + static_cast<long>((j + 1) * B),
-              points.begin() + static_cast<long>(j * n));
-  }
-  std::copy(in.source.begin() + static_cast<long>(B), in.source.end(),
-            points.begin() + static_cast<long>(B));
+              ring.begin() + static_cast<long>((j + 1) * B), layer);
+    if (j == 0) {
+      std::copy(in.source.begin() + static_cast<long>(B), in.source.end(), layer + B);
+    } else {
+      std::fill(layer + B, layer + n, Vec3::Zero());
+    }
+  });
   if (n == B) return true;  // no interior cap nodes
 
   const Vec3* upper = &ring[0];

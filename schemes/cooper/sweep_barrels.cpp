@@ -12,6 +12,8 @@
 #include "framework/core/log.h"
 
 #include <Eigen/Geometry>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -51,6 +53,72 @@ void correspond(const std::vector<std::array<int, N>>& up,
         fail(vid, "a cap node has two images across its barrel");
     }
   }
+}
+
+// Hands a barrel's sweep over to the volume's mesh: the rib nodes are
+// looked up first (in layer order, as they were always numbered), then the
+// interior layer nodes take consecutive slots layer by layer and the
+// elements are renumbered in place. Every slot is fixed before the parallel
+// loops run, so the mesh is the same for any thread count.
+void append_sweep(SweepState& s, const BarrelState& st, const std::vector<int>& cap,
+                  const std::map<int, int>& below, SweepResult& sweep) {
+  const size_t n = cap.size();
+  const size_t B = st.ribs.size();
+  const size_t J = static_cast<size_t>(st.layers);
+  std::vector<int> rib_node(B * (J + 1));
+  for (size_t j = 0; j <= J; ++j) {
+    for (size_t i = 0; i < B; ++i) rib_node[j * B + i] = s.existing(st.ribs[i][j]);
+  }
+  std::vector<int> lower(n, -1);
+  for (size_t i = B; i < n; ++i) lower[i] = below.at(cap[i]);
+  const size_t inner = n - B;
+  const size_t base = s.out.coords.size();
+  const size_t fresh = J > 1 ? (J - 1) * inner : 0;
+  scheme::EntityMesh& out = s.out;
+  // Room for the MeshDB's nodes as well: its commit then takes this array
+  // over instead of copying it (MeshDB::append_nodes).
+  out.coords.reserve(base + fresh + s.db.node_count());
+  out.coords.resize(base + fresh);  // Vec3 is left uninitialised: every slot is written below
+  out.global.resize(base + fresh, -1);
+  if (!out.owners.empty()) out.owners.resize(base + fresh);
+  std::vector<int> node(sweep.points.size());
+  tbb::parallel_for(size_t{0}, J + 1, [&](size_t j) {
+    for (size_t i = 0; i < n; ++i) {
+      const size_t q = j * n + i;
+      if (i < B) {
+        node[q] = rib_node[j * B + i];
+      } else if (j == 0) {
+        node[q] = cap[i];
+      } else if (j == J) {
+        node[q] = lower[i];
+      } else {
+        const size_t slot = base + (j - 1) * inner + (i - B);
+        out.coords[slot] = sweep.points[q];
+        node[q] = static_cast<int>(slot);
+      }
+    }
+  });
+  sweep.points = {};
+  auto renumber = [&](auto& elements) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t e = r.begin(); e != r.end(); ++e) {
+                          for (int& v : elements[e]) v = node[static_cast<size_t>(v)];
+                        }
+                      });
+  };
+  renumber(sweep.hexes);
+  renumber(sweep.wedges);
+  auto append = [](auto& to, auto& from) {
+    if (to.empty()) {
+      to = std::move(from);  // the usual case, one barrel's elements: no copy
+    } else {
+      to.insert(to.end(), from.begin(), from.end());
+    }
+    from = {};
+  };
+  append(out.hexes, sweep.hexes);
+  append(out.wedges, sweep.wedges);
 }
 
 }  // namespace
@@ -122,7 +190,7 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
                  std::to_string(min_quad_corner_quality(in.source, in.quads, st.d)) + " (upper), " +
                  std::to_string(min_quad_corner_quality(lo, in.quads, st.d)) + " (lower)");
     }
-    const SweepResult sweep = sweep_barrel(in);
+    SweepResult sweep = sweep_barrel(in);
     if (!sweep.ok) fail(s.vid, s.barrel_name(b) + ": " + sweep.why);
     if (log::threshold() <= log::Level::Debug) {
       char line[200];
@@ -132,34 +200,7 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
                     sweep.min_scaled_jacobian, sweep.smoothed ? " (smoothed)" : "");
       log::debug("cooper, volume " + std::to_string(s.vid) + ", " + line);
     }
-    const size_t n = cap.size();
-    const size_t B = st.ribs.size();
-    const size_t J = static_cast<size_t>(st.layers);
-    std::vector<int> node(sweep.points.size());
-    for (size_t j = 0; j <= J; ++j) {
-      for (size_t i = 0; i < n; ++i) {
-        const size_t q = j * n + i;
-        if (i < B) {
-          node[q] = s.existing(st.ribs[i][j]);
-        } else if (j == 0) {
-          node[q] = cap[i];
-        } else if (j == J) {
-          node[q] = below.at(cap[i]);
-        } else {
-          node[q] = s.out.add(sweep.points[q]);
-        }
-      }
-    }
-    for (const auto& h : sweep.hexes) {
-      mesh::Hex e;
-      for (size_t k = 0; k < 8; ++k) e[k] = node[static_cast<size_t>(h[k])];
-      s.out.hexes.push_back(e);
-    }
-    for (const auto& w : sweep.wedges) {
-      mesh::Wedge e;
-      for (size_t k = 0; k < 6; ++k) e[k] = node[static_cast<size_t>(w[k])];
-      s.out.wedges.push_back(e);
-    }
+    append_sweep(s, st, cap, below, sweep);
     if (reports) {
       BarrelReport r;
       r.barrel = static_cast<int>(b);

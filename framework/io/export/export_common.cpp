@@ -9,6 +9,7 @@
 #include "framework/core/text.h"
 
 #include <Eigen/Geometry>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <limits>
 #include <streambuf>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/random.h>
@@ -220,25 +222,41 @@ FaceFinder::Key FaceFinder::key_of(const int* nodes, int n) {
 
 FaceFinder::FaceFinder(const mesh::VolumeMeshData& vol, const FaceTable& hex_faces,
                        const FaceTable& wedge_faces, const std::vector<bool>& wanted) {
-  auto add = [this, &wanted](const int* elem, const FaceTable& table, bool wedge, int index) {
+  // The scan of every element's sides runs in parallel over fixed chunks,
+  // each collecting its candidate sides in element order; they are indexed
+  // chunk after chunk, so the first element with a face wins exactly as in
+  // one sequential pass (an interior face is shared by two elements of the
+  // volume; boundary faces are unique).
+  using Candidate = std::pair<Key, FaceHit>;
+  auto scan = [&wanted](const int* elem, const FaceTable& table, bool wedge, int index,
+                        std::vector<Candidate>& out) {
     for (size_t s = 0; s < table.size(); ++s) {
       int nodes[4];
       const int n = static_cast<int>(table[s].size());
       bool all_wanted = true;
-      for (int i = 0; i < n; ++i) {
+      for (int i = 0; i < n && all_wanted; ++i) {
         nodes[i] = elem[table[s][static_cast<size_t>(i)]];
-        all_wanted = all_wanted && wanted[static_cast<size_t>(nodes[i])];
+        all_wanted = wanted[static_cast<size_t>(nodes[i])];
       }
-      if (!all_wanted) continue;
-      // emplace keeps the first element with this face (an interior face is
-      // shared by two elements of the volume; boundary faces are unique).
-      faces_.emplace(key_of(nodes, n), FaceHit{wedge, index, static_cast<int>(s)});
+      if (all_wanted)
+        out.emplace_back(key_of(nodes, n), FaceHit{wedge, index, static_cast<int>(s)});
     }
   };
-  for (size_t i = 0; i < vol.hexes.size(); ++i)
-    add(vol.hexes[i].data(), hex_faces, false, static_cast<int>(i));
-  for (size_t i = 0; i < vol.wedges.size(); ++i)
-    add(vol.wedges[i].data(), wedge_faces, true, static_cast<int>(i));
+  constexpr size_t kChunk = 16384;
+  const size_t nh = vol.hexes.size(), total = nh + vol.wedges.size();
+  std::vector<std::vector<Candidate>> found((total + kChunk - 1) / kChunk);
+  tbb::parallel_for(size_t{0}, found.size(), [&](size_t c) {
+    for (size_t e = c * kChunk; e < std::min(total, (c + 1) * kChunk); ++e) {
+      if (e < nh) {
+        scan(vol.hexes[e].data(), hex_faces, false, static_cast<int>(e), found[c]);
+      } else {
+        scan(vol.wedges[e - nh].data(), wedge_faces, true, static_cast<int>(e - nh), found[c]);
+      }
+    }
+  });
+  for (const auto& chunk : found) {
+    for (const auto& [key, hit] : chunk) faces_.emplace(key, hit);  // keeps the first
+  }
 }
 
 FaceHit FaceFinder::find(const int* nodes, int n) const {

@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 #include "journal_fixture.h"
+#include "support/mesh_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <unistd.h>
 
 namespace cooperage::pipeline {
@@ -126,6 +128,16 @@ TEST(MeasureCheck, ElementVolumesAreExact) {
         reference += du.cross(dv).dot(dw) / (n * n * n);
       }
   EXPECT_NEAR(hex_volume(twisted), reference, 1e-4);
+  // Randomly distorted hexes against the test support's independent
+  // quadrature (Jacobian matrices from the shape function derivatives).
+  std::mt19937 rng(20);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for (int trial = 0; trial < 100; ++trial) {
+    std::array<Vec3, 8> p = cube;
+    for (Vec3& x : p) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    const double expected = cooperage::testing::hex_volume(p);
+    EXPECT_NEAR(hex_volume(p), expected, 1e-12 * std::abs(expected) + 1e-15) << "trial " << trial;
+  }
   const std::array<Vec3, 6> wedge{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
                                   Vec3(0, 0, 2), Vec3(1, 0, 2), Vec3(0, 1, 2)};
   EXPECT_NEAR(wedge_volume(wedge), 1.0, 1e-14);
