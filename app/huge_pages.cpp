@@ -1,4 +1,4 @@
-// The `cooperage` command's operator new: blocks of 8 MB and more (node,
+// The `cooperage` command's operator new: blocks of 4 MB and more (node,
 // element and quality arrays of big meshes) are advised to the kernel as
 // transparent huge pages before their first touch. On a kernel whose THP
 // mode is "madvise" (Debian's default) every 4 KB page of such an array
