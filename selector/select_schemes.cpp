@@ -238,9 +238,9 @@ class Selector {
     } else {
       order = ranked(choice.candidates);
       if (order.empty()) {
-        throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(id),
-                           (wedge ? "no " + kind + " scheme" : std::string("no hex scheme")) +
-                               " applies (" + all_reasons(choice.candidates) + ")");
+        throw MeshingError(
+            ErrorCode::NotApplicable, EntityRef::volume(id),
+            job_.no_scheme_applies(id) + " (" + all_reasons(choice.candidates) + ")");
       }
     }
     std::string conflicts;

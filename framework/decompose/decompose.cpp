@@ -67,6 +67,9 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     d.volume = v;
     d.name = model.volume(v).name;
     d.why = it->why;
+    d.refusal =
+        (options.settings ? *options.settings : scheme::Settings::none()).no_scheme_applies(v);
+    const std::string refusal = d.refusal;
     // Each candidate cut costs a boolean and a plan of the pieces, both
     // growing with the faces: the number of cuts tried shrinks with them, and
     // a volume too intricate for cuts through its own faces to help is left
@@ -74,14 +77,14 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     int faces = 0;
     for (const auto& shell : model.volume(v).shells) faces += static_cast<int>(shell.size());
     if (faces > kMaxSearchFaces) {
-      throw MeshingError(
-          ErrorCode::NotApplicable, EntityRef::volume(v),
-          "no hex scheme applies; automatic decomposition is not tried on a volume of "
-          "more than " +
-              std::to_string(kMaxSearchFaces) + " faces (it has " + std::to_string(faces) + ") (" +
-              d.why + ")",
-          "cut the volume with <webcut> in a journal (`cooperage plan` gives every "
-          "scheme's reason)");
+      throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
+                         refusal +
+                             "; automatic decomposition is not tried on a volume of "
+                             "more than " +
+                             std::to_string(kMaxSearchFaces) + " faces (it has " +
+                             std::to_string(faces) + ") (" + d.why + ")",
+                         "cut the volume with <webcut> in a journal (`cooperage plan` gives every "
+                         "scheme's reason)");
     }
     DecomposeOptions budget = options;
     budget.max_cuts = std::min(options.max_cuts, std::max(8, kSearchFaceCuts / std::max(faces, 1)));
@@ -94,7 +97,7 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
       // line of their own.
       throw MeshingError(
           ErrorCode::NotApplicable, EntityRef::volume(v),
-          "no hex scheme applies; automatic decomposition " + search.failure() + " (" + d.why + ")",
+          refusal + "; automatic decomposition " + search.failure() + " (" + d.why + ")",
           "`cooperage plan` gives every scheme's reason; cut the volume with "
           "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
     }

@@ -48,6 +48,8 @@ struct VolumeDecomposition {
   int volume = 0;  ///< id before decomposition
   std::string name;
   std::string why;  ///< every volume scheme's refusal of the whole volume
+  /// "no hex scheme applies" (or wedge, mixed: the element kind asked)
+  std::string refusal = "no hex scheme applies";
   std::vector<AppliedCut> cuts;
   int tried = 0;            ///< candidate cuts given to the kernel
   std::vector<int> pieces;  ///< its pieces' ids in the decomposed model

@@ -26,7 +26,7 @@ std::vector<std::string> report_lines(const Report& report) {
                   (v.name.empty() ? "" : " (" + v.name + ")") + ": cut into volumes " +
                   ids(v.pieces) + " (" + std::to_string(v.cuts.size()) + " cut" +
                   (v.cuts.size() == 1 ? "" : "s") + ", " + std::to_string(v.tried) +
-                  " tried); as one volume: no hex scheme applies (" + v.why + ")");
+                  " tried); as one volume: " + v.refusal + " (" + v.why + ")");
     for (size_t k = 0; k < v.cuts.size(); ++k) {
       const AppliedCut& c = v.cuts[k];
       out.push_back("  cut " + std::to_string(k + 1) + ": " + describe(c.surface) + ", the " +

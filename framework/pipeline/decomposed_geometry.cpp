@@ -81,9 +81,11 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   std::string setting = entity_setting(settings);
   if (setting.empty()) setting = group_setting(job.groups);
   if (!setting.empty()) {
-    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(refused.front().volume),
-                       "no hex scheme applies, and automatic decomposition would renumber the "
-                       "entities that " +
+    const int v = refused.front().volume;
+    throw MeshingError(ErrorCode::NotApplicable, EntityRef::volume(v),
+                       job_settings.no_scheme_applies(v) +
+                           ", and automatic decomposition would renumber the "
+                           "entities that " +
                            setting +
                            " refers to by id; cut the volume with "
                            "<webcut> in the journal, or remove the per-entity settings");

@@ -28,6 +28,15 @@ io::ElementKind Settings::elements(int volume_id) const {
   return v ? v->elements : io::ElementKind::Hex;
 }
 
+std::string Settings::no_scheme_applies(int volume_id) const {
+  switch (elements(volume_id)) {
+    case io::ElementKind::Wedge: return "no wedge scheme applies";
+    case io::ElementKind::Mixed: return "no mixed scheme applies";
+    case io::ElementKind::Hex: break;
+  }
+  return "no hex scheme applies";
+}
+
 const std::vector<io::VertexTypeSetting>& Settings::vertex_types() const {
   static const std::vector<io::VertexTypeSetting> none;
   return job ? job->vertex_types : none;

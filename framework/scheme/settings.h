@@ -8,6 +8,7 @@
 
 #include "framework/io/job.h"
 
+#include <string>
 #include <vector>
 
 namespace cooperage::scheme {
@@ -35,6 +36,9 @@ struct Settings {
   const io::VolumeSetting* volume(int volume_id) const;
   /// The element kind asked of a volume (Hex unless the job says otherwise).
   io::ElementKind elements(int volume_id) const;
+  /// "no hex scheme applies", "no wedge scheme applies" or "no mixed scheme
+  /// applies": a volume's refusal names the element kind it was asked for.
+  std::string no_scheme_applies(int volume_id) const;
   /// The journal's hard vertex classifications (submap), every surface's.
   const std::vector<io::VertexTypeSetting>& vertex_types() const;
 };

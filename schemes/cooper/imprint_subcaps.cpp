@@ -561,7 +561,8 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }
-  if (index_in(outer, x) < 0 || index_in(outer, y) < 0) return split_hole(1 - e, bi, x, path, y);
+  if (index_in(outer, x) < 0 || index_in(outer, y) < 0)
+    return split_hole(1 - e, bi, x, path, y) || join_holes(e, a, r0, path, r1, bi);
   auto [left, right] = split_loop(outer, x, path, y);
   replace(1 - e, bi, {left, right});
   r_.steps.push_back(ImprintStep::Subtract);

@@ -1,6 +1,7 @@
 // The imprinting state machine of imprint_subcaps() (Blacker 1996, sec. 5):
 // detail shared by imprint_subcaps.cpp (matching, subtraction, seaming,
-// self-intersection) and imprint_intersect.cpp (intersection, sec. 5.3).
+// self-intersection), imprint_intersect.cpp (intersection, sec. 5.3) and
+// imprint_join_holes.cpp (a subtraction between two holes).
 #pragma once
 
 #include "schemes/cooper/imprint_polygons.h"
@@ -90,6 +91,10 @@ class Imprinter {
   // of one of its hole loops: the piece between the path and one arc of the
   // hole becomes a subcap, the hole grows by it (sec. 5.2-5.3).
   bool split_hole(int e, size_t bi, int x, const Loop& path, int y);
+  // sec. 5.2: a's gap r0 -> path -> r1 runs from one hole of subcap bi of
+  // the opposing end to another, and a second gap of a's loop runs back: both
+  // are projected, the piece between them leaves bi and the two holes join.
+  bool join_holes(int e, const Subcap& a, int r0, const Loop& path, int r1, size_t bi);
   bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
 
   // sec. 5.3: the gap's ends reach two subcaps, b (at r1) and c (at r0).

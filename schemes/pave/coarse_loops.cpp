@@ -4,6 +4,7 @@
 #include "schemes/pave/split_to_quads.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -39,9 +40,70 @@ size_t choose_parity(const std::vector<Eigen::Vector2d>& P, const std::vector<in
   return score[1] > score[0] * (1.0 + 1e-9) ? 1 : 0;
 }
 
+namespace {
+
+// Paving's corner template at tip p between a and b: the new loop path a',
+// q1, q2, q3, b' (three quads around p, each taking a third of its angle
+// theta).
+std::array<Eigen::Vector2d, 5> corner_template(const Eigen::Vector2d& a, const Eigen::Vector2d& p,
+                                               const Eigen::Vector2d& b, double theta) {
+  const double h = 0.5 * ((a - p).norm() + (b - p).norm());
+  const Eigen::Vector2d u = (b - p).normalized();
+  auto dir = [&](double ang) {
+    return Eigen::Vector2d(u.x() * std::cos(ang) - u.y() * std::sin(ang),
+                           u.x() * std::sin(ang) + u.y() * std::cos(ang));
+  };
+  const Eigen::Vector2d q3 = p + h * dir(theta / 3), q1 = p + h * dir(2 * theta / 3);
+  const Eigen::Vector2d q2 = p + 1.3 * h * dir(theta / 2);
+  return {a + (q1 - p), q1, q2, q3, b + (q3 - p)};
+}
+
+bool segments_cross(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& q0,
+                    const Eigen::Vector2d& q1) {
+  const double d1 = cross2(q1 - q0, p0 - q0), d2 = cross2(q1 - q0, p1 - q0);
+  const double d3 = cross2(p1 - p0, q0 - p0), d4 = cross2(p1 - p0, q1 - p0);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+// Whether the template's region a, a', q1, q2, q3, b', b, p stays clear of
+// the loops (edges not at a, p or b): a hole next to a notch's reflex corner
+// lies closer than the template reaches, and its loop would cross the
+// template's, which no triangulation can recover.
+bool template_clear(const std::vector<Eigen::Vector2d>& P,
+                    const std::vector<std::vector<int>>& loops, int ia, int ip, int ib,
+                    const std::array<Eigen::Vector2d, 5>& t) {
+  const Eigen::Vector2d a = P[static_cast<size_t>(ia)], p = P[static_cast<size_t>(ip)],
+                        b = P[static_cast<size_t>(ib)];
+  const std::array<Eigen::Vector2d, 8> region{a, t[0], t[1], t[2], t[3], t[4], b, p};
+  for (const auto& loop : loops) {
+    const size_t m = loop.size();
+    for (size_t k = 0; k < m; ++k) {
+      const int i0 = loop[k], i1 = loop[(k + 1) % m];
+      const bool at_tip = i0 == ia || i0 == ip || i0 == ib || i1 == ia || i1 == ip || i1 == ib;
+      const Eigen::Vector2d q0 = P[static_cast<size_t>(i0)], q1 = P[static_cast<size_t>(i1)];
+      for (size_t j = 0; j + 1 < 7; ++j) {
+        if (!at_tip && segments_cross(region[j], region[j + 1], q0, q1)) return false;
+      }
+      if (i0 == ia || i0 == ip || i0 == ib) continue;
+      bool in = false;  // crossing number of q0 against the region
+      for (size_t j = 0, i = region.size() - 1; j < region.size(); i = j++) {
+        const Eigen::Vector2d &r = region[j], &s = region[i];
+        if ((r.y() > q0.y()) != (s.y() > q0.y()) &&
+            q0.x() < (s.x() - r.x()) * (q0.y() - r.y()) / (s.y() - r.y()) + r.x())
+          in = !in;
+      }
+      if (in) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int first_new,
                                   std::vector<Eigen::Vector2d>& P, std::vector<Quad>& quads,
-                                  double corner_angle) {
+                                  double corner_angle,
+                                  const std::vector<std::vector<int>>& other_loops) {
   const size_t n = L.size();
   if (n % 2 != 0) return L;  // odd loops are left as they are
   // The nodes coarse_boundary() will skip (it picks the same way).
@@ -51,12 +113,19 @@ std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int f
   } catch (const std::runtime_error&) {
     return L;  // coarse_boundary() reports it
   }
+  std::vector<std::vector<int>> loops = other_loops;
+  loops.push_back(L);
   std::vector<char> wrap(n, 0);
+  std::vector<std::array<Eigen::Vector2d, 5>> shape(n);
   bool any = false;
   for (size_t k = 0; k < n; ++k) {
     // Neighbouring tips share a node: wrap one per pass.
     if (skipped[k] && L[k] < first_new && interior_angle(P, L, k) > limit &&
         !(k >= 2 && wrap[k - 2]) && !(k + 2 >= n && wrap[(k + 2) % n])) {
+      const int ia = L[(k + n - 1) % n], ip = L[k], ib = L[(k + 1) % n];
+      shape[k] = corner_template(P[static_cast<size_t>(ia)], P[static_cast<size_t>(ip)],
+                                 P[static_cast<size_t>(ib)], interior_angle(P, L, k));
+      if (!template_clear(P, loops, ia, ip, ib, shape[k])) continue;
       wrap[k] = any = true;
     }
   }
@@ -67,26 +136,15 @@ std::vector<int> wrap_reflex_tips(const std::vector<int>& L, double limit, int f
       out.push_back(L[k]);
       continue;
     }
-    // Paving's corner template: three quads around the tip p, each taking a
-    // third of its angle; the loop a, p, b becomes a, a', q1, q2, q3, b', b.
+    // The loop a, p, b becomes a, a', q1, q2, q3, b', b.
     const int ia = L[(k + n - 1) % n], ip = L[k], ib = L[(k + 1) % n];
-    const Eigen::Vector2d a = P[static_cast<size_t>(ia)], p = P[static_cast<size_t>(ip)],
-                          b = P[static_cast<size_t>(ib)];
-    const double theta = interior_angle(P, L, k);
-    const double h = 0.5 * ((a - p).norm() + (b - p).norm());
-    const Eigen::Vector2d u = (b - p).normalized();
-    auto dir = [&](double ang) {
-      return Eigen::Vector2d(u.x() * std::cos(ang) - u.y() * std::sin(ang),
-                             u.x() * std::sin(ang) + u.y() * std::cos(ang));
-    };
-    const Eigen::Vector2d q3 = p + h * dir(theta / 3), q1 = p + h * dir(2 * theta / 3);
-    const Eigen::Vector2d q2 = p + 1.3 * h * dir(theta / 2);
     const auto add = [&](const Eigen::Vector2d& x) {
       P.push_back(x);
       return static_cast<int>(P.size()) - 1;
     };
-    const int n3 = add(q3), n2 = add(q2), n1 = add(q1);
-    const int na = add(a + (q1 - p)), nb = add(b + (q3 - p));
+    const auto& t = shape[k];
+    const int n3 = add(t[3]), n2 = add(t[2]), n1 = add(t[1]);
+    const int na = add(t[0]), nb = add(t[4]);
     quads.push_back({ip, ib, nb, n3});
     quads.push_back({ip, n3, n2, n1});
     quads.push_back({ia, ip, n1, na});

@@ -87,9 +87,12 @@ double skipped_quality(const std::vector<Eigen::Vector2d>& points, const std::ve
 /// `first_new` (given nodes only: the template's own nodes are never
 /// wrapped): three quads around the node, 4 new loop nodes. Appends nodes and
 /// quads; returns the new loop (or the same loop when nothing was wrapped).
+/// A tip whose template would cross or enclose a part of `loop` or of
+/// `other_loops` (a hole next to the tip) is not wrapped.
 std::vector<int> wrap_reflex_tips(const std::vector<int>& loop, double limit, int first_new,
                                   std::vector<Eigen::Vector2d>& points, std::vector<Quad>& quads,
-                                  double corner_angle = 0.0);
+                                  double corner_angle = 0.0,
+                                  const std::vector<std::vector<int>>& other_loops = {});
 
 /// Surrounds the 4-node hole `loop` (clockwise) with a ring of 8 quads: the
 /// 4x4 lattice of the hole's bilinear map extrapolated by `width` hole widths.

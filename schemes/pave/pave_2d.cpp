@@ -153,11 +153,16 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
       if (work[l].size() != 4) continue;
       work[l] = detail::ring_around_small_hole(work[l], options.ring_width, P, quads);
     }
-    for (auto& loop : work) {
+    for (size_t l = 0; l < work.size(); ++l) {
+      std::vector<int>& loop = work[l];
+      std::vector<std::vector<int>> others;
+      for (size_t o = 0; o < work.size(); ++o) {
+        if (o != l) others.push_back(work[o]);
+      }
       for (int pass = 0; pass < 4; ++pass) {
         std::vector<int> wrapped =
             detail::wrap_reflex_tips(loop, options.tip_angle * M_PI / 180.0, nb, P, quads,
-                                     options.corner_angle * M_PI / 180.0);
+                                     options.corner_angle * M_PI / 180.0, others);
         if (wrapped.size() == loop.size()) break;
         loop = std::move(wrapped);
       }

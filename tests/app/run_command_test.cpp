@@ -258,6 +258,33 @@ TEST_F(RunCommand, PlanShowsEveryChoiceWithReasonsWithoutMeshing) {
   EXPECT_EQ(check.out, "cooper 12 True\n");
 }
 
+// A volume asked for wedges (or a wedge/hex mix) that no scheme takes is
+// refused for what was asked, at plan and at run, with and without the
+// automatic decomposition (issue 15; it said "no hex scheme applies").
+TEST_F(RunCommand, ARefusedWedgeOrMixedVolumeNamesTheElementKindAsked) {
+  for (const std::string kind : {"wedge", "mixed"}) {
+    for (const std::string decompose : {"auto", "off"}) {
+      SCOPED_TRACE(kind + ", decompose " + decompose);
+      const std::string job =
+          journal(kind + decompose + ".xml",
+                  R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>
+  <mesh size="0.3" decompose=")" +
+                      decompose + R"(">
+    <volume id="1" elements=")" +
+                      kind + R"("/>
+  </mesh>
+)");
+      const std::string said = "volume 1: no " + kind + " scheme applies";
+      for (const std::string command : {" plan ", " run -q "}) {
+        const auto r = run_command(kCli + command + job);
+        EXPECT_EQ(r.exit_code, 2) << command;
+        EXPECT_NE(r.err.find(said), std::string::npos) << command << r.err;
+        EXPECT_EQ((r.err + r.out).find("hex scheme"), std::string::npos) << command << r.err;
+      }
+    }
+  }
+}
+
 TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
   const std::string job =
       journal("ball.xml", R"(  <geometry><sphere name="s" center="0 0 0" radius="1"/></geometry>

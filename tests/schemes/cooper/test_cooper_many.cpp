@@ -540,10 +540,15 @@ TEST(CooperMany, EveryRequiredGeometryIsRotationInvariant) {
 TEST(CooperMany, JournalsMeshThroughThePipeline) {
   const std::string dir = std::string(COOPERAGE_SOURCE_DIR) + "/tests/schemes/cooper/data/";
   const std::vector<std::pair<std::string, double>> journals = {
-      {"cooper_square_boss.xml", 33.0},      {"cooper_two_bosses_hole.xml", 67.0},
-      {"cooper_stacked_bosses.xml", 21.0},   {"cooper_appendages.xml", 52.875},
-      {"cooper_fig3a_webcut.xml", 34.0},     {"cooper_straddling_step.xml", 58.0},
-      {"cooper_overhanging_boss.xml", 77.5}, {"cooper_boss_over_foot.xml", 34.0}};
+      {"cooper_square_boss.xml", 33.0},
+      {"cooper_two_bosses_hole.xml", 67.0},
+      {"cooper_stacked_bosses.xml", 21.0},
+      {"cooper_appendages.xml", 52.875},
+      {"cooper_fig3a_webcut.xml", 34.0},
+      {"cooper_straddling_step.xml", 58.0},
+      {"cooper_overhanging_boss.xml", 77.5},
+      {"cooper_boss_over_foot.xml", 34.0},
+      {"cooper_nuts_across_block_edge.xml", 297.76}};
   const auto registry = with_polygon_mesher();
   for (const auto& [file, exact] : journals) {
     SCOPED_TRACE(file);

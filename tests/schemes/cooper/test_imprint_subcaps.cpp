@@ -179,6 +179,30 @@ TEST(ImprintSubcaps, SubtractionAlongTheBoundarySplitsTheOpposingCap) {
   EXPECT_EQ(count(r, ImprintStep::Subtract), 1u);
 }
 
+// A block's footprint on a plate's top whose loop runs along two nuts'
+// outlines on the underside, A and B (holes of the underside): from A to B
+// and back. Either gap alone joins two holes and splits nothing; both
+// together cut the block's image off the underside and join A and B into
+// one hole (issue 15: gmsh_as1-tu-203's plate, "no imprinting step applies").
+TEST(ImprintSubcaps, AFootprintBetweenTwoHolesIsSubtractedWithBothGaps) {
+  Hand h;
+  h.exterior(rect(0, 0, 8, 6));
+  h.subcap(0, 1, {rect(0, 0, 8, 6), hole(3, 1, 5, 2), hole(3, 4, 5, 5)});  // underside
+  h.subcap(0, 2, {rect(3, 1, 5, 2)});                                      // nut A
+  h.subcap(0, 3, {rect(3, 4, 5, 5)});                                      // nut B
+  h.subcap(1, 4, {rect(3, 1, 5, 2)});
+  h.subcap(1, 5, {rect(3, 4, 5, 5)});
+  // The block [1, 4] x [1, 5] less the nuts, and the top around it all.
+  h.subcap(1, 6, {{{1, 1}, {3, 1}, {3, 2}, {4, 2}, {4, 4}, {3, 4}, {3, 5}, {1, 5}}});
+  h.subcap(1, 7,
+           {rect(0, 0, 8, 6), {{1, 1}, {1, 5}, {5, 5}, {5, 4}, {4, 4}, {4, 2}, {5, 2}, {5, 1}}});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 48);
+  EXPECT_GE(count(r, ImprintStep::Subtract), 1u);
+  EXPECT_EQ(r.ends.upper.size(), 4u);  // the underside split in two, the nuts
+  EXPECT_EQ(r.ends.lower.size(), 4u);  // nothing new
+}
+
 // Stepped L (sec. 5.3): the upper step a straddles the boundary x = 2
 // between the lower regions b and c.
 TEST(ImprintSubcaps, IntersectionOfAStepStraddlingTwoLowerRegions) {
