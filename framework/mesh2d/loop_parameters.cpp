@@ -149,6 +149,39 @@ double orientation(const geom::SurfaceGeometry& surface,
   return sum < 0 ? -1.0 : 1.0;
 }
 
+/// A face that comes back close to itself (a thin B-spline strip bent
+/// round, real-cad occt_bottle's shoulder) can give a node two feet on the
+/// surface; the global projector may take the far one, and the loop then
+/// jumps across the parameter plane and back (a self-crossing polygon). A
+/// node whose parameters lie far from both neighbours while the neighbours
+/// lie close together is projected again from their midpoint, and the new
+/// foot is kept when it is as close to the node as the first.
+void repair_stray_projections(const geom::SurfaceGeometry& surface,
+                              const std::vector<std::vector<Vec3>>& loops,
+                              const std::vector<std::vector<int>>& pole_dir, double tol,
+                              std::vector<std::vector<Vector2d>>& raw) {
+  for (size_t l = 0; l < loops.size(); ++l) {
+    const size_t n = raw[l].size();
+    if (n < 3) continue;
+    for (size_t k = 0; k < n; ++k) {
+      if (pole_dir[l][k] >= 0) continue;
+      const size_t a = (k + n - 1) % n, b = (k + 1) % n;
+      if (pole_dir[l][a] >= 0 || pole_dir[l][b] >= 0) continue;
+      const Vector2d& pa = raw[l][a];
+      const Vector2d& pb = raw[l][b];
+      const double across = (pa - pb).norm();
+      const double away = std::min((raw[l][k] - pa).norm(), (raw[l][k] - pb).norm());
+      if (!(away > 4.0 * across + 1e-12)) continue;
+      const Vec3& p = loops[l][k];
+      const geom::SurfaceProjection near = surface.project_near(p, 0.5 * (pa + pb));
+      const double first = (surface.point(raw[l][k]) - p).norm();
+      if (near.distance <= std::max(first, tol) &&
+          std::min((near.uv - pa).norm(), (near.uv - pb).norm()) < away)
+        raw[l][k] = near.uv;
+    }
+  }
+}
+
 }  // namespace
 
 double closed_period(const geom::SurfaceGeometry& surface, int dir) {
@@ -206,6 +239,7 @@ LoopParameters loop_parameters(const geom::SurfaceGeometry& surface,
       pole_dir[l].push_back(walker.pole_direction(p, uv, tol));
     }
   }
+  repair_stray_projections(surface, loops, pole_dir, tol, raw);
   const double sigma = orientation(surface, raw, pole_dir);
 
   LoopParameters out;
