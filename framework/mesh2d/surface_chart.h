@@ -5,7 +5,9 @@
 // * Planes: an orthonormal frame of the plane (origin at the first node, x
 //   along the first edge): exact, and a rigidly moved face gives the same
 //   coordinates.
-// * Other faces: the parameters (u, v) of the nodes, continuous across
+// * Other faces: the parameters (u, v) of the nodes (a node the global
+//   projection put on a far sheet of the face, away from both neighbours,
+//   projected again from them: loop_parameters.cpp), continuous across
 //   periodic seams, poles opened into segments (loop_parameters.h), each
 //   direction scaled by the mean |dS/du|, |dS/dv| over the nodes. Where that
 //   plane keeps the surface's angles (on a background triangulation, every
