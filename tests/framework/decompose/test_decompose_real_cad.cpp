@@ -8,6 +8,8 @@
 #include "selector/select_schemes.h"
 #include "support/hex_mesh_check.h"
 
+#include "support/real_cad.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -18,16 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// ../shared/real-cad from the checkout (the main checkout sits next to
-// shared/; a git worktree one folder deeper, hence the second guess).
-std::string real_cad(const std::string& file) {
-  const fs::path source(COOPERAGE_SOURCE_DIR);
-  for (const fs::path& up : {source / "..", source / ".." / ".."}) {
-    const fs::path p = (up / "shared" / "real-cad" / file).lexically_normal();
-    if (fs::exists(p)) return p.string();
-  }
-  return (source / ".." / "shared" / "real-cad" / file).lexically_normal().string();
-}
+using testing::real_cad;
 
 class DecomposeRealCad : public ::testing::TestWithParam<const char*> {};
 

@@ -7,6 +7,8 @@
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
+#include "support/real_cad.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,15 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// ../shared/real-cad from the checkout (a git worktree sits one folder deeper).
-std::string real_cad(const std::string& file) {
-  const fs::path source(COOPERAGE_SOURCE_DIR);
-  for (const fs::path& up : {source / "..", source / ".." / ".."}) {
-    const fs::path p = (up / "shared" / "real-cad" / file).lexically_normal();
-    if (fs::exists(p)) return p.string();
-  }
-  return (source / ".." / "shared" / "real-cad" / file).lexically_normal().string();
-}
+using testing::real_cad;
 
 // gmsh_as1-tu-203's plate (volume 11 of 18, not decomposed): two blocks on
 // its top, six nuts below, two straddling each block's edge. Imprinting
