@@ -21,6 +21,22 @@ namespace {
 /// Fraction of a circle's area a regular n-gon inscribed in it leaves out.
 double polygon_shortfall(int n) { return 1.0 - n * std::sin(2.0 * M_PI / n) / (2.0 * M_PI); }
 
+/// A rod of radius 5 and length 50.
+geom::Model rod() {
+  occ::Workbench bench;
+  bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
+  return bench.build_model();
+}
+
+/// A radius-1 hole through a 100 x 100 x 10 plate.
+geom::Model plate_with_hole() {
+  occ::Workbench bench;
+  bench.brick("plate", {0, 0, 0}, {100, 100, 10});
+  bench.cylinder("hole", {50, 50, -1}, {0, 0, 1}, 1.0, 12.0);
+  bench.cut("part", {"plate", "hole"});
+  return bench.build_model();
+}
+
 std::map<int, TurningCurve> circles_at(const geom::Model& model, int n) {
   std::map<int, TurningCurve> out;
   for (const auto& c : model.curves()) {
@@ -30,9 +46,7 @@ std::map<int, TurningCurve> circles_at(const geom::Model& model, int n) {
 }
 
 TEST(FacetingBudget, ACylindersLossIsItsPolygonsShortfallTimesItsLength) {
-  occ::Workbench bench;
-  bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
-  const geom::Model model = bench.build_model();
+  const geom::Model model = rod();
   for (int n : {6, 12, 40}) {
     const FacetingLoss loss = faceting_loss(model, 1, circles_at(model, n));
     const double disc = M_PI * 25.0;
@@ -56,9 +70,7 @@ IntervalSolution solved(const geom::Model& model, double size, int dim) {
 TEST(FacetingBudget, ARodAtACoarseSizeKeepsItsVolume) {
   // Diameter 10 at size 20: the turning rule alone gives a hexagon, 17 %
   // of the volume short. The budget is half the default tolerance of 1 %.
-  occ::Workbench bench;
-  bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
-  const geom::Model model = bench.build_model();
+  const geom::Model model = rod();
   ASSERT_GT(polygon_shortfall(6), 0.17);
   int least = 3;
   while (polygon_shortfall(least) > 0.005) ++least;  // 37
@@ -77,9 +89,7 @@ TEST(FacetingBudget, ARodAtACoarseSizeKeepsItsVolume) {
 }
 
 TEST(FacetingBudget, ALooserToleranceRefinesLess) {
-  occ::Workbench bench;
-  bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
-  const geom::Model model = bench.build_model();
+  const geom::Model model = rod();
   std::map<int, TurningCurve> curves = circles_at(model, 6);
   FacetingOptions tight, loose;
   tight.fraction = 0.005;
@@ -100,11 +110,7 @@ TEST(FacetingBudget, ALooserToleranceRefinesLess) {
 TEST(FacetingBudget, AHolesFacetsAddVolumeAndATubesCancel) {
   // A radius-1 hole through a 10-thick plate: n chords leave the hole's
   // polygon short, so the mesh holds 10 pi shortfall(n) more than the CAD.
-  occ::Workbench bench;
-  bench.brick("plate", {0, 0, 0}, {100, 100, 10});
-  bench.cylinder("hole", {50, 50, -1}, {0, 0, 1}, 1.0, 12.0);
-  bench.cut("part", {"plate", "hole"});
-  const geom::Model plate = bench.build_model();
+  const geom::Model plate = plate_with_hole();
   const FacetingLoss hole = faceting_loss(plate, 1, circles_at(plate, 8));
   EXPECT_NEAR(hole.volume, -10.0 * M_PI * polygon_shortfall(8), 1e-9);
   EXPECT_GT(hole.area, 0.0);  // flat panels are shorter than arcs either way
@@ -129,11 +135,7 @@ TEST(FacetingBudget, AHolesFacetsAddVolumeAndATubesCancel) {
 TEST(FacetingBudget, ASmallHoleInALargePlateIsNotRefined) {
   // A radius-1 hole through a 100 x 100 x 10 plate at size 5: its hexagon
   // adds 10 * 1.09 to a volume of 1e5, far inside the budget.
-  occ::Workbench bench;
-  bench.brick("plate", {0, 0, 0}, {100, 100, 10});
-  bench.cylinder("hole", {50, 50, -1}, {0, 0, 1}, 1.0, 12.0);
-  bench.cut("part", {"plate", "hole"});
-  const geom::Model model = bench.build_model();
+  const geom::Model model = plate_with_hole();
   const auto sizing = curve_sizing(model, [](int) { return 5.0; });
   int circles = 0;
   for (const auto& c : model.curves()) {
@@ -147,9 +149,7 @@ TEST(FacetingBudget, ASmallHoleInALargePlateIsNotRefined) {
 TEST(FacetingBudget, EveryRoundFaceAtItsFinestStopsTheSearch) {
   // A radius-5 rod with a cap of 60 degrees an interval cannot meet 0.5 %:
   // the search ends with every circle at the cap.
-  occ::Workbench bench;
-  bench.cylinder("rod", {0, 0, 0}, {0, 0, 1}, 5.0, 50.0);
-  const geom::Model model = bench.build_model();
+  const geom::Model model = rod();
   FacetingOptions coarse;
   coarse.min_turn_deg = 30.0;  // at most 12 intervals a circle
   const auto raised = faceting_minima(model, circles_at(model, 6), coarse);
