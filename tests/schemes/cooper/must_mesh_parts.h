@@ -18,6 +18,16 @@ using Build = std::function<void(occ::Workbench&)>;
 
 inline constexpr double kPi = 3.14159265358979323846;
 
+// A 10 x 4 x 2 plate with three round through holes, as "plate" (not on
+// the must-mesh list: one-to-one, shared by the cooper and threads tests).
+inline void plate_three_round_holes(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {10, 4, 2});
+  wb.cylinder("h1", {2.5, 2, 0}, {0, 0, 1}, 0.6, 2);
+  wb.cylinder("h2", {5, 2, 0}, {0, 0, 1}, 0.6, 2);
+  wb.cylinder("h3", {7.5, 2, 0}, {0, 0, 1}, 0.6, 2);
+  wb.cut("plate", {"b", "h1", "h2", "h3"});
+}
+
 // A 4 x 4 x 2 block with a round blind hole from the top, 1.2 deep.
 inline void blind_hole(occ::Workbench& wb) {
   wb.brick("b", {0, 0, 0}, {4, 4, 2});

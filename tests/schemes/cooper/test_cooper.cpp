@@ -6,6 +6,7 @@
 
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
+#include "must_mesh_parts.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "plan_helpers.h"
@@ -155,11 +156,7 @@ TEST(Cooper, PlateWithThreeSquareHolesSweepsExactly) {
 
 TEST(Cooper, PlateWithCircularHolesNeedsPave) {
   occ::Workbench wb;
-  wb.brick("b", {0, 0, 0}, {10, 4, 2});
-  wb.cylinder("h1", {2.5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("h2", {5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("h3", {7.5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cut("plate", {"b", "h1", "h2", "h3"});
+  parts::plate_three_round_holes(wb);
   const geom::Model model = wb.build_model();
   const auto registry = with_cooper();
   if (!registry->surface_scheme("pave")) {

@@ -73,11 +73,7 @@ void check_threads(const geom::Model& model, double size, size_t min_hexes) {
 
 TEST(CooperThreads, PlateWithRoundHolesIsTheSameOnOneAndTwoThreads) {
   occ::Workbench wb;
-  wb.brick("b", {0, 0, 0}, {10, 4, 2});
-  wb.cylinder("h1", {2.5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("h2", {5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cylinder("h3", {7.5, 2, 0}, {0, 0, 1}, 0.6, 2);
-  wb.cut("plate", {"b", "h1", "h2", "h3"});
+  parts::plate_three_round_holes(wb);
   check_threads(wb.build_model(), 0.12, 30000);
 }
 
