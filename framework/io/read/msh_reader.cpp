@@ -9,6 +9,7 @@
 #include "framework/io/read/read_common.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -52,14 +53,16 @@ class Cursor {
     const std::string t(token(what));
     char* end = nullptr;
     const long long v = std::strtoll(t.c_str(), &end, 10);
-    if (t.empty() || *end != '\0') fail(std::string("expected ") + what + ", got \"" + t + "\"");
+    if (t.empty() || *end != '\0')
+      fail(std::string("expected ") + what + ", got \"" + clip(t) + "\"");
     return v;
   }
   double real(const char* what) {
     const std::string t(token(what));
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
-    if (t.empty() || *end != '\0') fail(std::string("expected ") + what + ", got \"" + t + "\"");
+    if (t.empty() || *end != '\0')
+      fail(std::string("expected ") + what + ", got \"" + clip(t) + "\"");
     return v;
   }
   /// Counts in a header must be >= 0 and fit in the rest of the file (every
@@ -131,7 +134,7 @@ class Cursor {
 
   void expect(const std::string& word) {
     const std::string_view t = token(word.c_str());
-    if (t != word) fail("expected " + word + ", got \"" + std::string(t) + "\"");
+    if (t != word) fail("expected " + word + ", got \"" + clip(t) + "\"");
   }
 
  private:
@@ -153,7 +156,7 @@ int64_t to_int(Cursor& c, std::string_view t) {
   const std::string s(t);
   char* end = nullptr;
   const long long v = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0') c.fail("expected an integer, got \"" + s + "\"");
+  if (s.empty() || *end != '\0') c.fail("expected an integer, got \"" + clip(s) + "\"");
   return v;
 }
 
@@ -463,7 +466,8 @@ MeshFile read_msh(const std::string& path) {
   bool have_format = false;
   while (!c.at_end()) {
     const std::string section(c.token("a section"));
-    if (section.empty() || section[0] != '$') c.fail("expected a section, got \"" + section + "\"");
+    if (section.empty() || section[0] != '$')
+      c.fail("expected a section, got \"" + clip(section) + "\"");
     const std::string name = section.substr(1);
     if (name == "MeshFormat") {
       const std::string version(c.token("the format version"));
@@ -472,8 +476,8 @@ MeshFile read_msh(const std::string& path) {
       binary = file_type != 0;
       if (binary) {
         if (version != "4.1") {
-          throw MeshingError(ErrorCode::NotSupported,
-                             path + ": binary .msh " + version + " is not supported (use 4.1)");
+          throw MeshingError(ErrorCode::NotSupported, path + ": binary .msh " + clip(version, 16) +
+                                                          " is not supported (use 4.1)");
         }
         if (data_size != 8)
           c.fail("binary data size " + std::to_string(data_size) + " (8 expected)");
@@ -488,7 +492,7 @@ MeshFile read_msh(const std::string& path) {
       else if (version.rfind("2.", 0) == 0)
         legacy = true;
       else {
-        throw MeshingError(ErrorCode::NotSupported, path + ": .msh version " + version +
+        throw MeshingError(ErrorCode::NotSupported, path + ": .msh version " + clip(version, 16) +
                                                         " is not supported (use 4.1 or 2.2 ASCII)");
       }
       c.expect("$EndMeshFormat");

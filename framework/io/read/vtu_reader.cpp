@@ -86,13 +86,13 @@ class VtuParser {
   std::vector<double> values(const tinyxml2::XMLElement* a) const {
     const std::string name = a->Attribute("Name") ? a->Attribute("Name") : "(unnamed)";
     const std::string where =
-        "DataArray \"" + name + "\" (line " + std::to_string(a->GetLineNum()) + ")";
+        "DataArray \"" + clip(name, 40) + "\" (line " + std::to_string(a->GetLineNum()) + ")";
     const char* fmt_attr = a->Attribute("format");
     const std::string format = fmt_attr ? fmt_attr : "ascii";
     const char* type_attr = a->Attribute("type");
     const std::string type = type_attr ? type_attr : "";
     const std::size_t size = type_size(type);
-    if (size == 0) parse_error(path_, where + ": unknown type \"" + type + "\"");
+    if (size == 0) parse_error(path_, where + ": unknown type \"" + clip(type, 40) + "\"");
     const char* text = a->GetText();
     std::vector<double> out;
     if (format == "appended") return appended_values(a, where, type, size);
@@ -103,12 +103,13 @@ class VtuParser {
       while (in >> tok) {
         char* end = nullptr;
         const double v = std::strtod(tok.c_str(), &end);
-        if (*end != '\0') parse_error(path_, where + ": bad number \"" + tok + "\"");
+        if (*end != '\0') parse_error(path_, where + ": bad number \"" + clip(tok, 40) + "\"");
         out.push_back(v);
       }
       return out;
     }
-    if (format != "binary") parse_error(path_, where + ": unknown format \"" + format + "\"");
+    if (format != "binary")
+      parse_error(path_, where + ": unknown format \"" + clip(format, 40) + "\"");
     std::vector<unsigned char> bytes;
     if (text && !base64_decode(text, bytes)) parse_error(path_, where + ": bad base64 data");
     if (bytes.size() < header_size_) parse_error(path_, where + ": binary data without a header");
@@ -350,19 +351,19 @@ MeshFile read_vtu(const std::string& path) {
   if (!root || std::strcmp(root->Name(), "VTKFile") != 0) parse_error(path, "no VTKFile element");
   const char* type = root->Attribute("type");
   if (!type || std::strcmp(type, "UnstructuredGrid") != 0) {
-    parse_error(path, std::string("VTKFile type is \"") + (type ? type : "") +
+    parse_error(path, std::string("VTKFile type is \"") + clip(type ? type : "", 40) +
                           "\", expected \"UnstructuredGrid\"");
   }
   if (root->Attribute("compressor")) {
     not_supported(path, std::string("compressed data (compressor=\"") +
-                            root->Attribute("compressor") + "\")");
+                            clip(root->Attribute("compressor"), 40) + "\")");
   }
   const char* order = root->Attribute("byte_order");
   const bool big = order && std::strcmp(order, "BigEndian") == 0;
   const char* header = root->Attribute("header_type");
   const std::string header_type = header ? header : "UInt32";
   if (header_type != "UInt32" && header_type != "UInt64") {
-    parse_error(path, "header_type \"" + header_type + "\" is not UInt32 or UInt64");
+    parse_error(path, "header_type \"" + clip(header_type, 40) + "\" is not UInt32 or UInt64");
   }
   const VtuParser parser(path, big, type_size(header_type), split.appended);
   const auto* grid = root->FirstChildElement("UnstructuredGrid");

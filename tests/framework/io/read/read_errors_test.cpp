@@ -172,5 +172,30 @@ TEST(ReadErrors, VtuXmlErrorIsClipped) {
   }
 }
 
+// libFuzzer (CI's fuzz run, 2026-12-02): file text quoted in an error came
+// whole -- a 9 KB "type" attribute of a DataArray, a long token where a .msh
+// number belongs. Both are clipped now.
+TEST(ReadErrors, FileTextQuotedInAnErrorIsClipped) {
+  const std::string dir = scratch_dir();
+  const std::string junk(5000, 'x');
+  write_file(dir + "/type.vtu",
+             "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"1\" "
+             "NumberOfCells=\"0\"><Points><DataArray type=\"" +
+                 junk +
+                 "\" NumberOfComponents=\"3\">0 0 0</DataArray></Points></Piece>"
+                 "</UnstructuredGrid></VTKFile>\n");
+  write_file(dir + "/token.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n" + junk + "\n");
+  write_file(dir + "/version.msh", "$MeshFormat\n" + junk + " 0 8\n$EndMeshFormat\n");
+  for (const char* name : {"/type.vtu", "/token.msh", "/version.msh"}) {
+    try {
+      io::read_mesh_file(dir + name);
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const MeshingError& e) {
+      EXPECT_NE(std::string(e.what()).find("xxxx"), std::string::npos) << e.what();
+      EXPECT_LT(std::string(e.what()).size(), dir.size() + 200) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::test
