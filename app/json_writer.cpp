@@ -72,6 +72,11 @@ void JsonWriter::value(double d) {
   out_ << buf;
 }
 
+void JsonWriter::null() {
+  separate();
+  out_ << "null";
+}
+
 void JsonWriter::value(int i) {
   separate();
   out_ << i;

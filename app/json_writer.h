@@ -24,6 +24,7 @@ class JsonWriter {
   void value(bool b);
   void value(const std::vector<int>& list);
   void value(const std::vector<double>& list);
+  void null();
 
   static std::string escape(const std::string& s);
 

@@ -2,11 +2,19 @@
 
 #include "json_writer.h"
 
+#include "framework/scheme/vertex_angles.h"
+
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace cooperage::app {
 namespace {
+
+/// `info` names a surface's corner sharper than this [degrees]: from here
+/// on no element at it reaches the scaled Jacobian 0.2 of `--dim 2`.
+constexpr double kSharpCornerDegrees = 12.0;
 
 using geom::Sense;
 
@@ -24,6 +32,23 @@ std::string id_list(const std::vector<int>& ids) {
   std::string s;
   for (int id : ids) s += (s.empty() ? "" : " ") + std::to_string(id);
   return s.empty() ? "-" : s;
+}
+
+/// The sharpest interior angle at a vertex of a surface's loops, and its
+/// vertex; none when no loop has a vertex. No element at a corner of angle
+/// a can have a scaled Jacobian above sin(a): `info` says so for quality.
+struct SharpestCorner {
+  int vertex = 0;
+  double degrees = 360.0;
+};
+std::optional<SharpestCorner> sharpest_corner(const geom::Model& model, const geom::Surface& s) {
+  std::optional<SharpestCorner> out;
+  for (size_t l = 0; l < s.loops.size(); ++l) {
+    for (const auto& c : scheme::loop_corners(model, s.id, static_cast<int>(l))) {
+      if (!out || c.angle < out->degrees) out = SharpestCorner{c.vertex, c.angle};
+    }
+  }
+  return out;
 }
 
 std::string loop_text(const geom::Loop& loop) {
@@ -72,7 +97,14 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
   out << "\nsurfaces\n";
   for (const auto& s : model.surfaces()) {
     out << "  surface " << s.id << ": " << geom::to_string(s.geometry->type()) << ", area "
-        << num(s.area) << ", volumes " << id_list(s.volumes) << "\n";
+        << num(s.area) << ", volumes " << id_list(s.volumes);
+    const auto sharpest = sharpest_corner(model, s);
+    if (sharpest && sharpest->degrees < kSharpCornerDegrees) {
+      out << ", corner of " << num(std::round(sharpest->degrees * 10) / 10) << " degrees at vertex "
+          << sharpest->vertex << " (no element there above scaled Jacobian "
+          << num(std::round(std::sin(sharpest->degrees * M_PI / 180) * 1000) / 1000) << ")";
+    }
+    out << "\n";
     for (size_t i = 0; i < s.loops.size(); ++i) {
       out << "    " << (i == 0 ? "outer loop: " : "hole loop:  ") << loop_text(s.loops[i]) << "\n";
     }
@@ -148,6 +180,17 @@ void write_model_json(const geom::Model& model, const std::string& source, std::
     j.value(s.area);
     j.key("volumes");
     j.value(s.volumes);
+    j.key("sharpest_corner");
+    if (const auto sharpest = sharpest_corner(model, s)) {
+      j.begin_object();
+      j.key("vertex");
+      j.value(sharpest->vertex);
+      j.key("degrees");
+      j.value(sharpest->degrees);
+      j.end_object();
+    } else {
+      j.null();
+    }
     j.key("loops");
     j.begin_array();
     for (const auto& loop : s.loops) {

@@ -44,6 +44,12 @@ double sharpest_corner(const scheme::SurfaceView& view) {
 
 }  // namespace
 
+double reachable_floor(double min_quality, double sharpest_degrees) {
+  const double angle = std::max(sharpest_degrees, kSharpestCornerCounted);
+  if (angle >= 90.0) return min_quality;
+  return std::min(min_quality, 0.95 * std::sin(angle * M_PI / 180.0));
+}
+
 FallbackChain::FallbackChain(std::unique_ptr<scheme::SurfaceScheme> primary,
                              std::unique_ptr<scheme::SurfaceScheme> quads,
                              std::unique_ptr<scheme::SurfaceScheme> triangles, double min_quality)
@@ -59,6 +65,10 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   if (surface == nullptr) return primary_->mesh(view, params);
   const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };
   const std::string floor = number(min_quality_);
+  // What the face allows: below it the chain looks further, at or above it
+  // the first mesh is kept (a 3-degree corner is no reason to give up quads).
+  const double corner = sharpest_corner(view);
+  const double reachable = reachable_floor(min_quality_, corner);
 
   std::vector<std::string> given_up;  // why each step before the kept one was not kept
   std::optional<Candidate> best;      // the valid candidate with the best worst element
@@ -72,7 +82,7 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
     }
     if (c.mesh.tris.empty() && (!best_quads || c.quality.min > best_quads->quality.min))
       best_quads = c;
-    const bool good = c.quality.min >= min_quality_;
+    const bool good = c.quality.min >= reachable;
     if (!good)
       given_up.push_back(c.what + " reaches a scaled Jacobian of only " + number(c.quality.min));
     if (!best || c.quality.min > best->quality.min) best = std::move(c);
@@ -103,7 +113,6 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
                 std::to_string(out.tris.size()) + " triangles)";
       }
       if (best->quality.min < min_quality_) {
-        const double corner = sharpest_corner(view);
         kept += "; no mesh reaches " + floor + ", the best has worst element " +
                 number(best->quality.min);
         if (corner < 90.0 && std::sin(corner * M_PI / 180.0) < min_quality_ + 0.05) {
@@ -119,7 +128,15 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   };
 
   // 1. The primary scheme; 2. the all-quad fallback.
-  if (run(*primary_, std::string(primary_->name()) + "'s mesh")) return finish(false);
+  if (run(*primary_, std::string(primary_->name()) + "'s mesh")) {
+    if (best->quality.min < min_quality_) {
+      best->mesh.warnings.push_back(std::string(primary_->name()) + ": worst element " +
+                                    number(best->quality.min) + ", below " + floor +
+                                    ": the face has a corner of " + number(corner) +
+                                    " degrees, and no element at it can exceed sin of that angle");
+    }
+    return finish(false);
+  }
   if (quads_ && run(*quads_, std::string(quads_->name()) + "'s all-quad mesh")) return finish(true);
   // 3. Quad-dominant: the best quad mesh with its poor quads split.
   if (best_quads) {

@@ -8,7 +8,11 @@
 //   3. quad-dominant: the best quad mesh of 1-2 with its quads below
 //      min_quality split into triangles (framework/mesh/split_poor_quads.h);
 //   4. triangles (the tri scheme), the last resort.
-// When none reaches min_quality, the valid mesh (nothing inverted) with the
+// A face with a corner sharper than asin(min_quality) cannot reach it: no
+// element at a corner of angle a exceeds sin(a). There the bar is
+// reachable_floor(): a mesh that reaches what the corner allows is kept as
+// it is, with a warning, rather than traded for triangles.
+// When none reaches the bar, the valid mesh (nothing inverted) with the
 // best worst element is kept. Every step past the primary adds a sentence to
 // EntityMesh::warnings saying what was given up and why; nothing inverted is
 // ever returned (no valid mesh at all: the primary's error, with the
@@ -24,6 +28,14 @@
 #include <memory>
 
 namespace cooperage::quad_dominant {
+
+/// Corners sharper than this [degrees] count as this sharp: at a cusp (0
+/// degrees between tangents) the chords still open an angle.
+inline constexpr double kSharpestCornerCounted = 3.0;
+
+/// The worst element a chain accepts on a face whose sharpest corner is
+/// `sharpest_degrees`: min(min_quality, 0.95 sin(max(sharpest, 3 degrees))).
+double reachable_floor(double min_quality, double sharpest_degrees);
 
 class FallbackChain final : public scheme::SurfaceScheme {
  public:

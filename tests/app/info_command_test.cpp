@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -58,6 +59,35 @@ TEST_F(InfoCommand, JsonIsValidAndComplete) {
       "')); print(len(d['volumes']), len(d['surfaces']) > 0, d['volumes'][0]['volume'] > 0)\"");
   ASSERT_EQ(check.exit_code, 0) << check.err;
   EXPECT_EQ(check.out, "1 True True\n");
+}
+
+// A prism whose profile has an 8-degree corner: both caps have it, the
+// rectangular sides have 90 degrees. The text names the corner and the
+// scaled Jacobian it allows (sin 8 = 0.139); the JSON gives every face's.
+TEST_F(InfoCommand, SharpCornersAreNamedWithTheQualityTheyAllow) {
+  const double corner = 8.0 * M_PI / 180.0, tip = 2.0 / std::tan(corner);
+  occ::Workbench bench;
+  bench.prism("blade", {{0, 0, 0}, {tip + 4, 0, 0}, {tip + 4, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
+  const std::string file = path("blade.step");
+  bench.write(file);
+  const auto text = run_command(kCli + " info " + file);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  size_t named = 0;
+  for (size_t at = 0;
+       (at = text.out.find("corner of 8 degrees at vertex", at)) != std::string::npos; ++at)
+    ++named;
+  EXPECT_EQ(named, 2u) << text.out;
+  EXPECT_NE(text.out.find("scaled Jacobian 0.139"), std::string::npos) << text.out;
+  const auto r = run_command(kCli + " info --json " + file);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = path("blade.json");
+  std::ofstream(json) << r.out;
+  const auto check = run_command(std::string(COOPERAGE_DEBIAN_PYTHON) +
+                                 " -c \"import json; d=json.load(open('" + json +
+                                 "')); print(sorted(round(float(s['sharpest_corner']['degrees']), "
+                                 "6) for s in d['surfaces']))\"");
+  ASSERT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(check.out, "[8.0, 8.0, 90.0, 90.0, 90.0, 90.0]\n");
 }
 
 TEST_F(InfoCommand, JournalExampleDescribesItsGeometry) {

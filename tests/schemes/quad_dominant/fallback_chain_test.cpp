@@ -1,0 +1,118 @@
+// The fallback chain of `--dim 2` (schemes/quad_dominant/fallback_chain.h):
+// on the cap of a blade-shaped prism, pave's all-quad mesh is kept when it
+// reaches what the face's sharpest corner allows (sin of its angle), and
+// traded for a quad-dominant or triangle mesh only when the corner is no
+// excuse. The quality is measured here, against the plane's normal.
+#include "schemes/quad_dominant/fallback_chain.h"
+
+#include "framework/geometry/occ/workbench.h"
+#include "framework/io/job.h"
+#include "framework/pipeline/mesh_curves.h"
+#include "schemes/pave/pave_scheme.h"
+#include "schemes/tri/tri_scheme.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace cooperage::quad_dominant {
+namespace {
+
+using geom::Vec3;
+
+TEST(FallbackChain, ReachableFloorIsTheSineOfTheSharpestCorner) {
+  EXPECT_DOUBLE_EQ(reachable_floor(0.2, 120.0), 0.2);
+  EXPECT_DOUBLE_EQ(reachable_floor(0.2, 30.0), 0.2);  // sin 30 = 0.5 >= 0.2
+  EXPECT_NEAR(reachable_floor(0.2, 8.0), 0.95 * std::sin(8.0 * M_PI / 180.0), 1e-12);
+  // A cusp counts as 3 degrees: its chords open an angle.
+  EXPECT_DOUBLE_EQ(reachable_floor(0.2, 0.0), reachable_floor(0.2, 3.0));
+}
+
+/// The z = 0 cap of a prism with profile (0,0) (L,0) (L,2) (2/tan a, 2),
+/// L = 2/tan a + 4:
+/// its corner at the origin has angle `degrees`. Curves meshed at `size`
+/// (even total), then meshed by the chain pave -> tri with floor 0.2.
+struct BladeCap {
+  scheme::EntityMesh mesh;
+  Vec3 normal;
+};
+
+BladeCap mesh_blade_cap(double degrees, double size) {
+  const double corner = degrees * M_PI / 180.0;
+  occ::Workbench wb;
+  const double tip = 2.0 / std::tan(corner), length = tip + 4.0;
+  wb.prism("blade", {{0, 0, 0}, {length, 0, 0}, {length, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
+  const geom::Model model = wb.build_model();
+  int sid = 0;
+  for (const auto& s : model.surfaces()) {
+    if (s.geometry->type() == geom::SurfaceType::Plane && s.box.max.z() < 1e-9) sid = s.id;
+  }
+  EXPECT_GT(sid, 0);
+  std::map<int, int> intervals;
+  int total = 0;
+  for (const auto& c : model.curves())
+    intervals[c.id] = std::max(1, static_cast<int>(std::lround(c.length / size)));
+  for (const auto& use : model.surface(sid).loops.front().uses) total += intervals[use.curve];
+  if (total % 2) ++intervals[model.surface(sid).loops.front().uses.front().curve];
+  mesh::MeshDB db;
+  pipeline::mesh_curves(model, intervals, io::MeshSettings{}, db);
+  const FallbackChain chain(pave::make_pave(), nullptr, tri::make_tri(), 0.2);
+  scheme::Settings settings;
+  settings.size = size;
+  settings.allow_fallback = true;
+  BladeCap out;
+  out.mesh = chain.mesh({model, sid, &db}, settings);
+  out.normal = model.surface(sid).geometry->project(out.mesh.coords.front()).normal;
+  return out;
+}
+
+/// The smallest corner sine of the quads and triangles (triangles scaled
+/// by 2/sqrt 3, as the quality report does).
+double worst_element(const BladeCap& cap) {
+  const auto& x = cap.mesh.coords;
+  auto corner = [&](int prev, int at, int next) {
+    const Vec3 a = x[static_cast<size_t>(next)] - x[static_cast<size_t>(at)];
+    const Vec3 b = x[static_cast<size_t>(prev)] - x[static_cast<size_t>(at)];
+    return a.cross(b).dot(cap.normal) / (a.norm() * b.norm());
+  };
+  double worst = 1.0;
+  for (const auto& q : cap.mesh.quads)
+    for (int k = 0; k < 4; ++k) worst = std::min(worst, corner(q[(k + 3) % 4], q[k], q[(k + 1) % 4]));
+  for (const auto& t : cap.mesh.tris)
+    for (int k = 0; k < 3; ++k)
+      worst = std::min(worst, 2 / std::sqrt(3.0) * corner(t[(k + 2) % 3], t[k], t[(k + 1) % 3]));
+  return worst;
+}
+
+// An 8-degree corner allows at most sin 8 = 0.139: pave's quads that reach
+// (nearly) that are what the face allows. Before the floor followed the
+// corner, the chain gave them up for triangles.
+TEST(FallbackChain, AFaceWithAnEightDegreeCornerKeepsItsQuads) {
+  const BladeCap cap = mesh_blade_cap(8.0, 0.25);
+  EXPECT_TRUE(cap.mesh.tris.empty()) << cap.mesh.tris.size() << " triangles";
+  ASSERT_FALSE(cap.mesh.quads.empty());
+  const double worst = worst_element(cap);
+  EXPECT_GT(worst, 0.0);
+  EXPECT_GE(worst, 0.95 * std::sin(8.0 * M_PI / 180.0) - 1e-9);
+  ASSERT_EQ(cap.mesh.warnings.size(), 1u);
+  EXPECT_NE(cap.mesh.warnings[0].find("corner of 8.00 degrees"), std::string::npos)
+      << cap.mesh.warnings[0];
+}
+
+// A 30-degree corner allows 0.5: the chain keeps nothing below 0.2 without
+// saying so (quads, or triangles where pave's quads are poor).
+TEST(FallbackChain, AThirtyDegreeCornerIsNoExcuse) {
+  const BladeCap cap = mesh_blade_cap(30.0, 0.25);
+  const double worst = worst_element(cap);
+  if (worst < 0.2) {
+    ASSERT_FALSE(cap.mesh.warnings.empty());
+  } else {
+    EXPECT_TRUE(cap.mesh.warnings.empty()) << cap.mesh.warnings[0];
+  }
+  EXPECT_GT(worst, 0.0);
+}
+
+}  // namespace
+}  // namespace cooperage::quad_dominant
