@@ -229,13 +229,22 @@ void make_pieces(SweepState& s) {
     s.pieces.push_back(std::move(pc));
   }
   for (size_t i = 0; i < tree.interfaces.size(); ++i) {
-    Piece pc;
-    pc.id = static_cast<int>(s.pieces.size());
-    pc.interface = static_cast<int>(i);
-    pc.lower_of = tree.interfaces[i].above;
-    pc.upper_of = tree.interfaces[i].below;
-    pc.loops = local_loops(s.interface_loops[i]);
-    s.pieces.push_back(std::move(pc));
+    const auto loops = local_loops(s.interface_loops[i]);
+    // One subcap per region of the virtual cap, in the chart of the barrel above.
+    const size_t above = static_cast<size_t>(tree.interfaces[i].above);
+    std::map<int, Vec2> xy;
+    for (const auto& l : loops) {
+      for (int n : l) xy[n] = s.plane(above, s.barrels[above].to_upper.apply(s.pos(n)));
+    }
+    for (auto& region : separate_regions(loops, xy)) {
+      Piece pc;
+      pc.id = static_cast<int>(s.pieces.size());
+      pc.interface = static_cast<int>(i);
+      pc.lower_of = tree.interfaces[i].above;
+      pc.upper_of = tree.interfaces[i].below;
+      pc.loops = std::move(region);
+      s.pieces.push_back(std::move(pc));
+    }
   }
 }
 

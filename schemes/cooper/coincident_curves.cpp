@@ -11,6 +11,9 @@ namespace {
 
 using P2 = Eigen::Vector2d;
 
+// Curved rims within this fraction of their spread project onto each other.
+constexpr double kCurvedRimFraction = 0.05;
+
 std::vector<P2> projected(const CurveFact& c, const geom::Vec3& u, const geom::Vec3& v) {
   std::vector<P2> out;
   for (const geom::Vec3& x : c.samples) out.emplace_back(x.dot(u), x.dot(v));
@@ -40,6 +43,23 @@ double shared_length(const P2& p0, const P2& p1, const P2& q0, const P2& q1, dou
   if (off(q0) > tol || off(q1) > tol) return 0;
   const double a = (q0 - p0).dot(t), b = (q1 - p0).dot(t);
   return std::max(0.0, std::min(len, std::max(a, b)) - std::max(0.0, std::min(a, b)));
+}
+
+// How far a projected curve spreads across its main direction (the root of
+// the smaller principal variance of its samples): 0 for a straight edge,
+// 0.71 r for a circle of radius r.
+double spread(const std::vector<P2>& line) {
+  if (line.size() < 3) return 0.0;
+  P2 mean = P2::Zero();
+  for (const P2& x : line) mean += x;
+  mean /= static_cast<double>(line.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const P2& x : line) cov += (x - mean) * (x - mean).transpose();
+  cov /= static_cast<double>(line.size());
+  const double half_trace = 0.5 * cov.trace();
+  const double det = cov.determinant();
+  const double smaller = half_trace - std::sqrt(std::max(0.0, half_trace * half_trace - det));
+  return std::sqrt(std::max(0.0, smaller));
 }
 
 struct Projected {
@@ -97,10 +117,16 @@ std::vector<std::pair<int, int>> coincident_cap_curves(const VolumeFacts& facts,
                                                        const geom::Vec3& down) {
   const Projected p = project_cap_curves(facts, caps, down);
   const double tol = 1e-6 * facts.size();
+  std::vector<double> spreads;
+  for (const auto& line : p.lines) spreads.push_back(spread(line));
   std::vector<std::pair<int, int>> out;
   for (size_t i = 0; i < p.curves.size(); ++i) {
     for (size_t j = i + 1; j < p.curves.size(); ++j) {
-      if (same_samples(p.lines[i], p.lines[j], tol))
+      // Curved rims a CAD model put a hair apart (coaxial blind holes from
+      // both ends whose axes differ by 0.05 mm) seam too; straight edges
+      // keep the tight tolerance (two long walls 1 apart are not one).
+      const double near = std::max(tol, kCurvedRimFraction * std::min(spreads[i], spreads[j]));
+      if (same_samples(p.lines[i], p.lines[j], near))
         out.push_back({p.curves[i]->id, p.curves[j]->id});
     }
   }

@@ -16,7 +16,8 @@ namespace cooperage::cooper {
 
 /// Pairs (a < b) of distinct curves of `caps` whose projections along `down`
 /// coincide: sample for sample (either way round) within 1e-6 of the
-/// volume's size.
+/// volume's size, or for curved rims within 5 % of how far the curves spread
+/// across their main direction (0.035 r for circles of radius r).
 std::vector<std::pair<int, int>> coincident_cap_curves(const VolumeFacts& facts,
                                                        const std::vector<int>& caps,
                                                        const geom::Vec3& down);

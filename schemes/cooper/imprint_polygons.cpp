@@ -36,6 +36,42 @@ std::vector<std::vector<int>> oriented_loops(std::vector<std::vector<int>> loops
   return loops;
 }
 
+std::vector<std::vector<std::vector<int>>> separate_regions(
+    const std::vector<std::vector<int>>& loops, const std::map<int, Vec2>& xy) {
+  const size_t n = loops.size();
+  // inside[i][j]: loop i lies inside loop j (tested at a node of i not on j).
+  std::vector<std::vector<char>> inside(n, std::vector<char>(n, 0));
+  std::vector<size_t> depth(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) {
+      if (i == j) continue;
+      for (int v : loops[i]) {
+        if (detail::index_in(loops[j], v) >= 0) continue;
+        inside[i][j] = detail::point_in_loop(xy.at(v), loops[j], xy) ? 1 : 0;
+        break;
+      }
+      depth[i] += static_cast<size_t>(inside[i][j]);
+    }
+  }
+  std::vector<std::vector<std::vector<int>>> regions;
+  std::vector<long> region_of(n, -1);
+  for (size_t i = 0; i < n; ++i) {
+    if (depth[i] % 2) continue;
+    region_of[i] = static_cast<long>(regions.size());
+    regions.push_back({loops[i]});
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (depth[i] % 2 == 0) continue;
+    // The loops holding a hole are nested: the deepest of them is outer.
+    size_t best = i;
+    for (size_t j = 0; j < n; ++j) {
+      if (inside[i][j] && (best == i || depth[j] > depth[best])) best = j;
+    }
+    regions[static_cast<size_t>(region_of[best])].push_back(loops[i]);
+  }
+  return regions;
+}
+
 namespace detail {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }

@@ -29,6 +29,13 @@ double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy);
 std::vector<std::vector<int>> oriented_loops(std::vector<std::vector<int>> loops,
                                              const std::map<int, Vec2>& xy);
 
+/// The loops grouped by region: a loop inside an even number of the others
+/// is an outer loop, one inside an odd number a hole of the innermost outer
+/// loop holding it. A virtual cap across a fork (two prongs above one
+/// ledge) has several outer loops; each region is its own subcap.
+std::vector<std::vector<std::vector<int>>> separate_regions(
+    const std::vector<std::vector<int>>& loops, const std::map<int, Vec2>& xy);
+
 /// Splits closed loop `loop` (no repeated nodes) at its repeated or crossing
 /// points into n + 1 loops (sec. 5.5). Crossings between segments are first
 /// combined onto a node pair (the closer pair whose loops stay even when

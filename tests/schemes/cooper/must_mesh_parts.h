@@ -53,6 +53,30 @@ inline void blind_holes_coaxial(occ::Workbench& wb) {
   wb.cut("part", {"b", "h", "g"});
 }
 
+// Blind holes from both ends of one radius whose axes a CAD model put
+// 0.002 apart (0.03 % of the block; occt_bm2_ec_lever-A has such a pair,
+// 0.055 mm apart): their floors' rims project onto each other within a
+// hair, so they need equal interval counts to seam.
+inline void blind_holes_offset_axes(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 2});
+  wb.cylinder("h", {2, 2, 1.4}, {0, 0, 1}, 0.75, 1);
+  wb.cylinder("g", {2, 2.002, -0.4}, {0, 0, 1}, 0.75, 1);
+  wb.cut("part", {"b", "h", "g"});
+}
+
+// Two prongs standing on a plate with a hole between them (the fork of
+// occt_bm2_ec_lever-A): the prongs' walls at y = 0 and y = 2 are one face
+// each with the plate's, so both prongs are one barrel, whose lower
+// (virtual) cap is two separate regions.
+inline void fork_over_plate(occ::Workbench& wb) {
+  wb.brick("base", {0, 0, 0}, {4, 2, 1});
+  wb.brick("left", {0, 0, 1}, {1.5, 2, 1});
+  wb.brick("right", {2.5, 0, 1}, {1.5, 2, 1});
+  wb.fuse("solid", {"base", "left", "right"});
+  wb.cylinder("hole", {2, 1, -1}, {0, 0, 1}, 0.3, 3);
+  wb.cut("part", {"solid", "hole"});
+}
+
 // A 4 x 3 x 2 block with a 2 x 1 x 1 rectangular pocket.
 inline void pocket(occ::Workbench& wb) {
   wb.brick("b", {0, 0, 0}, {4, 3, 2});
@@ -163,6 +187,8 @@ inline std::vector<std::pair<std::string, Build>> all() {
   return {{"blind_hole", blind_hole},
           {"blind_holes_both_ends", blind_holes_both_ends},
           {"blind_holes_coaxial", blind_holes_coaxial},
+          {"blind_holes_offset_axes", blind_holes_offset_axes},
+          {"fork_over_plate", fork_over_plate},
           {"pocket", pocket},
           {"stepped_shaft", stepped_shaft},
           {"flanged_hub", flanged_hub},

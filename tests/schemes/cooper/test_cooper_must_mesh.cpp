@@ -107,6 +107,16 @@ TEST(CooperMustMesh, BlindHolesFromBothEnds) {
 TEST(CooperMustMesh, CoaxialBlindHolesFromBothEnds) {
   check("blind_holes_coaxial", blind_holes_coaxial, 0.25, 103, 3);
 }
+// Found on occt_bm2_ec_lever-A (issue 15): without equal counts on the
+// two rims, imprinting failed on the near-coincident loops.
+TEST(CooperMustMesh, BlindHolesWhoseAxesAreAHairApart) {
+  check("blind_holes_offset_axes", blind_holes_offset_axes, 0.25, 115, 3);
+}
+// Also from the lever: the prongs' virtual cap was one subcap with the
+// second prong as a "hole", and imprinting failed.
+TEST(CooperMustMesh, ForkOfTwoProngsOverAPlate) {
+  check("fork_over_plate", fork_over_plate, 0.25, 116, 2);
+}
 TEST(CooperMustMesh, RectangularPocket) { check("pocket", pocket, 0.25, 104, 2); }
 TEST(CooperMustMesh, SteppedShaftWithABore) { check("stepped_shaft", stepped_shaft, 0.25, 105, 3); }
 TEST(CooperMustMesh, FlangedHub) { check("flanged_hub", flanged_hub, 0.25, 106, 2); }

@@ -457,5 +457,34 @@ TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
               1e-6 * std::abs(signed_area(parts[0], xy)));
 }
 
+// The virtual cap under two prongs (occt_bm2_ec_lever-A's fork): two outer
+// loops, a hole in the second, and an island inside that hole (its own
+// region). Each outer loop keeps the holes inside it, and no other.
+TEST(ImprintPolygons, SeparateRegionsGroupsHolesWithTheirOuterLoop) {
+  std::map<int, Vec2> xy;
+  int next = 1;
+  auto square = [&](double x0, double y0, double x1, double y1) {
+    std::vector<int> l;
+    for (const Vec2& p : rect(x0, y0, x1, y1)) {
+      xy[next] = p;
+      l.push_back(next++);
+    }
+    return l;
+  };
+  const auto left = square(0, 0, 2, 2);
+  const auto right = square(3, 0, 9, 6);
+  const auto hole = square(4, 1, 8, 5);
+  const auto island = square(5, 2, 7, 4);
+  const auto regions = separate_regions({hole, left, island, right}, xy);
+  ASSERT_EQ(regions.size(), 3u);
+  std::map<int, std::vector<std::vector<int>>> by_first;
+  for (const auto& r : regions) by_first[r.front().front()] = r;
+  EXPECT_EQ(by_first.at(left.front()), (std::vector<std::vector<int>>{left}));
+  EXPECT_EQ(by_first.at(right.front()), (std::vector<std::vector<int>>{right, hole}));
+  EXPECT_EQ(by_first.at(island.front()), (std::vector<std::vector<int>>{island}));
+  // One outer loop with its hole stays one region.
+  EXPECT_EQ(separate_regions({right, hole}, xy).size(), 1u);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
