@@ -39,11 +39,11 @@ std::string text(double d) {
 }
 
 // A side meeting a cap tangentially (issue 16: a fillet, a dome's rim) is
-// swept when every rib leaving the cap there rises kTangentLiftDeg off it
-// within its first curve: the contact is convex or re-entrant as the rib
-// bends into or out of the volume, and the rib's first interval is made at
-// least that long (SideLattice::graded, tangent_grading.h). Else refused,
-// with the rise found.
+// swept when every rib leaving the cap there bends into the volume (the
+// contact is then an end, convex) and rises kTangentLiftDeg off the cap
+// within its first curve; the rib's first interval is made at least that
+// long (SideLattice::graded, tangent_grading.h). Else refused, with the
+// rise found.
 bool tangent_contact(const VolumeFacts& facts, double angle, CapContact contact, SideLattice& out) {
   const std::string what = "side surface " + std::to_string(contact.face) + " meets cap " +
                            std::to_string(contact.cap) + " at " + text(angle) +
@@ -69,12 +69,17 @@ bool tangent_contact(const VolumeFacts& facts, double angle, CapContact contact,
                 text(kTangentLiftDeg) + ")";
       return false;
     }
-    if (d.into_volume != ribs.front().into_volume) {
-      out.why = what + ": its ribs bend into the volume at one end and out of it at another)";
+    // A rib bending out of the volume (a concave blend, a groove) would
+    // make a re-entrant shoulder whose virtual cap continues the side
+    // tangentially; not swept yet (occt_OCC2368's half-round grooves
+    // planned and then inverted a hex at D/40).
+    if (!d.into_volume) {
+      out.why = what + ", and curve " + std::to_string(d.along) +
+                " leaving it bends out of the volume: a concave blend is not swept yet)";
       return false;
     }
   }
-  contact.convex = ribs.front().into_volume;
+  contact.convex = true;
   out.contacts.push_back(contact);
   out.graded.insert(out.graded.end(), ribs.begin(), ribs.end());
   return true;

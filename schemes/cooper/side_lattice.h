@@ -87,8 +87,8 @@ inline constexpr double kReentrantMin = 185.0;
 /// of the volume is a side). Not ok when a side has several loops, is not
 /// submappable, has a corner without a type or a REVERSAL, its roles cannot
 /// be decided or contradict a neighbour's, meets a cap tangentially with a
-/// rib that does not rise kTangentLiftDeg off it within its first curve, or
-/// a chain links a level to itself.
+/// rib that bends out of the volume or does not rise kTangentLiftDeg off
+/// the cap within its first curve, or a chain links a level to itself.
 SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps);
 
 }  // namespace cooperage::cooper

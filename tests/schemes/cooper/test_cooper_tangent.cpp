@@ -13,6 +13,7 @@
 #include "selector/select_schemes.h"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
@@ -45,6 +46,29 @@ geom::Model filleted_cylinder(double R, double H, double rho) {
       fillet.Add(rho, TopoDS::Edge(e.Current()));
   }
   const fs::path path = fs::temp_directory_path() / "cooperage_filleted_cylinder.brep";
+  BRepTools::Write(fillet.Shape(), path.string().c_str());
+  geom::Model model = pipeline::load_any(path.string());
+  fs::remove(path);
+  return model;
+}
+
+// A cylinder (radius 20, height 10) with a coaxial boss (radius 10,
+// height 10) on top, the re-entrant edge at the boss's foot rounded by a
+// fillet of radius 3: a concave blend, tangent to the shoulder's annulus.
+geom::Model boss_with_concave_fillet() {
+  const TopoDS_Shape body =
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 20, 10).Shape();
+  const TopoDS_Shape boss =
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 10), gp_Dir(0, 0, 1)), 10, 10).Shape();
+  const TopoDS_Shape fused = BRepAlgoAPI_Fuse(body, boss).Shape();
+  BRepFilletAPI_MakeFillet fillet(fused);
+  for (TopExp_Explorer e(fused, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+    if (c.GetType() == GeomAbs_Circle && std::abs(c.Circle().Radius() - 10) < 1e-6 &&
+        std::abs(c.Circle().Location().Z() - 10) < 1e-6)
+      fillet.Add(3.0, TopoDS::Edge(e.Current()));
+  }
+  const fs::path path = fs::temp_directory_path() / "cooperage_boss_concave_fillet.brep";
   BRepTools::Write(fillet.Shape(), path.string().c_str());
   geom::Model model = pipeline::load_any(path.string());
   fs::remove(path);
@@ -112,6 +136,20 @@ TEST(CooperTangent, CylinderWithFilletedTopEdgeSweeps) {
   EXPECT_GE(c.min_sj, 0.2);
   EXPECT_NEAR(c.volume, exact, 0.01 * exact);
   EXPECT_EQ(c.overshared_faces, 0);
+}
+
+// The ribs leaving the shoulder along the concave fillet bend out of the
+// volume (a re-entrant shoulder continuing the side tangentially): refused
+// at plan time, naming the tangent and the bend, never planned and then
+// failed while meshing.
+TEST(CooperTangent, ConcaveFilletAtAShoulderIsRefusedSayingWhy) {
+  const geom::Model model = boss_with_concave_fillet();
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const scheme::Applicability a =
+      registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.why.find("bends out of the volume"), std::string::npos) << a.why;
 }
 
 // occt_mal_vis (a screw whose head is rounded by a torus tangent to its
