@@ -26,12 +26,25 @@ void grade_tangent_ribs(const VolumeFacts& facts, const SideLattice& lattice,
     // exactly as long as needed with that count (and longer with fewer).
     const int n = std::max(c.min, static_cast<int>(std::lround(std::max(1.0, c.target()))));
     const double a = std::min(e.first, length), b = std::min(e.second, length);
+    const auto cap_at = [&](int most) {
+      most = std::max(c.min, most);
+      problem.add_linear({{id, 1}}, intervals::Sense::LessEqual, most,
+                         "cooper: curve " + std::to_string(id) +
+                             " leaves a cap tangentially: at most " + std::to_string(most) +
+                             " intervals keep its first one long enough");
+    };
+    if (std::max(a, b) * n <= length) {  // even intervals at that count are long enough
+      cap_at(static_cast<int>(std::floor(length / std::max(a, b))));
+      continue;
+    }
     const int graded = (a > 0) + (b > 0);
     const double rest = length - a - b;
     mesh::SizeFunction f;
-    if (n <= graded || rest <= 0) {  // the long ends fill the curve: one size throughout
+    int most = n;  // the sizes integrate to n: more intervals would shorten the first again
+    if (n <= graded || rest <= 0) {  // the long ends fill the curve: one interval
       f.at = {0.0, 1.0};
       f.size = {length, length};
+      most = 1;
     } else {
       const double h = rest / (n - graded);
       const double s0 = std::max(a, h), s1 = std::max(b, h);
@@ -40,14 +53,8 @@ void grade_tangent_ribs(const VolumeFacts& facts, const SideLattice& lattice,
       f.at = {0.0, fa, std::min(fa + ramp, 1.0 - fb), std::max(1.0 - fb - ramp, fa), 1.0 - fb, 1.0};
       f.size = {s0, s0, h, h, s1, s1};
     }
-    // The sizes integrate to n (one size throughout: to 1): more intervals
-    // would shorten the first one again.
-    const int most = std::max(c.min, static_cast<int>(std::lround(f.intervals(length))));
     problem.set_size_function(id, f);
-    problem.add_linear({{id, 1}}, intervals::Sense::LessEqual, most,
-                       "cooper: curve " + std::to_string(id) +
-                           " leaves a cap tangentially: at most " + std::to_string(most) +
-                           " intervals keep its first one long enough");
+    cap_at(most);
   }
 }
 

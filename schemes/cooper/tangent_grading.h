@@ -10,8 +10,11 @@
 
 namespace cooperage::cooper {
 
-/// Sets the size function of every curve in `lattice.graded` and bounds its
-/// interval count by the integral of ds / size (never below its minimum).
+/// For every curve in `lattice.graded`: when even intervals at the count
+/// the solver aims at are already long enough, only caps the count (at
+/// length / first interval); else sets its size function and caps the
+/// count at that aim. Never below the curve's minimum; a user's fixed count
+/// is left alone.
 void grade_tangent_ribs(const VolumeFacts& facts, const SideLattice& lattice,
                         intervals::IntervalProblem& problem);
 
