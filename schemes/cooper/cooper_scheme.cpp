@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "schemes/cooper/sweep_volume.h"
+#include "schemes/cooper/tangent_grading.h"
 
 namespace cooperage::cooper {
 
@@ -57,7 +58,9 @@ scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) c
 void CooperScheme::constrain(const scheme::VolumeView& view,
                              intervals::IntervalProblem& problem) const {
   const auto p = plan(view);
-  if (p->plan.ok) add_rows(p->plan.rows, problem);
+  if (!p->plan.ok) return;
+  add_rows(p->plan.rows, problem);
+  grade_tangent_ribs(p->plan.facts, p->plan.lattice, problem);
 }
 
 scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {

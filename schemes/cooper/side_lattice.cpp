@@ -39,6 +39,53 @@ std::string text(double d) {
   return s.str();
 }
 
+// A side meeting a cap tangentially (issue 16: a fillet, a dome's rim) is
+// swept when every rib leaving the cap there bends into the volume (the
+// contact is then an end, convex) and rises kTangentLiftDeg off the cap
+// within its first curve; the rib's first interval is made at least that
+// long (SideLattice::graded, tangent_grading.h). Else refused, with the
+// rise found.
+bool tangent_contact(const VolumeFacts& facts, double angle, CapContact contact, SideLattice& out) {
+  const std::string what = "side surface " + std::to_string(contact.face) + " meets cap " +
+                           std::to_string(contact.cap) + " at " + text(angle) +
+                           " degrees along curve " + std::to_string(contact.curve) + " (tangent";
+  std::set<int> chain_curves;
+  for (const LinkChain& c : out.chains) {
+    if (c.face == contact.face) chain_curves.insert(c.curves.begin(), c.curves.end());
+  }
+  std::vector<TangentDeparture> ribs;
+  for (const TangentDeparture& d : facts.departures) {
+    if (d.curve == contact.curve && d.face == contact.face && d.other == contact.cap &&
+        chain_curves.count(d.along))
+      ribs.push_back(d);
+  }
+  if (ribs.empty()) {
+    out.why = what + ": no curve of the side leaves it toward another level)";
+    return false;
+  }
+  for (const TangentDeparture& d : ribs) {
+    if (d.first_size <= 0) {
+      out.why = what + ", and curve " + std::to_string(d.along) + " leaving it rises at most " +
+                text(d.max_lift) + " degrees off the cap; a hex there needs " +
+                text(kTangentLiftDeg) + ")";
+      return false;
+    }
+    // A rib bending out of the volume (a concave blend, a groove) would
+    // make a re-entrant shoulder whose virtual cap continues the side
+    // tangentially; not swept yet (occt_OCC2368's half-round grooves
+    // planned and then inverted a hex at D/40).
+    if (!d.into_volume) {
+      out.why = what + ", and curve " + std::to_string(d.along) +
+                " leaving it bends out of the volume: a concave blend is not swept yet)";
+      return false;
+    }
+  }
+  contact.convex = true;
+  out.contacts.push_back(contact);
+  out.graded.insert(out.graded.end(), ribs.begin(), ribs.end());
+  return true;
+}
+
 int vertex_at_start(const VolumeFacts& facts, const UseFact& u) {
   const CurveFact& c = facts.curves.at(u.curve);
   return u.forward ? c.start : c.end;
@@ -104,6 +151,7 @@ std::string knife_edge_text(const VolumeFacts& facts, int curve) {
 // cite: Blacker 1996, sec. 3 (side faces jointly submappable, Fig. 4/5).
 SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   SideLattice out;
+  std::vector<std::pair<CapContact, double>> tangent;  // contacts at ~180 degrees, and the angle
   out.caps.assign(caps.begin(), caps.end());
   // Cap curves: (curve -> (cap, loop index)).
   std::map<int, std::vector<std::pair<int, int>>> cap_curves;
@@ -245,11 +293,9 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
             return out;
           }
           const double a = dh->second;
-          if (a >= kMaxCapDihedral && a <= kReentrantMin) {
-            out.why = "side surface " + std::to_string(s) + " meets cap " + std::to_string(cap) +
-                      " at " + text(a) + " degrees along curve " + std::to_string(u.curve) +
-                      " (tangent: neither an end nor a re-entrant shoulder)";
-            return out;
+          if (a >= kMaxCapDihedral && a <= kReentrantMin) {  // decided once the chains are known
+            tangent.push_back({{s, cap, cap_loop, u.curve, true, leaving, cls}, a});
+            continue;
           }
           out.contacts.push_back({s, cap, cap_loop, u.curve, a < kMaxCapDihedral, leaving, cls});
         }
@@ -282,6 +328,9 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
       }
     }
     out.face_classes[s].assign(classes.begin(), classes.end());
+  }
+  for (auto& [contact, angle] : tangent) {
+    if (!tangent_contact(facts, angle, contact, out)) return out;
   }
   out.ok = true;
   return out;

@@ -75,6 +75,9 @@ struct SideLattice {
   std::map<int, int> cap_class;  ///< cap face -> level class
   /// Per side face: its level classes (those of its runs along).
   std::map<int, std::vector<int>> face_classes;
+  /// Ribs leaving a cap tangentially: their first interval must be at least
+  /// first_size long (the interval constraints grade the curve `along`).
+  std::vector<TangentDeparture> graded;
 };
 
 /// Upper bound of an end cap's dihedral angle with its sides [degrees]; the
@@ -94,8 +97,9 @@ inline constexpr double kMinSideDihedral = 10.0;
 /// Roles, chains, contacts and level classes for `caps` (every other face
 /// of the volume is a side). Not ok when a side has several loops, is not
 /// submappable, has a corner without a type or a REVERSAL, its roles cannot
-/// be decided or contradict a neighbour's, meets a cap tangentially, or a
-/// chain links a level to itself.
+/// be decided or contradict a neighbour's, meets a cap tangentially with a
+/// rib that bends out of the volume or does not rise kTangentLiftDeg off
+/// the cap within its first curve, or a chain links a level to itself.
 SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps);
 
 }  // namespace cooperage::cooper

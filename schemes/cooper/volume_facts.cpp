@@ -2,6 +2,7 @@
 
 #include "framework/scheme/vertex_angles.h"
 #include "schemes/cooper/cap_dihedral.h"
+#include "schemes/cooper/side_lattice.h"
 
 #include <algorithm>
 #include <set>
@@ -101,8 +102,15 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     out.curves[curve] = std::move(cf);
     for (int v : {c.start_vertex, c.end_vertex}) out.vertices[v] = model.vertex(v).point;
     if (faces.size() == 2) {
-      out.dihedral[curve] =
-          cap_dihedral_degrees(model, volume_id, *faces.begin(), *faces.rbegin(), curve);
+      const int a = *faces.begin(), b = *faces.rbegin();
+      const double angle = cap_dihedral_degrees(model, volume_id, a, b, curve);
+      out.dihedral[curve] = angle;
+      if (angle >= kMaxCapDihedral && angle <= kReentrantMin) {
+        for (const auto& [f, g] : {std::pair{a, b}, std::pair{b, a}}) {
+          for (TangentDeparture& d : tangent_departures(model, volume_id, curve, f, g))
+            out.departures.push_back(d);
+        }
+      }
     }
   }
   return out;

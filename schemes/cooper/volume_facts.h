@@ -10,6 +10,7 @@
 
 #include "framework/geometry/model.h"
 #include "framework/scheme/registry.h"
+#include "schemes/cooper/tangent_departure.h"
 
 #include <map>
 #include <string>
@@ -59,6 +60,9 @@ struct VolumeFacts {
   /// Interior dihedral angle [degrees, (0, 360)] inside the volume at a
   /// curve shared by two of its faces (90 at a brick edge, 270 re-entrant).
   std::map<int, double> dihedral;
+  /// At curves whose dihedral is tangent (kMaxCapDihedral..kReentrantMin):
+  /// how each of the two faces leaves the other (both ways).
+  std::vector<TangentDeparture> departures;
 
   const FaceFact* face(int id) const;
   /// Faces of the volume whose loops use the curve (ascending, once each).

@@ -174,6 +174,26 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
         last = j;
     }
   }
+  // Where the boundary runs straight along an axis between the two ends a
+  // point sees, its node spacing there (a graded curve: a rib leaving a
+  // tangent cap, tangent_grading.h in cooper) decides the fraction, as in
+  // transfinite interpolation; -1 when the line is not all boundary.
+  auto boundary_fraction = [&](int axis, int other, int e0, int self, int e1) -> double {
+    double run = 0.0, total = 0.0;
+    for (int k = e0; k < e1; ++k) {
+      const int ai = axis == 0 ? k : other, aj = axis == 0 ? other : k;
+      const int bi = axis == 0 ? k + 1 : other, bj = axis == 0 ? other : k + 1;
+      if (!inside_box(ai, aj) || !inside_box(bi, bj)) return -1.0;
+      const int g0 = gat(ai, aj), g1 = gat(bi, bj);
+      if (g0 < 0 || g1 < 0 || static_cast<size_t>(g0) >= boundary_count ||
+          static_cast<size_t>(g1) >= boundary_count)
+        return -1.0;
+      const double d = (out.uv[static_cast<size_t>(g1)] - out.uv[static_cast<size_t>(g0)]).norm();
+      total += d;
+      if (k < self) run += d;
+    }
+    return total > 0 ? run / total : -1.0;
+  };
   for (size_t p = boundary_count; p < out.ij.size(); ++p) {
     const int i = out.ij[p][0], j = out.ij[p][1];
     double wsum = 0.0;
@@ -192,7 +212,18 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
       const int self = axis == 0 ? i : j;
       const Vec2& lo = out.uv[static_cast<size_t>(axis == 0 ? gat(ends[0], j) : gat(i, ends[0]))];
       const Vec2& hi = out.uv[static_cast<size_t>(axis == 0 ? gat(ends[1], j) : gat(i, ends[1]))];
-      const double s = static_cast<double>(self - ends[0]) / static_cast<double>(ends[1] - ends[0]);
+      double s = static_cast<double>(self - ends[0]) / static_cast<double>(ends[1] - ends[0]);
+      const int across = 1 - axis;  // the boundary lines through the ends seen across
+      const int o0 = hit[2 * across][p - boundary_count],
+                o1 = hit[2 * across + 1][p - boundary_count];
+      const double f0 = boundary_fraction(axis, o0, ends[0], self, ends[1]);
+      const double f1 = boundary_fraction(axis, o1, ends[0], self, ends[1]);
+      if (f0 >= 0 && f1 >= 0) {
+        const double t = static_cast<double>((axis == 0 ? j : i) - o0) / (o1 - o0);
+        s = (1.0 - t) * f0 + t * f1;
+      } else if (f0 >= 0 || f1 >= 0) {
+        s = std::max(f0, f1);
+      }
       const double w = 1.0 / std::min(self - ends[0], ends[1] - self);
       acc += w * ((1.0 - s) * lo + s * hi);
       wsum += w;
@@ -215,6 +246,18 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
   }
   out.ok = true;
   return out;
+}
+
+bool fills_its_box(const LatticeFill& fill) {
+  if (!fill.ok || fill.ij.empty()) return false;
+  int imin = fill.ij[0][0], imax = imin, jmin = fill.ij[0][1], jmax = jmin;
+  for (const LatticePoint& p : fill.ij) {
+    imin = std::min(imin, p[0]);
+    imax = std::max(imax, p[0]);
+    jmin = std::min(jmin, p[1]);
+    jmax = std::max(jmax, p[1]);
+  }
+  return fill.cells.size() == static_cast<size_t>(imax - imin) * static_cast<size_t>(jmax - jmin);
 }
 
 }  // namespace cooperage::submap

@@ -56,4 +56,8 @@ struct LatticeFill {
 /// -i/+i and -j/+j, w = 1 / (distance in index space to the nearer of the two).
 LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops);
 
+/// True when the cells of `fill` cover its whole (i, j) box: one rectangular
+/// block (a mapped face).
+bool fills_its_box(const LatticeFill& fill);
+
 }  // namespace cooperage::submap

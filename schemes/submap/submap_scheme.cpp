@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <unordered_map>
 
@@ -27,6 +28,25 @@ struct LoopNodes {
   std::vector<BoundaryPoint> points;
   LatticePoint closure{0, 0};
 };
+
+// A curve of the face whose node steps differ by more than half: graded
+// on purpose (a rib leaving a tangent cap, sizes near a small feature).
+bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan) {
+  for (const LoopPlan& lp : plan.loops) {
+    for (const auto& use : lp.uses) {
+      if (!db.curve_meshed(use.curve)) continue;
+      const std::vector<int>& chain = db.curve_nodes(use.curve);
+      double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+      for (size_t k = 1; k < chain.size(); ++k) {
+        const double d = (db.node(chain[k]) - db.node(chain[k - 1])).norm();
+        shortest = std::min(shortest, d);
+        longest = std::max(longest, d);
+      }
+      if (chain.size() > 2 && longest > 1.5 * shortest) return true;
+    }
+  }
+  return false;
+}
 
 LoopNodes walk_nodes(const mesh::MeshDB& db, int sid, size_t loop_index, const LoopPlan& lp,
                      const UvChart& chart) {
@@ -255,10 +275,16 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
          local_of_point[static_cast<size_t>(c[2])], local_of_point[static_cast<size_t>(c[3])]});
   }
 
-  // 5. Guarded smoothing, then the inversion check: never silent.
-  smooth_quads(
-      out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
-      options_.smooth);
+  // 5. Guarded smoothing, then the inversion check: never silent. A lattice
+  // that fills its whole box is one block, already the transfinite
+  // interpolation of its boundary; with a graded curve, smoothing would
+  // only even out its spacing (a rib leaving a tangent cap: cooper's
+  // tangent_grading.h).
+  if (!(fills_its_box(fill) && has_graded_curve(db, plan))) {
+    smooth_quads(
+        out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
+        options_.smooth);
+  }
   for (size_t q = 0; q < out.quads.size(); ++q) {
     std::array<Vec3, 4> p, n;
     for (size_t k = 0; k < 4; ++k) {

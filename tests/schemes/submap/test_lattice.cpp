@@ -54,6 +54,27 @@ TEST(SubmapLattice, LShapeFillIsExactOnAUniformBoundary) {
   }
 }
 
+// A 6 x 4 block whose left and right sides are graded the same way (v =
+// 0, 0.5, 0.7, 0.85, 1 of the height: a long first interval, as cooper
+// gives a rib leaving a tangent cap): every interior row takes the sides'
+// v, as transfinite interpolation does; the lattice index alone would put
+// row 1 at 0.25.
+TEST(SubmapLattice, GradedSidesCarryTheirSpacingAcross) {
+  const double v[5] = {0.0, 0.5, 0.7, 0.85, 1.0};
+  auto loop = polygon({{0, 0}, {6, 0}, {6, 4}, {0, 4}}, 0);
+  for (BoundaryPoint& b : loop) b.uv.y() = v[b.ij[1]];
+  const LatticeFill f = fill_lattice({loop});
+  ASSERT_TRUE(f.ok) << f.why;
+  EXPECT_TRUE(fills_its_box(f));
+  for (size_t p = 0; p < f.ij.size(); ++p) {
+    EXPECT_NEAR(f.uv[p].x(), f.ij[p][0], 1e-12);
+    EXPECT_NEAR(f.uv[p].y(), v[f.ij[p][1]], 1e-12) << "row " << f.ij[p][1];
+  }
+  // An L shape is not one block.
+  EXPECT_FALSE(
+      fills_its_box(fill_lattice({polygon({{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}}, 0)})));
+}
+
 TEST(SubmapLattice, PlateWithOffCentreHole) {
   const auto outer = polygon({{0, 0}, {8, 0}, {8, 6}, {0, 6}}, 0);
   const auto hole = polygon({{5, 1}, {5, 3}, {7, 3}, {7, 1}}, 1000);  // clockwise
