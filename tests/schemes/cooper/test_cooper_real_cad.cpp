@@ -2,7 +2,6 @@
 // there; never copied into the repository): volumes whose plan was accepted
 // and whose meshing then failed (issue 15). Skipped, saying so, when the
 // folder is absent.
-#include "framework/core/error.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
@@ -72,37 +71,6 @@ TEST(CooperRealCad, PlateWithNutsAcrossTheBlocksEdgesMeshes) {
     EXPECT_GE(sj->min, 0.3);
   }
   EXPECT_TRUE(hexes);
-}
-
-// occt_bm2_ec_lever-A: its cylindrical wall (surface 4) meets the plane
-// wall y = 0.12 (surface 6) tangentially at a cusp, and a slot wall runs
-// 0.1 mm beside it; the plan was accepted and imprinting then failed
-// ("barrel 2 ... subcap imprinting failed", then barrel 7 on the slivers).
-// Now the plan refuses, naming the two faces, and meshing at D/40 reports
-// the same reason.
-TEST(CooperRealCad, LeverWithACuspIsRefusedAtPlanAndAtMesh) {
-  const std::string path = real_cad("occt_bm2_ec_lever-A.stp");
-  if (!fs::exists(path))
-    GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
-  const geom::Model model = pipeline::load_any(path);
-  ASSERT_EQ(model.volumes().size(), 1u);
-  const std::string reason = "side surfaces 4 and 6 meet tangentially along curve 22";
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
-  const scheme::Applicability a =
-      registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
-  EXPECT_FALSE(a.ok);
-  EXPECT_NE(a.why.find(reason), std::string::npos) << a.why;
-  io::MeshSettings settings;
-  settings.size = model.box().diagonal() / 40.0;
-  pipeline::MeshOptions options = selector::mesh_options();
-  options.threads = 1;
-  try {
-    pipeline::mesh_model(model, settings, registry, options);
-    FAIL() << "meshed the lever";
-  } catch (const MeshingError& e) {
-    EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace
