@@ -34,23 +34,6 @@ std::string id_list(const std::vector<int>& ids) {
   return s.empty() ? "-" : s;
 }
 
-/// The sharpest interior angle at a vertex of a surface's loops, and its
-/// vertex; none when no loop has a vertex. No element at a corner of angle
-/// a can have a scaled Jacobian above sin(a): `info` says so for quality.
-struct SharpestCorner {
-  int vertex = 0;
-  double degrees = 360.0;
-};
-std::optional<SharpestCorner> sharpest_corner(const geom::Model& model, const geom::Surface& s) {
-  std::optional<SharpestCorner> out;
-  for (size_t l = 0; l < s.loops.size(); ++l) {
-    for (const auto& c : scheme::loop_corners(model, s.id, static_cast<int>(l))) {
-      if (!out || c.angle < out->degrees) out = SharpestCorner{c.vertex, c.angle};
-    }
-  }
-  return out;
-}
-
 std::string loop_text(const geom::Loop& loop) {
   std::string s;
   for (const auto& use : loop.uses) {
@@ -98,11 +81,11 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
   for (const auto& s : model.surfaces()) {
     out << "  surface " << s.id << ": " << geom::to_string(s.geometry->type()) << ", area "
         << num(s.area) << ", volumes " << id_list(s.volumes);
-    const auto sharpest = sharpest_corner(model, s);
-    if (sharpest && sharpest->degrees < kSharpCornerDegrees) {
-      out << ", corner of " << num(std::round(sharpest->degrees * 10) / 10) << " degrees at vertex "
+    const auto sharpest = scheme::sharpest_corner(model, s.id);
+    if (sharpest && sharpest->angle < kSharpCornerDegrees) {
+      out << ", corner of " << num(std::round(sharpest->angle * 10) / 10) << " degrees at vertex "
           << sharpest->vertex << " (no element there above scaled Jacobian "
-          << num(std::round(std::sin(sharpest->degrees * M_PI / 180) * 1000) / 1000) << ")";
+          << num(std::round(std::sin(sharpest->angle * M_PI / 180) * 1000) / 1000) << ")";
     }
     out << "\n";
     for (size_t i = 0; i < s.loops.size(); ++i) {
@@ -181,12 +164,12 @@ void write_model_json(const geom::Model& model, const std::string& source, std::
     j.key("volumes");
     j.value(s.volumes);
     j.key("sharpest_corner");
-    if (const auto sharpest = sharpest_corner(model, s)) {
+    if (const auto sharpest = scheme::sharpest_corner(model, s.id)) {
       j.begin_object();
       j.key("vertex");
       j.value(sharpest->vertex);
       j.key("degrees");
-      j.value(sharpest->degrees);
+      j.value(sharpest->angle);
       j.end_object();
     } else {
       j.null();

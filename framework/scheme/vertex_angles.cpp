@@ -105,4 +105,15 @@ std::vector<std::vector<int>> sides_between_ends(const std::vector<LoopCorner>& 
   return sides;
 }
 
+std::optional<LoopCorner> sharpest_corner(const geom::Model& model, int surface_id) {
+  std::optional<LoopCorner> out;
+  const auto& loops = model.surface(surface_id).loops;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    for (const LoopCorner& c : loop_corners(model, surface_id, static_cast<int>(l))) {
+      if (!out || c.angle < out->angle) out = c;
+    }
+  }
+  return out;
+}
+
 }  // namespace cooperage::scheme

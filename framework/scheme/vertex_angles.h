@@ -43,6 +43,11 @@ struct LoopCorner {
 /// are told apart on curved faces too.
 std::vector<LoopCorner> loop_corners(const geom::Model& model, int surface_id, int loop_index);
 
+/// The sharpest corner over all loops of a surface (smallest angle), or none
+/// when no loop has a junction. No element at a corner of angle a has a
+/// scaled Jacobian above sin(a): the --dim 2 fallback and `info` use it.
+std::optional<LoopCorner> sharpest_corner(const geom::Model& model, int surface_id);
+
 /// Groups the uses of a single-loop surface into logical sides between END
 /// corners: side s holds the use indices from END corner s up to (excluding)
 /// END corner s+1. Empty when the loop has no END corner.

@@ -30,18 +30,6 @@ struct Candidate {
   mesh::SurfaceMeshQuality quality;
 };
 
-/// The smallest interior angle at a vertex of the face [degrees] (360 when none).
-double sharpest_corner(const scheme::SurfaceView& view) {
-  double sharpest = 360.0;
-  const auto& loops = view.surface().loops;
-  for (size_t l = 0; l < loops.size(); ++l) {
-    for (const auto& c : scheme::loop_corners(view.model, view.surface_id, static_cast<int>(l))) {
-      sharpest = std::min(sharpest, c.angle);
-    }
-  }
-  return sharpest;
-}
-
 }  // namespace
 
 double reachable_floor(double min_quality, double sharpest_degrees) {
@@ -67,7 +55,8 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   const std::string floor = number(min_quality_);
   // What the face allows: below it the chain looks further, at or above it
   // the first mesh is kept (a 3-degree corner is no reason to give up quads).
-  const double corner = sharpest_corner(view);
+  const auto sharpest = scheme::sharpest_corner(view.model, view.surface_id);
+  const double corner = sharpest ? sharpest->angle : 360.0;
   const double reachable = reachable_floor(min_quality_, corner);
 
   std::vector<std::string> given_up;  // why each step before the kept one was not kept
