@@ -79,7 +79,8 @@ double worst_element(const BladeCap& cap) {
   };
   double worst = 1.0;
   for (const auto& q : cap.mesh.quads)
-    for (int k = 0; k < 4; ++k) worst = std::min(worst, corner(q[(k + 3) % 4], q[k], q[(k + 1) % 4]));
+    for (int k = 0; k < 4; ++k)
+      worst = std::min(worst, corner(q[(k + 3) % 4], q[k], q[(k + 1) % 4]));
   for (const auto& t : cap.mesh.tris)
     for (int k = 0; k < 3; ++k)
       worst = std::min(worst, 2 / std::sqrt(3.0) * corner(t[(k + 2) % 3], t[k], t[(k + 1) % 3]));
