@@ -60,6 +60,7 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
   const auto p = plan(view);
   if (!p->plan.ok) return;
   add_rows(p->plan.rows, problem);
+  for (int c : p->plan.uniform_curves) problem.drop_size_function(c);
   grade_tangent_ribs(p->plan.facts, p->plan.lattice, problem);
 }
 

@@ -12,6 +12,7 @@
 #include "framework/scheme/settings.h"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct VolumePlan {
   BarrelTree tree;
   CapRoles roles;
   std::vector<IntervalRow> rows;  ///< for constrain()
+  std::set<int> uniform_curves;   ///< for constrain(): side_curves_along()
   /// Refused: the step that refused (1 lattice, 2 order, 3 slabs, 4 tree,
   /// 5 cap roles, 6 hints); the furthest candidate is reported.
   int stage = 0;

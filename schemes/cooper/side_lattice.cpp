@@ -314,4 +314,16 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   return out;
 }
 
+std::set<int> side_curves_along(const VolumeFacts& facts, const SideLattice& lattice) {
+  std::set<int> out;
+  for (int s : lattice.sides) {
+    for (const auto& loop : facts.face(s)->loops) {
+      for (const UseFact& u : loop) {
+        if (lattice.along.count(u.curve)) out.insert(u.curve);
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace cooperage::cooper

@@ -83,6 +83,13 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// shoulder: the cap is a virtual subcap there); between the two, tangent.
 inline constexpr double kReentrantMin = 185.0;
 
+/// Curves of the side faces running along the caps (the rings of ribs). The
+/// sweep links node k of one ring to node k of the next, so these are spaced
+/// uniformly: a size function graded by a feature near one end only (a thin
+/// strip of one cap, curve_sizing.h) would shear the ribs by elements
+/// (pyocc_face_recognition: 18 mm over a 40 mm barrel at size 12).
+std::set<int> side_curves_along(const VolumeFacts& facts, const SideLattice& lattice);
+
 /// Roles, chains, contacts and level classes for `caps` (every other face
 /// of the volume is a side). Not ok when a side has several loops, is not
 /// submappable, has a corner without a type or a REVERSAL, its roles cannot
