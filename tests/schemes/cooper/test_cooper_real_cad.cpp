@@ -75,6 +75,37 @@ TEST(CooperRealCad, PlateWithNutsAcrossTheBlocksEdgesMeshes) {
   EXPECT_TRUE(hexes);
 }
 
+// occt_bm2_ec_lever-A: its cylindrical wall (surface 4) meets the plane
+// wall y = 0.12 (surface 6) tangentially at a cusp, and a slot wall runs
+// 0.1 mm beside it; the plan was accepted and imprinting then failed
+// ("barrel 2 ... subcap imprinting failed", then barrel 7 on the slivers).
+// Now the plan refuses, naming the two faces, and meshing at D/40 reports
+// the same reason.
+TEST(CooperRealCad, LeverWithACuspIsRefusedAtPlanAndAtMesh) {
+  const std::string path = real_cad("occt_bm2_ec_lever-A.stp");
+  if (!fs::exists(path))
+    GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
+  const geom::Model model = pipeline::load_any(path);
+  ASSERT_EQ(model.volumes().size(), 1u);
+  const std::string reason = "side surfaces 4 and 6 meet tangentially along curve 22";
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const scheme::Applicability a =
+      registry.volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_FALSE(a.ok);
+  EXPECT_NE(a.why.find(reason), std::string::npos) << a.why;
+  io::MeshSettings settings;
+  settings.size = model.box().diagonal() / 40.0;
+  pipeline::MeshOptions options = selector::mesh_options();
+  options.threads = 1;
+  try {
+    pipeline::mesh_model(model, settings, registry, options);
+    FAIL() << "meshed the lever";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+  }
+}
+
 // pyocc_face_recognition_sample_part (issue 17's must-mesh list): the
 // automatic decomposition cuts it at x = 153, y = -20 and z = 185. On main
 // of session 6 it meshed at sizes 3-6 only: volume 3 ran out of imprinting
