@@ -3,6 +3,8 @@
 // and whose meshing then failed (issue 15). Skipped, saying so, when the
 // folder is absent.
 #include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/decomposed_geometry.h"
+#include "framework/pipeline/model_job.h"
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
@@ -106,25 +108,29 @@ TEST(CooperRealCad, LeverWithACuspIsRefusedAtPlanAndAtMesh) {
   }
 }
 
-// pyocc_face_recognition_sample_part (issue 17's must-mesh list): the
-// automatic decomposition cuts it at x = 153, y = -20 and z = 185. On main
-// of session 6 it meshed at sizes 3-6 only: volume 3 ran out of imprinting
-// steps at 7 and 8, volume 2 (a 5 mm strip over an overhang) inverted a hex
-// at 9 and failed imprinting from 10 up, because the strip's edges were
-// graded differently on its two ends and sheared the ribs (see
-// test_side_curves_along.cpp). Every size meshes now, all hex, min scaled
+// pyocc_face_recognition_sample_part (issue 17's must-mesh list). Main at
+// b8654cb cut it twice (x = 153, y = -20) and the piece holding the cusps
+// the cut leaves at the pocket's fillets inverted a hex at sizes 6.5-10.5
+// ("barrel 2 (sides 8, 9, 10, 11): hex 71 ..."). With the knife-edge
+// refusal the decomposition cuts a third time (z = 185), and that piece (a
+// 5 mm strip over an overhang) failed imprinting from 10 up while the
+// strip's wall was graded differently on its two ends (see
+// test_side_curves_along.cpp). Every size meshes now: all hex, min scaled
 // Jacobian at least 0.2, the volume within 0.5 % of the CAD's.
 TEST(CooperRealCad, PyoccFaceRecognitionMeshesAtEverySize) {
   const std::string path = real_cad("pyocc_face_recognition_sample_part.stp");
   if (!fs::exists(path))
     GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
-  const geom::Model model = pipeline::load_any(path);
-  ASSERT_EQ(model.volumes().size(), 1u);
   scheme::Registry registry;
   register_builtin_schemes(registry);
   for (double size : {5.0, 7.0, 8.0, 9.0, 10.23, 12.0}) {
-    io::MeshSettings settings;
-    settings.size = size;
+    // As `cooperage mesh F --size S`: the automatic decomposition first.
+    pipeline::ModelJobOptions job_options;
+    job_options.size = size;
+    const io::Job job = pipeline::model_job(path, job_options);
+    const geom::Model model =
+        pipeline::build_decomposed_geometry(job, registry, selector::planner()).model;
+    const io::MeshSettings& settings = *job.mesh;
     pipeline::MeshOptions options = selector::mesh_options();
     options.threads = 1;
     pipeline::MeshResult r;
