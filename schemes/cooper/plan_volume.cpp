@@ -183,7 +183,7 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                                                 volume_name(p.volume) + " (cooper)"))
       p.rows.push_back(std::move(r));
   }
-  p.uniform_curves = side_curves_along(facts, p.lattice);
+  p.along_pairs = side_along_pairs(facts, p.lattice);
   if (p.one_barrel()) {
     p.source = cand.source;
     p.target = cand.target;

@@ -336,14 +336,17 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   return out;
 }
 
-std::set<int> side_curves_along(const VolumeFacts& facts, const SideLattice& lattice) {
-  std::set<int> out;
+std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
+                                                  const SideLattice& lattice) {
+  std::vector<std::pair<int, int>> out;
   for (int s : lattice.sides) {
+    std::vector<int> along;
     for (const auto& loop : facts.face(s)->loops) {
       for (const UseFact& u : loop) {
-        if (lattice.along.count(u.curve)) out.insert(u.curve);
+        if (lattice.along.count(u.curve)) along.push_back(u.curve);
       }
     }
+    if (along.size() == 2 && along[0] != along[1]) out.emplace_back(along[0], along[1]);
   }
   return out;
 }

@@ -87,12 +87,14 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// shoulder: the cap is a virtual subcap there); between the two, tangent.
 inline constexpr double kReentrantMin = 185.0;
 
-/// Curves of the side faces running along the caps (the rings of ribs). The
-/// sweep links node k of one ring to node k of the next, so these are spaced
-/// uniformly: a size function graded by a feature near one end only (a thin
-/// strip of one cap, curve_sizing.h) would shear the ribs by elements
+/// Per side face with exactly two curves running along the caps (its rings
+/// of ribs on two levels, one curve each): that pair. The sweep links node k
+/// of one ring to node k of the next, so the two must be spaced alike: a
+/// size function graded by a feature near one of them only (a thin strip of
+/// one cap, curve_sizing.h) shears the ribs by elements
 /// (pyocc_face_recognition: 18 mm over a 40 mm barrel at size 12).
-std::set<int> side_curves_along(const VolumeFacts& facts, const SideLattice& lattice);
+std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
+                                                  const SideLattice& lattice);
 
 /// Two side faces meeting along the sweep within this angle [degrees] of
 /// folding flat (dihedral below it, or above 360 minus it: faces tangent at

@@ -1,7 +1,8 @@
-// Curves along a sweep's sides are spaced uniformly (side_lattice.h,
-// side_curves_along). The sweep links node k of one ring to node k of the
-// next; a curve graded by a feature near it on one cap only (a thin strip)
-// sheared the ribs by elements, and imprinting or the blend then failed.
+// The two curves along a sweep's side are spaced alike (side_lattice.h,
+// side_along_pairs; cooper_scheme.cpp drops both size functions when they
+// differ). The sweep links node k of one ring to node k of the next; a
+// curve graded by a feature near it on one cap only (a thin strip) sheared
+// the ribs by elements, and imprinting or the blend then failed.
 #include "support/hex_mesh_check.h"
 
 #include "framework/core/error.h"
