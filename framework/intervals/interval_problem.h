@@ -83,6 +83,9 @@ class IntervalProblem {
   void set_size_function(int curve_id, mesh::SizeFunction sizes) {
     sizes_[curve_id] = std::move(sizes);
   }
+  /// Back to uniform spacing (a sweep needs the curves along its sides spaced
+  /// alike on both ends, cooper/side_lattice.h).
+  void drop_size_function(int curve_id) { sizes_.erase(curve_id); }
   const std::map<int, mesh::SizeFunction>& size_functions() const { return sizes_; }
 
   const std::map<int, Curve>& curves() const { return curves_; }

@@ -1,5 +1,8 @@
 #include "schemes/cooper/cooper_scheme.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "framework/core/error.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/cooper/tangent_grading.h"
@@ -55,11 +58,56 @@ scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) c
                  : scheme::Applicability::no(plan.why, std::move(p));
 }
 
+namespace {
+
+// A size function's sizes relative to their mean at arc-length fraction s
+// (1 without one: uniform).
+double relative_size(const mesh::SizeFunction* f, double s) {
+  if (!f || f->empty()) return 1.0;
+  double mean = 0;
+  for (size_t k = 1; k < f->at.size(); ++k)
+    mean += 0.5 * (f->size[k] + f->size[k - 1]) * (f->at[k] - f->at[k - 1]);
+  size_t k = 1;
+  while (k + 1 < f->at.size() && f->at[k] < s) ++k;
+  const double w = (s - f->at[k - 1]) / std::max(1e-12, f->at[k] - f->at[k - 1]);
+  const double h = f->size[k - 1] + std::clamp(w, 0.0, 1.0) * (f->size[k] - f->size[k - 1]);
+  return mean > 0 ? h / mean : 1.0;
+}
+
+// The two rings of a side are spaced alike (side_along_pairs): when their
+// size functions differ by more than 10 % somewhere (either way round),
+// both become uniform.
+void space_alike(const std::vector<std::pair<int, int>>& pairs,
+                 intervals::IntervalProblem& problem) {
+  const auto& sizes = problem.size_functions();
+  auto of = [&](int c) -> const mesh::SizeFunction* {
+    const auto it = sizes.find(c);
+    return it == sizes.end() ? nullptr : &it->second;
+  };
+  for (const auto& [a, b] : pairs) {
+    const mesh::SizeFunction* fa = of(a);
+    const mesh::SizeFunction* fb = of(b);
+    if (!fa && !fb) continue;
+    double same = 0, reversed = 0;
+    for (int i = 0; i <= 20; ++i) {
+      const double s = i / 20.0;
+      same = std::max(same, std::abs(relative_size(fa, s) - relative_size(fb, s)));
+      reversed = std::max(reversed, std::abs(relative_size(fa, s) - relative_size(fb, 1 - s)));
+    }
+    if (std::min(same, reversed) <= 0.1) continue;
+    problem.drop_size_function(a);
+    problem.drop_size_function(b);
+  }
+}
+
+}  // namespace
+
 void CooperScheme::constrain(const scheme::VolumeView& view,
                              intervals::IntervalProblem& problem) const {
   const auto p = plan(view);
   if (!p->plan.ok) return;
   add_rows(p->plan.rows, problem);
+  space_alike(p->plan.along_pairs, problem);
   grade_tangent_ribs(p->plan.facts, p->plan.lattice, problem);
 }
 

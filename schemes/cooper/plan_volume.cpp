@@ -148,6 +148,12 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   if (!p.slabs.ok) return fail(3, p.slabs.why);
   p.tree = form_barrel_tree(facts, p.lattice, p.order, p.slabs);
   if (!p.tree.ok) return fail(4, p.tree.why);
+  // A knife edge between sides: the barrels' cap outlines fold back on
+  // themselves along it, and imprinting cannot resolve the slivers (the
+  // lever occt_bm2_ec_lever-A: a cylinder tangent to a wall at a cusp, a
+  // slot wall 0.1 mm beside it). One barrel has nothing to imprint.
+  if (p.tree.barrels.size() > 1 && !p.lattice.knife_edge.empty())
+    return fail(4, p.lattice.knife_edge + "; a many-to-one sweep cannot imprint subcaps there");
   if (cand.anchor.down) p.down = cand.anchor.down->normalized();
   const CapSchemeOf scheme_of = [&](int cap, std::string& why) {
     return cap_scheme(model, registry, cap, why, in.elements, in.settings);
@@ -177,6 +183,7 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                                                 volume_name(p.volume) + " (cooper)"))
       p.rows.push_back(std::move(r));
   }
+  p.along_pairs = side_along_pairs(facts, p.lattice);
   if (p.one_barrel()) {
     p.source = cand.source;
     p.target = cand.target;

@@ -12,6 +12,7 @@
 #include "framework/scheme/settings.h"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,8 @@ struct VolumePlan {
   SlabRegions slabs;
   BarrelTree tree;
   CapRoles roles;
-  std::vector<IntervalRow> rows;  ///< for constrain()
+  std::vector<IntervalRow> rows;                 ///< for constrain()
+  std::vector<std::pair<int, int>> along_pairs;  ///< for constrain(): side_along_pairs()
   /// Refused: the step that refused (1 lattice, 2 order, 3 slabs, 4 tree,
   /// 5 cap roles, 6 hints); the furthest candidate is reported.
   int stage = 0;

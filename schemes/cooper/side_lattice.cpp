@@ -3,6 +3,7 @@
 #include "framework/scheme/vertex_angles.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <sstream>
 
@@ -125,6 +126,24 @@ std::vector<int> loop_directions(const FaceFact& f, std::string& why) {
   d[0] = 0;
   for (size_t k = 1; k < n; ++k) d[k] = ((d[k - 1] + turn[k]) % 4 + 4) % 4;
   return d;
+}
+
+// The knife edge at a chain curve between two sides, as a sentence; empty
+// when the faces meet at least kMinSideDihedral from folding flat.
+std::string knife_edge_text(const VolumeFacts& facts, int curve) {
+  const auto dh = facts.dihedral.find(curve);
+  if (dh == facts.dihedral.end()) return "";
+  const double fold = std::min(dh->second, 360.0 - dh->second);
+  if (fold >= kMinSideDihedral) return "";
+  const auto faces = facts.faces_of_curve(curve);
+  const std::string pair =
+      "side surfaces " + std::to_string(faces.front()) + " and " + std::to_string(faces.back());
+  if (fold < 0.5)
+    return pair + " meet tangentially along curve " + std::to_string(curve) +
+           " (a cusp: a knife edge no hexahedron can follow)";
+  return pair + " meet at " + text(dh->second) + " degrees along curve " + std::to_string(curve) +
+         " (a knife edge: hexahedra along it have a scaled Jacobian of at most " +
+         text(std::sin(fold * M_PI / 180.0)) + ")";
 }
 
 }  // namespace
@@ -293,6 +312,9 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
           chain.to_vertex = vertex_at_end(facts, loop[m % n]);
           chain.length += facts.curves.at(loop[m % n].curve).length;
         }
+        for (int curve : chain.curves) {
+          if (out.knife_edge.empty()) out.knife_edge = knife_edge_text(facts, curve);
+        }
         chain.from_class = out.vertex_class.at(chain.from_vertex);
         chain.to_class = out.vertex_class.at(chain.to_vertex);
         if (chain.from_class == chain.to_class) {
@@ -311,6 +333,21 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
     if (!tangent_contact(facts, angle, contact, out)) return out;
   }
   out.ok = true;
+  return out;
+}
+
+std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
+                                                  const SideLattice& lattice) {
+  std::vector<std::pair<int, int>> out;
+  for (int s : lattice.sides) {
+    std::vector<int> along;
+    for (const auto& loop : facts.face(s)->loops) {
+      for (const UseFact& u : loop) {
+        if (lattice.along.count(u.curve)) along.push_back(u.curve);
+      }
+    }
+    if (along.size() == 2 && along[0] != along[1]) out.emplace_back(along[0], along[1]);
+  }
   return out;
 }
 

@@ -68,6 +68,10 @@ struct SideLattice {
   std::vector<StackedCurve> stacked;
   std::map<int, int> vertex_class;  ///< vertex id -> level class
   int classes = 0;
+  /// The first chain curve where two sides meet at a knife edge (see
+  /// kMinSideDihedral), as a sentence naming them; empty when none. Not a
+  /// refusal here: one barrel sweeps it (with poor elements at the edge).
+  std::string knife_edge;
   std::map<int, int> cap_class;  ///< cap face -> level class
   /// Per side face: its level classes (those of its runs along).
   std::map<int, std::vector<int>> face_classes;
@@ -82,6 +86,22 @@ inline constexpr double kMaxCapDihedral = 175.0;
 /// Dihedral angle [degrees] above which a side meets a cap re-entrantly (a
 /// shoulder: the cap is a virtual subcap there); between the two, tangent.
 inline constexpr double kReentrantMin = 185.0;
+
+/// Per side face with exactly two curves running along the caps (its rings
+/// of ribs on two levels, one curve each): that pair. The sweep links node k
+/// of one ring to node k of the next, so the two must be spaced alike: a
+/// size function graded by a feature near one of them only (a thin strip of
+/// one cap, curve_sizing.h) shears the ribs by elements
+/// (pyocc_face_recognition: 18 mm over a 40 mm barrel at size 12).
+std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
+                                                  const SideLattice& lattice);
+
+/// Two side faces meeting along the sweep within this angle [degrees] of
+/// folding flat (dihedral below it, or above 360 minus it: faces tangent at
+/// a cusp, which the sampled dihedral reports as 0 or 360) form a knife
+/// edge: every hexahedron along it has a scaled Jacobian of at most
+/// sin(angle) (0.17 at 10 degrees).
+inline constexpr double kMinSideDihedral = 10.0;
 
 /// Roles, chains, contacts and level classes for `caps` (every other face
 /// of the volume is a side). Not ok when a side has several loops, is not

@@ -25,6 +25,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <set>
@@ -490,6 +491,60 @@ TEST(CooperMany, Fig3aIsRejectedNamingTheFacesAndMeshesAfterAWebcut) {
   ASSERT_EQ(pieces.volumes().size(), 2u);
   const auto r = pipeline::mesh_model(pieces, sized(0.25), *registry, selector::mesh_options());
   expect_many_to_one(pieces, r, 32.0 + 1.0 + 1.0, "fig3a_after_webcut");
+}
+
+// A 4 x 4 x 1 block minus a cylinder of radius 2 about (0, 2): the circle
+// touches the block's walls y = 0 and y = 4 tangentially at x = 0, leaving
+// two cusps of material (occt_bm2_ec_lever-A has one, with a slot wall 0.1
+// mm beside it). `boss` adds a boss on top: many-to-one.
+void cusp_block(occ::Workbench& wb, bool boss) {
+  wb.brick("b", {0, 0, 0}, {4, 4, 1});
+  if (boss) {
+    wb.brick("boss", {2.5, 1.5, 1}, {1, 1, 0.5});
+    wb.fuse("b", {"b", "boss"});
+  }
+  wb.cylinder("tool", {0, 2, -1}, {0, 0, 1}, 2.0, 3.0);
+  wb.cut("part", {"b", "tool"});
+}
+
+// Where two sides meet tangentially at a cusp, a many-to-one plan is
+// refused naming them (the barrels' cap outlines fold back there and
+// imprinting cannot resolve them), at plan time and with the same reason
+// when meshing; one barrel has nothing to imprint and still sweeps.
+TEST(CooperMany, ACuspBetweenSidesIsRefusedForManyToOne) {
+  const auto registry = builtin();
+  occ::Workbench wb;
+  cusp_block(wb, true);
+  const geom::Model model = wb.build_model();
+  std::vector<int> cylinders;  // OCCT splits the round wall in two
+  for (const auto& s : model.surfaces()) {
+    if (s.geometry->type() == geom::SurfaceType::Cylinder) cylinders.push_back(s.id);
+  }
+  ASSERT_FALSE(cylinders.empty());
+  const scheme::Applicability a =
+      registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
+  EXPECT_FALSE(a.ok);
+  const size_t at = a.why.find("meet tangentially along curve");
+  ASSERT_NE(at, std::string::npos) << a.why;
+  EXPECT_NE(a.why.find("side surfaces "), std::string::npos) << a.why;
+  // One of the two faces named is the round wall.
+  const std::string named = a.why.substr(0, at);
+  EXPECT_TRUE(std::any_of(cylinders.begin(), cylinders.end(), [&](int id) {
+    return named.find(" " + std::to_string(id) + " ") != std::string::npos;
+  })) << a.why;
+  try {
+    pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
+    FAIL() << "meshed a many-to-one volume with a cusp";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("meet tangentially along curve"), std::string::npos)
+        << e.what();
+  }
+  occ::Workbench one;
+  cusp_block(one, false);
+  const geom::Model block = one.build_model();
+  const auto r = pipeline::mesh_model(block, sized(0.25), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  EXPECT_GT(r.mesh.hex_count(), 0u);
 }
 
 // The cylinder with a coaxial boss of examples/cylinder_boss.xml.

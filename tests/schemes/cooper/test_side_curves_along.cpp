@@ -1,0 +1,91 @@
+// The two curves along a sweep's side are spaced alike (side_lattice.h,
+// side_along_pairs; cooper_scheme.cpp drops both size functions when they
+// differ). The sweep links node k of one ring to node k of the next; a
+// curve graded by a feature near it on one cap only (a thin strip) sheared
+// the ribs by elements, and imprinting or the blend then failed.
+#include "support/hex_mesh_check.h"
+
+#include "framework/core/error.h"
+#include "framework/geometry/occ/workbench.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace cooperage::cooper {
+namespace {
+
+// The piece of pyocc_face_recognition that failed (tests/schemes/cooper/
+// data/cooper_strip_over_overhang.xml): a 153 x 5 strip (y -25..-20) over
+// a 74.551 x 80 overhang below it with one rounded corner (radius 5), cut at
+// z = 185. The upper piece sweeps along z from its two bottom faces (the
+// strip's cut face and the overhang's underside) to its top. The strip is 5
+// thick, so the sizing grades its edges to 5 wherever the strip is a face of
+// its own: all along the bottom edge y = -20, only over x < 78.45 on top.
+geom::Model strip_over_overhang() {
+  occ::Workbench wb;
+  wb.brick("strip", {0, -25, 0}, {153, 5, 225});
+  wb.brick("o1", {83.449, -105, 185}, {69.551, 80, 40});
+  wb.brick("o2", {78.449, -100, 185}, {5, 75, 40});
+  wb.cylinder("c", {83.449, -100, 185}, {0, 0, 1}, 5, 40);
+  wb.fuse("part", {"strip", "o1", "o2", "c"});
+  wb.webcut("part", {0, 0, 185}, {0, 0, 1});
+  return wb.build_model();
+}
+
+// x of the mesh nodes on the line y = -20, z = z0 (the strip's wall).
+std::vector<double> wall_nodes(const mesh::MeshDB& db, double z0) {
+  std::vector<double> x;
+  for (size_t i = 0; i < db.node_count(); ++i) {
+    const geom::Vec3& p = db.node(static_cast<int>(i));
+    if (std::abs(p.y() + 20) < 1e-6 && std::abs(p.z() - z0) < 1e-6) x.push_back(p.x());
+  }
+  std::sort(x.begin(), x.end());
+  return x;
+}
+
+// On main these failed from size 8 up ("subcap imprinting failed", or "hex
+// N of layer 4 is inverted"); every size meshes now, the wall's nodes lie
+// straight above each other, and the hexes fill the volume.
+TEST(CooperSideCurvesAlong, StripOverOverhangMeshesAtEverySize) {
+  const geom::Model model = strip_over_overhang();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  const double r = 5;
+  const double exact = 153.0 * 5 * 225 + (74.551 * 80 - (r * r - M_PI * r * r / 4)) * 40;
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  for (double size : {7.0, 8.0, 9.0, 10.0, 12.0, 15.0}) {
+    io::MeshSettings settings;
+    settings.size = size;
+    pipeline::MeshOptions options = selector::mesh_options();
+    options.threads = 1;
+    pipeline::MeshResult res;
+    try {
+      res = pipeline::mesh_model(model, settings, registry, options);
+    } catch (const MeshingError& e) {
+      ADD_FAILURE() << "size " << size << ": " << e.what();
+      continue;
+    }
+    EXPECT_EQ(res.plan.volumes.at(2).scheme, "cooper") << size;
+    const testing::HexMeshSummary s = testing::check_hex_mesh(model, res.mesh);
+    EXPECT_NEAR(s.volume, exact, 0.005 * exact) << size;
+    EXPECT_GE(s.min_sj, 0.3) << size;
+    const std::vector<double> bottom = wall_nodes(res.mesh, 185);
+    const std::vector<double> top = wall_nodes(res.mesh, 225);
+    ASSERT_EQ(bottom.size(), top.size()) << size;
+    double shear = 0;
+    for (size_t k = 0; k < top.size(); ++k) shear = std::max(shear, std::abs(top[k] - bottom[k]));
+    EXPECT_LT(shear, 1e-6 * size) << size;
+    std::printf("[cooper sides] strip over overhang, size %g: %zu hexes, min SJ %.4f\n", size,
+                s.hexes, s.min_sj);
+  }
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
