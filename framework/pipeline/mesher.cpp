@@ -259,6 +259,14 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   // Volumes in waves: a volume that takes a neighbour's mesh of a shared
   // surface (plan.waits_for) is meshed after it, in parallel with the rest
   // of its wave; commits stay in wave-then-id order (deterministic).
+  // The scaled Jacobians the schemes computed on their final nodes, taken
+  // by the quality report below instead of computing every element again.
+  KnownScaledJacobians known;
+  auto commit_volume_keep_quality = [&known](scheme::EntityMesh& m, int id, mesh::MeshDB& db) {
+    if (!m.hex_scaled_jacobian.empty()) known.hexes[id] = std::move(m.hex_scaled_jacobian);
+    if (!m.wedge_scaled_jacobian.empty()) known.wedges[id] = std::move(m.wedge_scaled_jacobian);
+    commit_volume(m, id, db);
+  };
   std::vector<int> pending;
   for (const auto& [id, entry] : result.plan.volumes)
     if (!refusals.refused(id)) pending.push_back(id);
@@ -296,7 +304,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
           return s->mesh(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
                          params);
         },
-        commit_volume,
+        commit_volume_keep_quality,
         [&](int id, const MeshingError& e) {
           refusals.refuse(id, e.code(), e.message(), e.hint());
         });
@@ -306,7 +314,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   lap("volumes");
 
   // Never hand back inverted elements silently.
-  result.quality = assess_quality(result.mesh, model, {});
+  result.quality = assess_quality(result.mesh, model, {}, &known);
+  known = {};
   for (const auto& block : result.quality.blocks) {
     const auto* sj = block.find("scaled_jacobian");
     if (!sj || sj->inverted == 0) continue;
