@@ -360,4 +360,6 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
   detail::commit_temp_file(tmp, path);
 }
 
+void load_exodus_library() { exodus_lazy::api(); }
+
 }  // namespace cooperage::io
