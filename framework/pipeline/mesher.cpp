@@ -511,8 +511,10 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
       early_seconds = seconds_since(t0);
     };
   }
-  // With two threads or more, the Exodus library loads beside the geometry
-  // and meshing instead of in the export (~40 ms of dynamic linking).
+  // With two threads or more, the Exodus library loads beside the meshing
+  // instead of in the export (~40 ms of dynamic linking). Only after the
+  // geometry: its import forks a child, which must not inherit a thread in
+  // the middle of dlopen.
   std::thread preload;
   if (limit_threads_count(opts.threads) > 1) {
     std::vector<std::string> paths;
