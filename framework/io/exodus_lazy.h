@@ -21,7 +21,8 @@ namespace cooperage::io::exodus_lazy {
   X(ex_put_coord_names) X(ex_put_block) X(ex_put_sets) X(ex_put_names)                         \
   X(ex_put_partial_coord) X(ex_put_set) X(ex_put_info) X(ex_get_init_ext) X(ex_inquire_int)                   \
   X(ex_set_max_name_length) X(ex_get_coord) X(ex_get_ids) X(ex_get_block) X(ex_get_conn)      \
-  X(ex_get_name) X(ex_set_int64_status) X(nc_inq_varid) X(nc_put_vara_int) X(nc_redef) X(nc__enddef)
+  X(ex_get_name) X(ex_set_int64_status) X(nc_inq_varid) X(nc_put_vara_int) X(nc_redef) X(nc__enddef)        \
+  X(nc__open) X(nc_close) X(nc_put_vara_double)
 // clang-format on
 
 struct Api {
@@ -64,3 +65,6 @@ const Api& api();
 #define nc_put_vara_int(...) ::cooperage::io::exodus_lazy::api().nc_put_vara_int(__VA_ARGS__)
 #define nc_redef(...) ::cooperage::io::exodus_lazy::api().nc_redef(__VA_ARGS__)
 #define nc__enddef(...) ::cooperage::io::exodus_lazy::api().nc__enddef(__VA_ARGS__)
+#define nc__open(...) ::cooperage::io::exodus_lazy::api().nc__open(__VA_ARGS__)
+#define nc_close(...) ::cooperage::io::exodus_lazy::api().nc_close(__VA_ARGS__)
+#define nc_put_vara_double(...) ::cooperage::io::exodus_lazy::api().nc_put_vara_double(__VA_ARGS__)

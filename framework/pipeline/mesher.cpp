@@ -17,12 +17,14 @@
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <memory>
 #include <optional>
@@ -140,11 +142,13 @@ constexpr const char* kNoSchemeHint =
 
 /// TBB workers: the request, at most the hardware's (a journal asking for
 /// 2,147,483,647 threads ran out of memory; issue 21).
-std::unique_ptr<tbb::global_control> limit_threads(int requested) {
+int limit_threads_count(int requested) {
   const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int n = requested > 0 ? std::min(requested, hardware) : hardware;
+  return requested > 0 ? std::min(requested, hardware) : hardware;
+}
+std::unique_ptr<tbb::global_control> limit_threads(int requested) {
   return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                               static_cast<size_t>(n));
+                                               static_cast<size_t>(limit_threads_count(requested)));
 }
 
 }  // namespace
@@ -259,6 +263,14 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   // Volumes in waves: a volume that takes a neighbour's mesh of a shared
   // surface (plan.waits_for) is meshed after it, in parallel with the rest
   // of its wave; commits stay in wave-then-id order (deterministic).
+  // The scaled Jacobians the schemes computed on their final nodes, taken
+  // by the quality report below instead of computing every element again.
+  KnownScaledJacobians known;
+  auto commit_volume_keep_quality = [&known](scheme::EntityMesh& m, int id, mesh::MeshDB& db) {
+    if (!m.hex_scaled_jacobian.empty()) known.hexes[id] = std::move(m.hex_scaled_jacobian);
+    if (!m.wedge_scaled_jacobian.empty()) known.wedges[id] = std::move(m.wedge_scaled_jacobian);
+    commit_volume(m, id, db);
+  };
   std::vector<int> pending;
   for (const auto& [id, entry] : result.plan.volumes)
     if (!refusals.refused(id)) pending.push_back(id);
@@ -296,7 +308,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
           return s->mesh(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
                          params);
         },
-        commit_volume,
+        commit_volume_keep_quality,
         [&](int id, const MeshingError& e) {
           refusals.refuse(id, e.code(), e.message(), e.hint());
         });
@@ -305,8 +317,25 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   }
   lap("volumes");
 
+  // The caller's work on the finished mesh (the exports) runs beside the
+  // checks below; it is waited for on every way out of this function.
+  tbb::task_group beside;
+  struct Wait {
+    tbb::task_group& group;
+    ~Wait() { group.wait(); }
+  } wait_beside{beside};
+  if (options.beside_checks && refusals.all().empty()) {
+    beside.run([&] {
+      try {
+        options.beside_checks(result.mesh);
+      } catch (...) {  // documented not to throw; never let it end the process
+      }
+    });
+  }
+
   // Never hand back inverted elements silently.
-  result.quality = assess_quality(result.mesh, model, {});
+  result.quality = assess_quality(result.mesh, model, {}, &known);
+  known = {};
   for (const auto& block : result.quality.blocks) {
     const auto* sj = block.find("scaled_jacobian");
     if (!sj || sj->inverted == 0) continue;
@@ -404,11 +433,14 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
       throw MeshingError(v.state == Verdict::State::Refused ? v.code : ErrorCode::MeshingFailed,
                          v.entity, v.reason.empty() ? "nothing could be meshed" : v.reason, v.hint);
     }
+    beside.wait();  // it reads the mesh replaced here
     result.mesh = keep_entities(result.mesh, model, dim == 3 ? good : std::set<int>{},
                                 dim == 3 ? std::set<int>{} : good);
+    result.mesh_replaced = true;
     result.quality = assess_quality(result.mesh, model, {});
   }
   lap("quality");
+  beside.wait();  // before `result` leaves this function
   return result;
 }
 
@@ -449,6 +481,57 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   }
   MeshOptions opts = options;
   if (opts.threads == 0) opts.threads = job.mesh->threads;
+  // The exports are written (staged, not yet renamed) beside the mesher's
+  // checks, and renamed below only when the run passes them.
+  auto stage_exports = [&](io::ExportBatch& batch, const mesh::MeshDB& db) {
+    for (const io::ExportSetting& e : job.exports) {
+      io::ExportOptions export_options;
+      export_options.binary = e.binary;
+      export_options.groups = job.groups;
+      export_options.skip_empty_groups = options.allow_partial;
+      try {
+        batch.stage(resolve_path(job.base_dir, e.file), db, result.model, export_options);
+      } catch (const MeshingError& err) {
+        throw MeshingError(err.code(), err.entity(), where_prefix(e.where) + err.message(),
+                           err.hint());
+      }
+    }
+  };
+  auto early = std::make_unique<io::ExportBatch>();
+  std::exception_ptr early_error;
+  std::optional<double> early_seconds;
+  if (!job.exports.empty()) {
+    opts.beside_checks = [&](const mesh::MeshDB& db) {
+      const auto t0 = Clock::now();
+      try {
+        stage_exports(*early, db);
+      } catch (...) {
+        early_error = std::current_exception();
+      }
+      early_seconds = seconds_since(t0);
+    };
+  }
+  // With two threads or more, the Exodus library loads beside the meshing
+  // instead of in the export (~40 ms of dynamic linking). Only after the
+  // geometry: its import forks a child, which must not inherit a thread in
+  // the middle of dlopen.
+  std::thread preload;
+  if (limit_threads_count(opts.threads) > 1) {
+    std::vector<std::string> paths;
+    for (const io::ExportSetting& e : job.exports)
+      paths.push_back(resolve_path(job.base_dir, e.file));
+    if (!paths.empty()) {
+      preload = std::thread([paths] {
+        for (const std::string& p : paths) io::prepare_export(p);
+      });
+    }
+  }
+  struct Join {
+    std::thread& t;
+    ~Join() {
+      if (t.joinable()) t.join();
+    }
+  } join_preload{preload};
   result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
   result.stages.insert(result.stages.end(), result.mesh.stages.begin(), result.mesh.stages.end());
   stage_start = Clock::now();
@@ -467,23 +550,21 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     return result;
   }
   stage_start = Clock::now();
-  io::ExportBatch batch;
-  for (const io::ExportSetting& e : job.exports) {
+  for (const io::ExportSetting& e : job.exports)
     report(options, "export " + clip_path(e.file), 0, 1);
-    io::ExportOptions export_options;
-    export_options.binary = e.binary;
-    export_options.groups = job.groups;
-    export_options.skip_empty_groups = options.allow_partial;
-    try {
-      batch.stage(resolve_path(job.base_dir, e.file), result.mesh.mesh, result.model,
-                  export_options);
-    } catch (const MeshingError& err) {
-      throw MeshingError(err.code(), err.entity(), where_prefix(e.where) + err.message(),
-                         err.hint());
-    }
+  double staged_beside = 0;  // the time of the writes made beside the checks
+  if (early_seconds && !result.mesh.mesh_replaced) {
+    if (early_error) std::rethrow_exception(early_error);
+    staged_beside = *early_seconds;
+    result.written = early->commit();
+  } else {
+    early.reset();  // a partial mesh replaced the one staged
+    io::ExportBatch batch;
+    stage_exports(batch, result.mesh.mesh);
+    result.written = batch.commit();
   }
-  result.written = batch.commit();
-  if (!job.exports.empty()) result.stages.push_back({"exports", seconds_since(stage_start)});
+  if (!job.exports.empty())
+    result.stages.push_back({"exports", staged_beside + seconds_since(stage_start)});
   write_reports(job, options, result);
   return result;
 }

@@ -43,6 +43,12 @@ struct MeshOptions {
   bool allow_partial = false;
   /// Called as work advances: stage name, items done, items in the stage.
   std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
+  /// Optional: called once with the finished mesh, as a task beside the
+  /// quality report and the volume check (after them on one thread), when
+  /// no entity was refused before them; mesh_model waits for it before it
+  /// returns or throws. It must only read the mesh, and must not throw. The
+  /// mesh returned is the one it saw unless MeshResult::mesh_replaced.
+  std::function<void(const mesh::MeshDB&)> beside_checks;
 };
 
 /// Wall-clock time of one stage of a run.
@@ -93,6 +99,9 @@ struct MeshResult {
   std::vector<Verdict> verdicts;       ///< every volume (3D) or surface (2D), by id
   std::vector<MeasureCheck> measures;  ///< meshed volume / area against the CAD's
   double volume_tolerance = 0.01;      ///< the tolerance the verdicts used
+  /// allow_partial kept only some entities: `mesh` is not the mesh
+  /// MeshOptions::beside_checks saw.
+  bool mesh_replaced = false;
 
   /// True when some verdict is not Meshed (a partial or failed result).
   bool incomplete() const;

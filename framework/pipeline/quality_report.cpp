@@ -46,14 +46,21 @@ template <size_t N>
 void add_block(QualityReport& report, const mesh::MeshDB& db, int dim, int id, ElementType type,
                const std::vector<std::array<int, N>>& elements,
                const std::vector<Eigen::Vector3d>* normals,
-               const std::vector<io::QualityCheck>& checks) {
+               const std::vector<io::QualityCheck>& checks,
+               const std::vector<double>* known_scaled_jacobian = nullptr) {
   if (elements.empty()) return;
   BlockReport block{dim, id, type, elements.size(), {}};
   quality::EvaluateOptions options;
   options.normals = normals;
+  const bool known = known_scaled_jacobian && known_scaled_jacobian->size() == elements.size();
   for (Metric m : metrics_for(type, checks)) {
-    const auto values = quality::evaluate(m, type, db.coords(), elements.front().data(),
-                                          elements.size(), static_cast<int>(N), options);
+    const bool take = known && m == Metric::ScaledJacobian;
+    std::vector<double> computed;
+    if (!take) {
+      computed = quality::evaluate(m, type, db.coords(), elements.front().data(), elements.size(),
+                                   static_cast<int>(N), options);
+    }
+    const std::vector<double>& values = take ? *known_scaled_jacobian : computed;
     block.metrics.push_back(quality::summarize(m, values));
     // Each check counts against its own thresholds (one metric may be
     // checked twice, e.g. warn below 0.5 and fail below 0.2).
@@ -64,6 +71,11 @@ void add_block(QualityReport& report, const mesh::MeshDB& db, int dim, int id, E
     }
   }
   report.blocks.push_back(std::move(block));
+}
+
+const std::vector<double>* known_values(const std::map<int, std::vector<double>>& values, int id) {
+  const auto it = values.find(id);
+  return it == values.end() ? nullptr : &it->second;
 }
 
 }  // namespace
@@ -101,14 +113,17 @@ std::size_t QualityReport::inverted() const {
 }
 
 QualityReport assess_quality(const mesh::MeshDB& db, const geom::Model& model,
-                             const std::vector<io::QualityCheck>& checks) {
+                             const std::vector<io::QualityCheck>& checks,
+                             const KnownScaledJacobians* known) {
   QualityReport report;
   for (const auto& c : checks) report.checks.push_back({c, 0, false});
   const bool volumes = db.hex_count() + db.wedge_count() > 0;
   if (volumes) {
     for (const auto& [id, v] : db.volumes()) {
-      add_block(report, db, 3, id, ElementType::Hex, v.hexes, nullptr, checks);
-      add_block(report, db, 3, id, ElementType::Wedge, v.wedges, nullptr, checks);
+      add_block(report, db, 3, id, ElementType::Hex, v.hexes, nullptr, checks,
+                known ? known_values(known->hexes, id) : nullptr);
+      add_block(report, db, 3, id, ElementType::Wedge, v.wedges, nullptr, checks,
+                known ? known_values(known->wedges, id) : nullptr);
     }
   } else {
     for (const auto& [id, s] : db.surfaces()) {

@@ -9,6 +9,7 @@
 #include "framework/quality/metric.h"
 #include "framework/quality/summary.h"
 
+#include <map>
 #include <vector>
 
 namespace cooperage::pipeline {
@@ -44,10 +45,21 @@ std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geo
 std::vector<Eigen::Vector3d> reference_normals(const mesh::MeshDB& db, const geom::Surface& surface,
                                                const std::vector<mesh::Tri>& tris);
 
+/// Scaled Jacobians a volume scheme already computed on the mesh's final
+/// coordinates (scheme::EntityMesh::hex_scaled_jacobian), per volume id, in
+/// the order of the volume's elements in the MeshDB.
+struct KnownScaledJacobians {
+  std::map<int, std::vector<double>> hexes, wedges;
+};
+
 /// Volume blocks when the mesh has volume elements, otherwise surface blocks
 /// (scaled Jacobian signed against the surface normal). Unknown metric names
 /// in checks give MeshingError(InvalidInput) naming the journal line.
+/// \param[in] known  values to take instead of computing them; a block's are
+///                   used only when there is one per element (the report is
+///                   the same either way, bit for bit)
 QualityReport assess_quality(const mesh::MeshDB& db, const geom::Model& model,
-                             const std::vector<io::QualityCheck>& checks);
+                             const std::vector<io::QualityCheck>& checks,
+                             const KnownScaledJacobians* known = nullptr);
 
 }  // namespace cooperage::pipeline

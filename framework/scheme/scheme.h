@@ -73,6 +73,12 @@ struct EntityMesh {
   std::vector<mesh::Tri> tris;
   std::vector<mesh::Hex> hexes;
   std::vector<mesh::Wedge> wedges;
+  /// Optional: the scaled Jacobian (quality::hex_scaled_jacobian,
+  /// wedge_scaled_jacobian) of every hex / wedge, in element order, computed
+  /// on exactly the coordinates the mesh ends up with. The run's quality
+  /// report takes them instead of computing every element again. Leave a
+  /// vector empty unless it holds one value per element.
+  std::vector<double> hex_scaled_jacobian, wedge_scaled_jacobian;
   /// Volume schemes only: the elements of surfaces the volume scheme meshes
   /// itself (role kMeshedByVolume, e.g. cooper's target caps), oriented with
   /// each surface's natural normal.

@@ -19,6 +19,8 @@
 #include <set>
 
 #include <Eigen/Geometry>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -217,22 +219,35 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   } else {
     r.assign(points.size(), Vec3::Zero());
   }
+  // The nodes made on `to`, numbered in first use by the faces (as they
+  // are added below), then placed in parallel: the map, the residual and
+  // the projection onto the cap are independent per node (the projection
+  // was most of a 1 M-hex plate's serial cap stack, issue 20).
   std::map<int, int> image;
+  std::vector<int> fresh;  // from's nodes, in the order their images are added
+  auto first_use = [&](int n) {
+    if (across.count(n) == 0 && image.emplace(n, -1).second) fresh.push_back(n);
+  };
+  for (const auto& q : from.quads)
+    for (int n : q) first_use(n);
+  for (const auto& t : from.tris)
+    for (int n : t) first_use(n);
+  const geom::Surface* cap = to.cap ? &s.model.surface(to.cap) : nullptr;
+  std::vector<Vec3> placed(fresh.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, fresh.size(), 512),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t k = range.begin(); k != range.end(); ++k) {
+                        const int n = fresh[k];
+                        const Vec3 y = map.apply(s.pos(n)) + r[static_cast<size_t>(index.at(n))];
+                        placed[k] = cap ? cap->geometry->project(y).point : y;
+                      }
+                    });
+  for (size_t k = 0; k < fresh.size(); ++k) {
+    image[fresh[k]] = cap ? s.out.add_owned(placed[k], {2, to.cap}) : s.out.add(placed[k]);
+  }
   auto image_of = [&](int n) {
     const auto a = across.find(n);
-    if (a != across.end()) return a->second;
-    const auto it = image.find(n);
-    if (it != image.end()) return it->second;
-    Vec3 y = map.apply(s.pos(n)) + r[static_cast<size_t>(index.at(n))];
-    int m;
-    if (to.cap) {
-      y = s.model.surface(to.cap).geometry->project(y).point;
-      m = s.out.add_owned(y, {2, to.cap});
-    } else {
-      m = s.out.add(y);
-    }
-    image[n] = m;
-    return m;
+    return a != across.end() ? a->second : image.at(n);
   };
   for (const auto& q : from.quads)
     to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});

@@ -58,8 +58,10 @@ struct Worst {
 }  // namespace
 
 double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<mesh::Hex>& hexes,
-                           const std::vector<mesh::Wedge>& wedges, double limit, long* first_bad) {
+                           const std::vector<mesh::Wedge>& wedges, double limit, long* first_bad,
+                           std::vector<double>* values) {
   const std::size_t nh = hexes.size();
+  if (values) values->resize(nh + wedges.size());
   const Worst worst = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, nh + wedges.size(), 4096), Worst{},
       [&](const tbb::blocked_range<std::size_t>& range, Worst w) {
@@ -76,6 +78,7 @@ double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<me
             for (std::size_t c = 0; c < 6; ++c) p[c] = points[static_cast<std::size_t>(wedge[c])];
             sj = quality::wedge_scaled_jacobian(p);
           }
+          if (values) (*values)[e] = sj;
           w.add(sj, static_cast<long>(e), limit);
         }
         return w;

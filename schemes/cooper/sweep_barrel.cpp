@@ -108,8 +108,8 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
   make_elements(in, out.hexes, out.wedges);
   long bad = -1;
   if (placed) {
-    out.min_scaled_jacobian =
-        min_scaled_jacobian(out.points, out.hexes, out.wedges, options.min_scaled_jacobian, &bad);
+    out.min_scaled_jacobian = min_scaled_jacobian(
+        out.points, out.hexes, out.wedges, options.min_scaled_jacobian, &bad, &out.scaled_jacobian);
     if (bad < 0 && out.min_scaled_jacobian >= options.improve_below) {
       out.ok = true;
       return out;
@@ -162,6 +162,7 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
     out.smoothed = true;
     bad = bad_smoothed;
   }
+  if (out.smoothed) out.scaled_jacobian = {};
   if (bad < 0) {
     out.ok = true;
     return out;

@@ -61,6 +61,11 @@ struct SweepResult {
   std::vector<mesh::Wedge> wedges;   ///< indices into points, Exodus order
   double min_scaled_jacobian = 1.0;  ///< over all elements
   bool smoothed = false;             ///< the smoothing fallback was needed
+  /// The scaled Jacobian of every hex, then every wedge, on `points` as
+  /// handed over (the run's quality report takes them instead of computing
+  /// them again). Empty after a smoothing fallback: the fallbacks move the
+  /// target layer, whose nodes the mesh takes from the lower cap instead.
+  std::vector<double> scaled_jacobian;
 };
 
 /// Layer nodes: layer 0 = source, rib nodes from the ribs, interior target
@@ -86,8 +91,10 @@ void make_elements(const SweepInput& in, std::vector<mesh::Hex>& hexes,
 
 /// Minimum scaled Jacobian of the elements (Verdict), and the first element
 /// at or below `limit` (-1 when none): hexes first, then wedges.
+/// \param[out] values  when given, every element's value in that order
 double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<mesh::Hex>& hexes,
-                           const std::vector<mesh::Wedge>& wedges, double limit, long* first_bad);
+                           const std::vector<mesh::Wedge>& wedges, double limit, long* first_bad,
+                           std::vector<double>* values = nullptr);
 
 /// Fallback placement: Laplacian smoothing of the interior nodes of every
 /// interior layer (and of the target layer, re-projected), rib nodes fixed.

@@ -75,40 +75,68 @@ void append_sweep(SweepState& s, const BarrelState& st, const std::vector<int>& 
   const size_t base = s.out.coords.size();
   const size_t fresh = J > 1 ? (J - 1) * inner : 0;
   scheme::EntityMesh& out = s.out;
+  // The elements are renumbered first and the node map dropped before the
+  // layer nodes are copied, and the node arrays grow after the sweep's points
+  // are freed: the points and the volume's coordinates are the only per-node
+  // arrays alive at once (the peak of a 10 M hex run, issue 20).
+  {
+    std::vector<int> node(sweep.points.size());
+    tbb::parallel_for(size_t{0}, J + 1, [&](size_t j) {
+      for (size_t i = 0; i < n; ++i) {
+        const size_t q = j * n + i;
+        if (i < B) {
+          node[q] = rib_node[j * B + i];
+        } else if (j == 0) {
+          node[q] = cap[i];
+        } else if (j == J) {
+          node[q] = lower[i];
+        } else {
+          node[q] = static_cast<int>(base + (j - 1) * inner + (i - B));
+        }
+      }
+    });
+    auto renumber = [&](auto& elements) {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 4096),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t e = r.begin(); e != r.end(); ++e) {
+                            for (int& v : elements[e]) v = node[static_cast<size_t>(v)];
+                          }
+                        });
+    };
+    renumber(sweep.hexes);
+    renumber(sweep.wedges);
+  }
   // Room for the MeshDB's nodes as well: its commit then takes this array
   // over instead of copying it (MeshDB::append_nodes).
   out.coords.reserve(base + fresh + s.db.node_count());
   out.coords.resize(base + fresh);  // Vec3 is left uninitialised: every slot is written below
+  if (J > 1) {
+    tbb::parallel_for(size_t{1}, J, [&](size_t j) {
+      std::copy(sweep.points.begin() + static_cast<std::ptrdiff_t>(j * n + B),
+                sweep.points.begin() + static_cast<std::ptrdiff_t>(j * n + n),
+                out.coords.begin() + static_cast<std::ptrdiff_t>(base + (j - 1) * inner));
+    });
+  }
+  sweep.points = {};
   out.global.resize(base + fresh, -1);
   if (!out.owners.empty()) out.owners.resize(base + fresh);
-  std::vector<int> node(sweep.points.size());
-  tbb::parallel_for(size_t{0}, J + 1, [&](size_t j) {
-    for (size_t i = 0; i < n; ++i) {
-      const size_t q = j * n + i;
-      if (i < B) {
-        node[q] = rib_node[j * B + i];
-      } else if (j == 0) {
-        node[q] = cap[i];
-      } else if (j == J) {
-        node[q] = lower[i];
-      } else {
-        const size_t slot = base + (j - 1) * inner + (i - B);
-        out.coords[slot] = sweep.points[q];
-        node[q] = static_cast<int>(slot);
-      }
+  // The check's values go along while every barrel so far had them (a
+  // smoothed barrel has none): one per element, or none at all.
+  const size_t nh = sweep.hexes.size();
+  const bool values = sweep.scaled_jacobian.size() == nh + sweep.wedges.size();
+  auto carry = [&](std::vector<double>& to, size_t had, size_t first, size_t count) {
+    if (!values || to.size() != had) {
+      to = {};
+    } else if (to.empty() && count == sweep.scaled_jacobian.size()) {
+      to = std::move(sweep.scaled_jacobian);  // one barrel, one element type: no copy
+    } else if (count > 0) {
+      const auto from = sweep.scaled_jacobian.begin() + static_cast<std::ptrdiff_t>(first);
+      to.insert(to.end(), from, from + static_cast<std::ptrdiff_t>(count));
     }
-  });
-  sweep.points = {};
-  auto renumber = [&](auto& elements) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 4096),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t e = r.begin(); e != r.end(); ++e) {
-                          for (int& v : elements[e]) v = node[static_cast<size_t>(v)];
-                        }
-                      });
   };
-  renumber(sweep.hexes);
-  renumber(sweep.wedges);
+  carry(out.hex_scaled_jacobian, out.hexes.size(), 0, nh);
+  carry(out.wedge_scaled_jacobian, out.wedges.size(), nh, sweep.wedges.size());
+  sweep.scaled_jacobian = {};
   auto append = [](auto& to, auto& from) {
     if (to.empty()) {
       to = std::move(from);  // the usual case, one barrel's elements: no copy

@@ -44,4 +44,8 @@ namespace cooperage::io {
 void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::Model& model,
                   const ExportOptions& options = {});
 
+/// Loads the Exodus II library now (it is loaded on first use,
+/// exodus_lazy.h). Throws MeshingError(Internal) when it cannot be loaded.
+void load_exodus_library();
+
 }  // namespace cooperage::io

@@ -57,6 +57,15 @@ void remove_dir_tree(const std::string& dir) noexcept {
 
 }  // namespace
 
+void prepare_export(const std::string& path) noexcept {
+  const std::string ext = extension_of(path);
+  if (ext != "exo" && ext != "e" && ext != "g") return;
+  try {
+    load_exodus_library();
+  } catch (...) {  // the write will say why
+  }
+}
+
 bool known_mesh_extension(const std::string& path) {
   const std::string ext = extension_of(path);
   return ext == "exo" || ext == "e" || ext == "g" || ext == "msh" || ext == "vtu" || ext == "inp" ||

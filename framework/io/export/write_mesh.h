@@ -37,6 +37,12 @@ void write_mesh(const std::string& path, const mesh::MeshDB& db, const geom::Mod
 /// .obj .off .stl .ply).
 bool known_mesh_extension(const std::string& path);
 
+/// Loads what writing `path` will need and is slow to load (the Exodus II
+/// library for .exo .e .g), so that a later write does not wait for it, e.g.
+/// from a thread beside the meshing. Thread-safe; does nothing for other
+/// formats; a failure is left for the write to report.
+void prepare_export(const std::string& path) noexcept;
+
 /// Checks, before any meshing, that `path` can be written: a known
 /// extension, an existing directory we may create files in (tried by
 /// creating and removing a private directory there), and no directory at

@@ -69,6 +69,39 @@ TEST_F(RunJob, FailingQualityCheckSkipsExports) {
   EXPECT_FALSE(fs::exists(dir_ / "out.vtu"));
 }
 
+// The exports are written beside the mesher's checks and renamed only
+// when the run passes: a failing check leaves neither the file nor the
+// private directory it was staged in.
+TEST_F(RunJob, FailingQualityCheckLeavesNoStagedExport) {
+  io::Job job =
+      journal(std::string(kTwoBricks) +
+              "  <quality metric=\"jacobian\" min=\"1\" action=\"fail\"/>\n"  // each hex: 1/64
+              "  <export file=\"out.exo\"/>\n  <export file=\"out.vtu\"/>\n");
+  for (int threads : {1, 2}) {
+    const RunResult r = run_job(job, registry_, selector::mesh_options(3, threads));
+    EXPECT_TRUE(r.exports_skipped);
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir_)) left.push_back(e.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"job.xml"}) << threads << " threads";
+  }
+}
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST_F(RunJob, ExportsBesideTheChecksAreTheSameOnOneAndTwoThreads) {
+  const std::string one = (dir_ / "one.exo").string(), two = (dir_ / "two.exo").string();
+  run_job(journal(std::string(kTwoBricks) + "  <export file=\"one.exo\"/>\n"), registry_,
+          selector::mesh_options(3, 1));
+  run_job(journal(std::string(kTwoBricks) + "  <export file=\"two.exo\"/>\n"), registry_,
+          selector::mesh_options(3, 2));
+  const std::string a = bytes_of(one), b = bytes_of(two);
+  ASSERT_GT(a.size(), 1000u);
+  EXPECT_TRUE(a == b);
+}
+
 TEST_F(RunJob, WarningCheckCountsButWrites) {
   io::Job job =
       journal(std::string(kTwoBricks) +
