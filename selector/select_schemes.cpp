@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace cooperage::selector {
 namespace {
@@ -66,6 +67,15 @@ const Candidate* find_candidate(const std::vector<Candidate>& candidates, const 
   return nullptr;
 }
 
+// " 3, 5": the surfaces of the requests made of a volume.
+std::string listed(const scheme::NeighbourMeshes& n) {
+  std::set<int> all = n.made;
+  all.insert(n.kept.begin(), n.kept.end());
+  std::string out = all.size() > 1 ? "s" : "";
+  for (int s : all) out += (out.size() > 1 ? ", " : " ") + std::to_string(s);
+  return out;
+}
+
 struct Role {
   std::string scheme;
   int volume = 0;
@@ -93,6 +103,18 @@ bool has_cycle(const std::map<int, std::set<int>>& edges) {
   return false;
 }
 
+// What a volume chosen earlier is asked to plan around: to take `surface`
+// as it finds it (`take`: the later volume must mesh it), or to leave it to
+// its surface scheme (the later volume needs it so).
+struct Request {
+  int volume = 0;
+  int surface = 0;
+  bool take = false;
+  bool pin = false;  ///< no request: the conflict is with a surface pin (the user's input)
+};
+
+constexpr int kMaxRounds = 8;  // rounds of requests before the last choice stands
+
 class Selector {
  public:
   Selector(const geom::Model& model, const scheme::Registry& registry,
@@ -105,13 +127,27 @@ class Selector {
 
   Selection run() {
     if (options_.dim == 3) {
-      for (const geom::Volume& v : model_.volumes()) {
-        try {
-          choose_volume(v.id);
-        } catch (const MeshingError& e) {
-          if (!options_.refuse_per_volume || e.entity().dim != 3) throw;
-          selection_.refused[v.id] = {e.code(), e.message(), e.hint()};
+      // A conflict over a shared surface with a volume chosen earlier asks
+      // that volume to plan around the surface (yield_), and the volumes
+      // are chosen again; the requests only grow, so this ends.
+      for (int round = 0;; ++round) {
+        restart_ = false;
+        roles_.clear();
+        waits_for_.clear();
+        selection_.volumes.clear();
+        selection_.refused.clear();
+        for (const geom::Volume& v : model_.volumes()) {
+          try {
+            choose_volume(v.id);
+          } catch (const MeshingError& e) {
+            if (!options_.refuse_per_volume || e.entity().dim != 3) {
+              if (restart_ && round < kMaxRounds) break;  // the next round may fit it
+              throw;
+            }
+            selection_.refused[v.id] = {e.code(), e.message(), e.hint()};
+          }
         }
+        if (!restart_ || round >= kMaxRounds) break;
       }
     }
     for (const geom::Surface& s : model_.surfaces()) choose_surface(s.id);
@@ -158,9 +194,12 @@ class Selector {
     return waits;
   }
 
-  // Why `roles` cannot be taken by `volume`, or "" when they fit.
+  // Why `roles` cannot be taken by `volume`, or "" when they fit. A
+  // conflict over who meshes a shared surface says in `ask` what the
+  // neighbour chosen earlier could do instead.
   std::string role_conflict(int volume, const std::string& scheme_name,
-                            const scheme::SurfaceRoles& roles, const std::set<int>& takes) const {
+                            const scheme::SurfaceRoles& roles, const std::set<int>& takes,
+                            Request* ask = nullptr) const {
     for (const auto& [surface, role] : roles) {
       auto it = roles_.find(surface);
       const bool mine = role == scheme::kMeshedByVolume;
@@ -169,6 +208,9 @@ class Selector {
         // One volume meshes the surface itself; the other must take that mesh.
         const bool taken =
             mine ? !theirs && it->second.takes_existing : !mine && takes.count(surface) > 0;
+        // What the neighbour could do: take the mesh this volume makes, or
+        // leave the surface to its surface scheme.
+        if (ask && !taken) *ask = {it->second.volume, surface, mine};
         if (mine && theirs) {
           return "surface " + std::to_string(surface) + " would be meshed by both volume " +
                  std::to_string(it->second.volume) + " (" + it->second.volume_scheme +
@@ -195,6 +237,7 @@ class Selector {
                it->second.volume_scheme + ")";
       }
       if (const auto* pin = surface_pin(surface); pin && pin->scheme != role) {
+        if (ask) ask->pin = true;
         return "surface " + std::to_string(surface) + " is pinned to " + pin->scheme + " at " +
                place(pin->where) + " but volume " + std::to_string(volume) + " (" + scheme_name +
                ") needs " + role;
@@ -203,8 +246,59 @@ class Selector {
     return {};
   }
 
+  // The neighbour chosen earlier may plan around the surface (a sweep the
+  // other way round): it is asked once, and the volumes are chosen again.
+  void request(const Request& ask) {
+    if (ask.volume == 0) return;
+    scheme::NeighbourMeshes& y = yield_[ask.volume];
+    std::set<int>& list = ask.take ? y.made : y.kept;
+    if (list.insert(ask.surface).second) restart_ = true;
+  }
+
+  // Whether candidate `c` for a volume takes every surface in `n.made` as
+  // it finds it and meshes none of `n.kept` itself.
+  bool honours(const Candidate& c, const scheme::VolumeView& view,
+               const scheme::NeighbourMeshes& n) const {
+    const scheme::VolumeScheme* vs = registry_.volume_scheme(c.scheme);
+    scheme::VolumeView planned = view;
+    planned.plan = c.applicability.plan.get();
+    const scheme::SurfaceRoles roles = vs->roles(planned);
+    const std::vector<int> taken = vs->takes_existing_mesh(planned);
+    for (int s : n.made) {
+      const auto it = roles.find(s);
+      if (it != roles.end() && (it->second == scheme::kMeshedByVolume ||
+                                std::find(taken.begin(), taken.end(), s) == taken.end()))
+        return false;
+    }
+    for (int s : n.kept) {
+      const auto it = roles.find(s);
+      if (it != roles.end() && it->second == scheme::kMeshedByVolume) return false;
+    }
+    return true;
+  }
+
+  // The shared surfaces of `id` the choices so far fix, with the requests
+  // made of it in earlier rounds.
+  scheme::NeighbourMeshes neighbours_of(int id) const {
+    scheme::NeighbourMeshes n;
+    if (const auto it = yield_.find(id); it != yield_.end()) n = it->second;
+    for (const auto& shell : model_.volume(id).shells) {
+      for (const auto& use : shell) {
+        const auto it = roles_.find(use.surface);
+        if (it == roles_.end() || it->second.volume == id) continue;
+        if (it->second.scheme == scheme::kMeshedByVolume) {
+          n.made.insert(use.surface);
+        } else if (!it->second.takes_existing) {
+          n.kept.insert(use.surface);
+        }
+      }
+    }
+    return n;
+  }
+
   void choose_volume(int id) {
-    const scheme::VolumeView view{model_, id, nullptr, &job_};
+    const scheme::NeighbourMeshes neighbours = neighbours_of(id);
+    const scheme::VolumeView view{model_, id, nullptr, &job_, nullptr, &neighbours};
     const auto* pin = find_setting(settings_.volumes, id);
     // elements="wedge" / "mixed": only schemes that make wedges are candidates.
     const bool wedge = pin && pin->elements != io::ElementKind::Hex;
@@ -219,7 +313,11 @@ class Selector {
                                ") makes hexes only, but elements=\"" + kind + "\"");
       }
     }
-    Choice choice{3, id, evaluate(schemes, view), {}, {}, false, false};
+    // A round after a request asks every volume again; an answer depends
+    // only on the volume and what its neighbours fix.
+    auto& known = evaluated_[{id, neighbours.made, neighbours.kept}];
+    if (known.empty()) known = evaluate(schemes, view);
+    Choice choice{3, id, known, {}, {}, false, false};
     std::vector<const Candidate*> order;
     if (pin && pin->scheme != "auto") {
       const Candidate* c = find_candidate(choice.candidates, pin->scheme);
@@ -243,7 +341,15 @@ class Selector {
             job_.no_scheme_applies(id) + " (" + all_reasons(choice.candidates) + ")");
       }
     }
+    // Requests made of this volume in an earlier round (a later neighbour
+    // cannot do without meshing a shared surface, or without its surface
+    // scheme): the candidates that honour them come first.
+    if (const auto it = yield_.find(id); it != yield_.end() && !choice.pinned) {
+      std::stable_partition(order.begin(), order.end(),
+                            [&](const Candidate* c) { return honours(*c, view, it->second); });
+    }
     std::string conflicts;
+    std::vector<Request> asks;  // from the conflicts of the candidates passed over
     for (const Candidate* c : order) {
       const scheme::VolumeScheme* vs = registry_.volume_scheme(c->scheme);
       // The scheme's own plan from its applicable(), handed back.
@@ -252,7 +358,8 @@ class Selector {
       const scheme::SurfaceRoles roles = vs->roles(planned);
       const std::vector<int> taken = vs->takes_existing_mesh(planned);
       const std::set<int> takes(taken.begin(), taken.end());
-      std::string conflict = role_conflict(id, c->scheme, roles, takes);
+      Request ask;
+      std::string conflict = role_conflict(id, c->scheme, roles, takes, &ask);
       std::map<int, std::set<int>> waits = waits_with(id, roles);
       if (conflict.empty() && has_cycle(waits)) {
         conflict = "volume " + std::to_string(id) + " (" + c->scheme +
@@ -260,6 +367,7 @@ class Selector {
       }
       if (!conflict.empty()) {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
+        asks.push_back(ask);
         continue;
       }
       waits_for_ = std::move(waits);
@@ -280,16 +388,31 @@ class Selector {
         }
         roles_[surface] = {role, id, c->scheme, takes.count(surface) > 0};
       }
+      // A request this volume cannot honour without a neighbour's help (the
+      // candidate that honours it conflicts): passed on to that neighbour.
+      if (c != order.front() && yield_.count(id)) {
+        for (const Request& a : asks) request(a);
+      }
       choice.scheme = c->scheme;
       choice.reason = choice.pinned
                           ? "pinned at " + place(pin->where)
                           : "best applicable, score " + score_text(c->applicability.score);
+      if (const auto it = yield_.find(id);
+          it != yield_.end() && !choice.pinned && honours(*c, view, it->second))
+        choice.reason +=
+            " (planned around shared surface" + listed(it->second) + " for its neighbours)";
       if (!choice.pinned && c != order.front())
         choice.reason += " (better ones conflict: " + conflicts + ")";
       selection_.volumes.push_back(std::move(choice));
       return;
     }
-    throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
+    for (const Request& a : asks) request(a);
+    // A pin that contradicts every candidate is the input's fault; else the
+    // volume is refused like one no scheme applies to (plan lists it).
+    const bool pinned =
+        std::any_of(asks.begin(), asks.end(), [](const Request& a) { return a.pin; });
+    throw MeshingError(pinned ? ErrorCode::InvalidInput : ErrorCode::NotApplicable,
+                       EntityRef::volume(id),
                        "no applicable scheme fits its neighbours: " + conflicts);
   }
 
@@ -405,7 +528,10 @@ class Selector {
   const scheme::Settings job_;  ///< what every scheme is asked with
   SelectOptions options_;
   std::map<int, Role> roles_;
-  std::map<int, std::set<int>> waits_for_;  // volume -> volumes meshed before it
+  std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it
+  std::map<int, scheme::NeighbourMeshes> yield_;  // requests made of a volume
+  bool restart_ = false;                          // a request was added this round
+  std::map<std::tuple<int, std::set<int>, std::set<int>>, std::vector<Candidate>> evaluated_;
   Selection selection_;
 };
 

@@ -21,7 +21,8 @@
 /// whenever any of them changes layout or meaning; a plug-in built for
 /// another version is refused with a message, never called. 3: Settings
 /// and the scheme's own plan reach it through the views (docs/plugins.md).
-#define COOPERAGE_PLUGIN_ABI_VERSION 3
+/// 4: VolumeView::neighbours.
+#define COOPERAGE_PLUGIN_ABI_VERSION 4
 
 #define COOPERAGE_PLUGIN_EXPORT __attribute__((visibility("default")))
 

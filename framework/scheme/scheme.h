@@ -14,6 +14,7 @@
 #include "framework/scheme/settings.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,14 +42,28 @@ struct SurfaceView {
   const Settings& settings() const { return job ? *job : Settings::none(); }
 };
 
+/// What the schemes chosen for the neighbours fix about shared surfaces
+/// (the selector's choices so far): a scheme that can plan around them
+/// should, since the selector refuses a plan that contradicts them.
+struct NeighbourMeshes {
+  /// A neighbour meshes these itself (a sweep ends on them or imprints
+  /// them): this volume must take them as it finds them.
+  std::set<int> made;
+  /// A neighbour needs these from their surface scheme and does not take a
+  /// volume's mesh (a sweep's side): this volume must not mesh them itself.
+  std::set<int> kept;
+};
+
 /// A volume as a scheme sees it; `mesh` holds its meshed surfaces during
-/// mesh(); `job` and `plan` as in SurfaceView.
+/// mesh(); `job` and `plan` as in SurfaceView. `neighbours` is set by the
+/// selector during applicable() (null elsewhere: nothing known).
 struct VolumeView {
   const geom::Model& model;
   int volume_id = 0;
   const mesh::MeshDB* mesh = nullptr;
   const Settings* job = nullptr;
   const PlanData* plan = nullptr;
+  const NeighbourMeshes* neighbours = nullptr;
 
   const geom::Volume& volume() const { return model.volume(volume_id); }
   const Settings& settings() const { return job ? *job : Settings::none(); }

@@ -26,9 +26,33 @@ std::vector<P2> project_loop(const VolumeFacts& facts, const std::vector<UseFact
   return out;
 }
 
+// How far segment k of a sampled closed loop (from point k to k + 1) may
+// lie inside the curve it stands for: the sagitta of an arc through its
+// ends, L * turn / 8, with the turn the smaller of the polyline's turns at
+// its two ends (a corner at one end is the loop's, not the arc's), at most
+// 25 degrees (16 samples of a full circle turn by 22.5).
+std::vector<double> chord_sagittas(const std::vector<P2>& poly) {
+  const size_t n = poly.size();
+  std::vector<double> turn(n, 0.0), out(n, 0.0);
+  for (size_t k = 0; k < n; ++k) {
+    const P2 in = poly[k] - poly[(k + n - 1) % n];
+    const P2 on = poly[(k + 1) % n] - poly[k];
+    if (in.norm() > 0 && on.norm() > 0) {
+      const double c = std::clamp(in.normalized().dot(on.normalized()), -1.0, 1.0);
+      turn[k] = std::min(std::acos(c), 25.0 * 3.14159265358979323846 / 180.0);
+    }
+  }
+  for (size_t k = 0; k < n; ++k) {
+    const double len = (poly[(k + 1) % n] - poly[k]).norm();
+    out[k] = len * std::min(turn[k], turn[(k + 1) % n]) / 8.0;
+  }
+  return out;
+}
+
 // A cap's loops projected along the sweep, with their bounding box.
 struct Footprint {
   std::vector<std::vector<P2>> loops;
+  std::vector<std::vector<double>> sagittas;  ///< per segment: chord_sagittas()
   Eigen::AlignedBox2d box;
   double width = 0;  ///< twice the area over the perimeter: a strip's width, a disc's radius
 };
@@ -48,6 +72,7 @@ Footprint footprint_of(const VolumeFacts& facts, int cap, const geom::Vec3& u,
   for (const auto& loop : facts.face(cap)->loops) {
     f.loops.push_back(project_loop(facts, loop, u, v));
     const auto& poly = f.loops.back();
+    f.sagittas.push_back(chord_sagittas(poly));
     for (size_t i = 0; i < poly.size(); ++i) {
       f.box.extend(poly[i]);
       perimeter += (poly[(i + 1) % poly.size()] - poly[i]).norm();
@@ -75,16 +100,19 @@ bool inside(const Footprint& f, const P2& p) {
   return in;
 }
 
+// The distance from p to the footprint's curves, not to their chords:
+// each segment's distance less its sagitta (a lower bound).
 double distance(const Footprint& f, const P2& p) {
   double best = std::numeric_limits<double>::infinity();
-  for (const auto& poly : f.loops) {
+  for (size_t l = 0; l < f.loops.size(); ++l) {
+    const auto& poly = f.loops[l];
     for (size_t i = 0; i < poly.size(); ++i) {
       const P2& a = poly[i];
       const P2& b = poly[(i + 1) % poly.size()];
       const P2 ab = b - a;
       const double t =
           ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-      best = std::min(best, (a + t * ab - p).norm());
+      best = std::min(best, (a + t * ab - p).norm() - f.sagittas[l][i]);
     }
   }
   return best;
@@ -143,10 +171,15 @@ std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps
     bool cut = false;
     for (int o : caps) {
       if (o == c || cut) continue;
-      for (const auto& loop : footprint.at(o).loops) {
+      // Two samplings of one circle (a rim split into two curves on one cap,
+      // three on the other, where a neighbour's edge ends on it) differ by
+      // their chords' sagittas, 0.036 on a radius of 7.5: not a cut.
+      const Footprint& other = footprint.at(o);
+      for (size_t l = 0; l < other.loops.size() && !cut; ++l) {
+        const auto& loop = other.loops[l];
         for (size_t k = 0; k < loop.size() && !cut; ++k)
-          cut = reaches_inside(mine, loop[k], loop[(k + 1) % loop.size()], tol);
-        if (cut) break;
+          cut = reaches_inside(mine, loop[k], loop[(k + 1) % loop.size()],
+                               tol + other.sagittas[l][k]);
       }
     }
     if (cut) out.push_back(c);

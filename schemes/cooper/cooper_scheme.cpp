@@ -46,6 +46,7 @@ std::shared_ptr<const CooperPlan> CooperScheme::plan(const scheme::VolumeView& v
   in.elements = elements_of(settings, view.volume_id);
   in.polygon_mesher = polygon_mesher(in.elements) != nullptr;
   in.settings = &settings;
+  if (view.neighbours) in.neighbours = *view.neighbours;
   auto p = std::make_shared<CooperPlan>();
   p->plan = plan_volume(view.model, view.volume_id, *registry_, in);
   return p;

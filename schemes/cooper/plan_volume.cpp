@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <iterator>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace cooperage::cooper {
@@ -201,6 +202,22 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   return p;
 }
 
+// Shared surfaces the plan contradicts the neighbours on: one a neighbour
+// meshes itself that this plan does not take as a cap meshed beforehand
+// (weight 2: that neighbour usually has no other way), or one a neighbour
+// keeps for its surface scheme that this plan meshes (weight 1: the
+// selector may ask that neighbour to take the mesh instead). The selector
+// refuses such a plan as it stands (docs/design.md, "Volumes that wait for
+// a neighbour"); 0 when nothing is known of the neighbours.
+int neighbour_conflicts(const VolumePlan& p, const scheme::NeighbourMeshes& n) {
+  int count = 0;
+  for (int s : n.made) count += p.facts.face(s) && !p.roles.scheme.count(s) ? 2 : 0;
+  for (int s : n.kept) {
+    count += std::binary_search(p.roles.by_volume.begin(), p.roles.by_volume.end(), s) ? 1 : 0;
+  }
+  return count;
+}
+
 // Of two plans for one sorting, the one leaving fewer shared caps to the
 // sweep, then meshing more caps by their surface schemes, then the first.
 bool better(const VolumePlan& a, const VolumePlan& b) {
@@ -291,12 +308,20 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
       first_failure = p.why;
     }
   };
-  // 1. One barrel between a pair of caps.
+  const auto conflicts = [&](const VolumePlan& p) { return neighbour_conflicts(p, in.neighbours); };
+  // 1. One barrel between a pair of caps: the first that fits the
+  // neighbours (a shared cap they mesh is the source, whichever way the
+  // sorting alone would sweep), else the first with the fewest conflicts.
   std::string pair_why;
+  std::optional<VolumePlan> pair;
   for (const CapCandidate& c :
        pair_candidates(facts, in.hints.sources, in.hints.targets, pair_why)) {
     VolumePlan p = evaluate(model, registry, facts, in, c);
-    if (p.ok && p.one_barrel()) return p;
+    if (p.ok && p.one_barrel()) {
+      if (conflicts(p) == 0) return p;
+      if (!pair || conflicts(p) < conflicts(*pair)) pair = std::move(p);
+      continue;
+    }
     if (!p.ok) note(p);
   }
   if (!pair_why.empty() && deepest < 1) {
@@ -324,13 +349,15 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
         const double a = alignment(p);
         const bool clearly_better = a > best_alignment + 1e-6;
         const bool tie = std::abs(a - best_alignment) <= 1e-6;
-        if (!best || clearly_better || (tie && better(p, *best))) {
-          best_alignment = std::max(a, best_alignment);
+        const int k = conflicts(p), best_k = best ? conflicts(*best) : 0;
+        if (!best || k < best_k || (k == best_k && (clearly_better || (tie && better(p, *best))))) {
+          best_alignment = k < best_k ? a : std::max(a, best_alignment);
           best = std::move(p);
         }
       }
     }
-    if (best) return *best;
+    if (best && (!pair || conflicts(*best) < conflicts(*pair))) return *best;
+    if (pair) return *pair;
   }
   // 3. A curved sweep with several barrels.
   if (!in.hints.direction) {
@@ -341,7 +368,9 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
       VolumePlan p = evaluate(model, registry, facts, in, c);
       last_label = c.label;
       if (!p.ok) continue;
-      if (!best || better(p, *best)) best = std::move(p);
+      if (!best || conflicts(p) < conflicts(*best) ||
+          (conflicts(p) == conflicts(*best) && better(p, *best)))
+        best = std::move(p);
     }
     if (best) return *best;
   }

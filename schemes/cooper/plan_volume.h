@@ -9,6 +9,7 @@
 #include "schemes/cooper/barrel_constraints.h"
 #include "schemes/cooper/cap_roles.h"
 #include "schemes/cooper/elements.h"
+#include "framework/scheme/scheme.h"
 #include "framework/scheme/settings.h"
 
 #include <optional>
@@ -34,6 +35,10 @@ struct PlanInputs {
   /// The job's settings, passed to the side and cap schemes' applicable()
   /// (submap's vertex types); null: defaults.
   const scheme::Settings* settings = nullptr;
+  /// Shared surfaces the neighbours' schemes already mesh or keep (the
+  /// selector): of the plans that work, one that takes the former as caps
+  /// meshed beforehand and meshes none of the latter is chosen first.
+  scheme::NeighbourMeshes neighbours;
 };
 
 struct VolumePlan {

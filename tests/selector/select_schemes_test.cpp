@@ -4,11 +4,13 @@
 #include "framework/geometry/occ/workbench.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
+#include "support/mesh_checks.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
+#include <map>
 #include <memory>
 #include <random>
 #include <set>
@@ -433,6 +435,73 @@ TEST(Selector, MapAndSubmapOnOneSharedRectangleAgree) {
     for (const auto& h : r.mesh.volume(v.id).hexes) used.insert(h.begin(), h.end());
     for (int n : face_nodes)
       EXPECT_TRUE(used.count(n)) << "volume " << v.id << " misses node " << n;
+  }
+}
+
+// Three 4 x 4 x 2 blocks stacked along z (issue 15: "two sweeps whose
+// target is the same shared surface"). The bottom one carries a 1 x 1 x 1
+// foot, so its top is imprinted by the foot whichever way it sweeps: its
+// volume meshes that face itself. The middle block must then take that
+// mesh as its source and end on the face above, which the top block takes
+// in turn. In one order of the volumes the middle and top blocks were
+// chosen first (map, or a sweep towards the foot's block) and the bottom
+// one was refused; asked to plan around the face, they turn. Built in
+// both orders and mirrored in z; the mesh is checked from geometry:
+// conformal, the blocks' volume, no poor hex.
+TEST(Selector, StackedSweepsTurnSoEachSharedFaceIsMeshedOnce) {
+  for (const bool mirrored : {false, true}) {
+    for (const bool foot_first : {false, true}) {
+      SCOPED_TRACE(std::string(mirrored ? "mirrored, " : "") +
+                   (foot_first ? "foot block first" : "foot block last"));
+      occ::Workbench bench;
+      auto footed = [&] {
+        bench.brick("base", {0, 0, mirrored ? -2.0 : 0.0}, {4, 4, 2});
+        bench.brick("foot", {1.5, 1.5, mirrored ? 0.0 : -1.0}, {1, 1, 1});
+        bench.fuse("footed", {"base", "foot"});
+      };
+      if (foot_first) footed();
+      bench.brick("top", {0, 0, mirrored ? -6.0 : 4.0}, {4, 4, 2});
+      bench.brick("middle", {0, 0, mirrored ? -4.0 : 2.0}, {4, 4, 2});
+      if (!foot_first) footed();
+      const geom::Model model = bench.build_model();
+      ASSERT_EQ(model.volumes().size(), 3u);
+      Fixture f;
+      const io::MeshSettings settings = sized(0.5);
+      SelectOptions options;
+      options.refuse_per_volume = true;
+      const Selection s = select_schemes(model, f.registry, settings, options);
+      EXPECT_TRUE(s.refused.empty()) << s.refused.begin()->second.message;
+      ASSERT_EQ(s.volumes.size(), 3u);
+
+      const pipeline::MeshResult r =
+          pipeline::mesh_model(model, settings, f.registry, mesh_options(3));
+      double volume = 0, worst = 1;
+      size_t hexes = 0;
+      for (const auto& [id, v] : r.mesh.volumes()) {
+        for (const auto& h : v.hexes) {
+          const auto p = testing::hex_points(r.mesh, h);
+          volume += testing::hex_volume(p);
+          worst = std::min(worst, testing::hex_scaled_jacobian(p));
+          ++hexes;
+        }
+      }
+      EXPECT_GT(hexes, 0u);
+      EXPECT_NEAR(volume, 3 * 32.0 + 1.0, 0.005 * 97.0);
+      EXPECT_GE(worst, 0.2);
+      // Conformal: no duplicate node, no hex face used thrice, and the faces
+      // used once are exactly the quads of the outer boundary.
+      EXPECT_EQ(testing::duplicate_node_pairs(r.mesh, 1e-9), 0);
+      size_t once = 0;
+      for (const auto& [key, n] : testing::hex_face_counts(r.mesh)) {
+        EXPECT_LE(n, 2);
+        once += n == 1 ? 1 : 0;
+      }
+      size_t outer = 0;
+      for (const auto& surface : model.surfaces()) {
+        if (surface.volumes.size() == 1) outer += r.mesh.surface(surface.id).quads.size();
+      }
+      EXPECT_EQ(once, outer);
+    }
   }
 }
 

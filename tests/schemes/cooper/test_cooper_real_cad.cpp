@@ -14,6 +14,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <set>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -162,6 +165,102 @@ TEST(CooperRealCad, PyoccFaceRecognitionMeshesAtEverySize) {
     std::printf("[cooper real CAD] pyocc size %g: %zu hexes, min scaled Jacobian %.4f\n", size,
                 hexes, worst);
   }
+}
+
+// gmsh_as1-tu-203 at D/40 as `cooperage mesh` runs it (decomposed into 20
+// volumes). Bolt heads whose underside rim a bracket's edge splits into
+// three curves were counted as imprinted by their own top (two samplings
+// of one circle, 0.036 apart at radius 7.5), so two sweeps meshed the
+// underside and the brackets' feet (volumes 10, 19) were refused; the
+// plate's failure (a hex inverted where the nuts straddle the feet's
+// edges) took volumes 7, 9, 16, 18 with it: 13 of 20 meshed. Now 19 do:
+// only the plate is refused, because the feet's undersides (surfaces 103,
+// 115) are imprinted by both sweeps, the bolt heads' outlines from above
+// and the nuts' from below, which no choice of roles resolves. The
+// volumes that mesh are all hex, conformal among themselves, within
+// 0.5 % of their CAD volumes, with min scaled Jacobian at least 0.2.
+TEST(CooperRealCad, AssemblyAs1MeshesEveryVolumeButThePlate) {
+  const std::string path = real_cad("gmsh_as1-tu-203.stp");
+  if (!fs::exists(path))
+    GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  pipeline::ModelJobOptions job_options;
+  job_options.size = pipeline::load_any(path).box().diagonal() / 40;  // 263.7 / 40
+  const io::Job job = pipeline::model_job(path, job_options);
+  const geom::Model model =
+      pipeline::build_decomposed_geometry(job, registry, selector::planner()).model;
+  ASSERT_EQ(model.volumes().size(), 20u);
+  pipeline::MeshOptions options = selector::mesh_options();
+  options.allow_partial = true;
+  options.threads = 1;
+  const pipeline::MeshResult r = pipeline::mesh_model(model, *job.mesh, registry, options);
+  int meshed = 0;
+  for (const auto& v : r.verdicts) {
+    if (v.entity.dim != 3) continue;
+    const bool ok = v.state == pipeline::Verdict::State::Meshed;
+    meshed += ok ? 1 : 0;
+    if (!ok) {
+      // The plate: the underside of a foot is imprinted by both sweeps.
+      EXPECT_NE(v.reason.find("would be meshed by both"), std::string::npos) << v.reason;
+      EXPECT_EQ(model.volume(v.entity.id).shells.front().size(), 38u) << v.reason;
+    }
+  }
+  EXPECT_EQ(meshed, 19);
+  for (const auto& m : r.measures) {
+    if (m.entity.dim == 3) {
+      EXPECT_LT(m.deviation(), 0.005) << m.mesh << " vs " << m.cad;
+    }
+  }
+  // The feet (16 surfaces each) have a bolt head's rim tangent to their
+  // edge (the head centred 7.5 from x = 55): their top face has corners of
+  // 0 degrees there, which bound a hex's quality, not the sweep (min SJ
+  // 0.04 at D/40; --dim 2 gives 0.08 on that face). Positive there, at
+  // least 0.2 everywhere else.
+  double worst = 1, worst_foot = 1;
+  size_t hexes = 0;
+  for (const auto& b : r.quality.blocks) {
+    if (b.dim != 3) continue;
+    EXPECT_EQ(b.type, quality::ElementType::Hex);
+    const auto* sj = b.find("scaled_jacobian");
+    ASSERT_NE(sj, nullptr);
+    const bool foot = model.volume(b.id).shells.front().size() == 16;
+    (foot ? worst_foot : worst) = std::min(foot ? worst_foot : worst, sj->min);
+    hexes += b.count;
+  }
+  EXPECT_GE(worst, 0.2);
+  EXPECT_GT(worst_foot, 0.0);
+  // Conformal: no hex face is used by more than two hexes, and a face used
+  // by one lies on a surface, never inside the assembly.
+  std::map<std::array<int, 4>, int> faces;
+  static const int kSide[6][4] = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                  {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  for (const auto& [id, v] : r.mesh.volumes()) {
+    for (const auto& h : v.hexes) {
+      for (const auto& f : kSide) {
+        std::array<int, 4> key{h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+        std::sort(key.begin(), key.end());
+        ++faces[key];
+      }
+    }
+  }
+  std::set<std::array<int, 4>> on_surfaces;
+  for (const auto& [id, s] : r.mesh.surfaces()) {
+    for (auto q : s.quads) {
+      std::sort(q.begin(), q.end());
+      on_surfaces.insert(q);
+    }
+  }
+  int inner_once = 0, thrice = 0;
+  for (const auto& [key, n] : faces) {
+    thrice += n > 2 ? 1 : 0;
+    inner_once += n == 1 && !on_surfaces.count(key) ? 1 : 0;
+  }
+  EXPECT_EQ(thrice, 0);
+  EXPECT_EQ(inner_once, 0);
+  std::printf(
+      "[cooper real CAD] as1-tu-203 D/40: %d of 20 volumes, %zu hexes, min SJ %.4f (feet %.4f)\n",
+      meshed, hexes, worst, worst_foot);
 }
 
 }  // namespace
