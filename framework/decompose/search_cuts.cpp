@@ -82,14 +82,27 @@ std::string CutSearch::failure() const {
            "layer (" +
            number(options_.size) + ") thick";
   }
-  if (!conflict_.empty()) out += "; " + conflict_;
+  if (!conflict_.empty()) {
+    out += "; " + conflict_;
+    if (conflicts_ > 1)
+      out += " (nor do " + std::to_string(conflicts_ - 1) + " other sets of sweepable pieces)";
+  }
   if (!best_partial_.empty()) out += "; " + best_partial_;
   if (conflict_.empty() && best_partial_.empty()) out += "; no cut leaves sweepable pieces";
   return out;
 }
 
+std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
+                                const Context& context) {
+  // The pieces of one split share their cut faces already; among other
+  // solids they are imprinted and merged with them first.
+  if (!context) return check_(alone ? *alone : pieces.build_model(true));
+  return check_(context(pieces).build_model(true));
+}
+
 std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int depth,
-                                          const std::vector<CutCandidate>& inherited) {
+                                          const std::vector<CutCandidate>& inherited,
+                                          const Context& context) {
   const geom::Model model = solid.build_model(false);
   if (model.volumes().size() != 1) return std::nullopt;
   if (best_scheme(model, 1, registry_, options_.settings).ok) return SolidPlan{solid, {}};
@@ -154,11 +167,15 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
   };
   std::stable_sort(complete.begin(), complete.end(), by_score);
   std::stable_sort(partial.begin(), partial.end(), by_score);
+  // A piece's cuts are checked among the solids around it: the first of
+  // them whose pieces plan alone may conflict with a neighbour where the
+  // next one does not.
   for (Evaluated* e : complete) {
-    const std::string reason = check_(e->model);
+    const std::string reason = check_in(e->pieces, &e->model, context);
     if (reason.empty()) {
       return SolidPlan{e->pieces, {applied(*e, depth, e->outcome.thinnest * size)}};
     }
+    ++conflicts_;
     log::info("decompose: " + e->candidate->through + " does not plan: " + reason);
     if (conflict_.empty()) {
       conflict_ = "the best cut with sweepable pieces, " + e->candidate->through + " (" +
@@ -182,9 +199,23 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     const Evaluated& e = *partial[static_cast<size_t>(b)];
     SolidPlan plan{e.pieces, {applied(e, depth, e.outcome.thinnest * size)}};
     bool ok = true;
+    // Last piece first, so that replacing one by its pieces keeps the
+    // indices of those still to do.
     for (int k = e.pieces.size() - 1; k >= 0 && ok; --k) {
       if (e.verdicts[static_cast<size_t>(k)].ok) continue;
-      auto sub = solve(e.pieces.only(k), depth + 1, candidates);
+      // Piece k's cuts must plan among the pieces settled so far: those
+      // with a scheme and those cut already (after k); the pieces before it
+      // that still need cuts are left out until their turn.
+      const occ::SolidPieces settled = plan.pieces;
+      const Evaluated* parent = &e;
+      const Context inner = [settled, parent, k, &context](const occ::SolidPieces& sub) {
+        occ::SolidPieces all = settled.replace(k, sub);
+        for (int j = k - 1; j >= 0; --j) {
+          if (!parent->verdicts[static_cast<size_t>(j)].ok) all = all.replace(j, {});
+        }
+        return context ? context(all) : all;
+      };
+      auto sub = solve(e.pieces.only(k), depth + 1, candidates, inner);
       if (!sub) {
         ok = false;
         break;
@@ -193,8 +224,11 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       plan.cuts.insert(plan.cuts.end(), sub->cuts.begin(), sub->cuts.end());
     }
     if (!ok) continue;
-    const std::string reason = check_(plan.pieces.build_model(true));
+    const std::string reason = check_in(plan.pieces, nullptr, context);
     if (reason.empty()) return plan;
+    ++conflicts_;
+    log::info("decompose: the cuts of " + e.candidate->through +
+              " do not plan together: " + reason);
     if (conflict_.empty()) conflict_ = "the cuts found do not plan together: " + reason;
   }
   return std::nullopt;

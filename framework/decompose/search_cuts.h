@@ -6,6 +6,7 @@
 #include "framework/decompose/cut_candidates.h"
 #include "framework/decompose/decompose.h"
 
+#include <functional>
 #include <optional>
 
 namespace cooperage::decompose {
@@ -24,17 +25,29 @@ class CutSearch {
       : registry_(registry), check_(check), options_(options) {}
 
   /// The decomposition of `solid`, or nullopt (then failure() says why).
-  std::optional<SolidPlan> solve(const occ::SolidPieces& solid) { return solve(solid, 0, {}); }
+  std::optional<SolidPlan> solve(const occ::SolidPieces& solid) {
+    return solve(solid, 0, {}, nullptr);
+  }
 
   int tried() const { return tried_; }
   /// Why the search failed, for a person.
   std::string failure() const;
 
+  /// The solids a piece's own cuts must plan among: given the pieces of the
+  /// solid being cut, all solids settled so far (the other pieces of the
+  /// cuts above it, those still without a scheme left out). Null: the
+  /// pieces alone (the volume itself).
+  using Context = std::function<occ::SolidPieces(const occ::SolidPieces&)>;
+
  private:
   /// `inherited`: the candidates of the solids this one was cut from (the
   /// part's own faces extended, which a piece no longer has as faces).
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid, int depth,
-                                 const std::vector<CutCandidate>& inherited);
+                                 const std::vector<CutCandidate>& inherited,
+                                 const Context& context);
+  /// "" when `pieces` plan among the solids of `context`, else the reason.
+  std::string check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
+                       const Context& context);
 
   const scheme::Registry& registry_;
   const ModelCheck& check_;
@@ -43,6 +56,7 @@ class CutSearch {
   int crossing_ = 0;          ///< candidates crossing the volume by a layer on each side
   std::string best_partial_;  ///< what the best cut at depth 0 left unmeshable
   std::string conflict_;      ///< why the first complete cut did not plan
+  int conflicts_ = 0;         ///< sets of sweepable pieces that did not plan
 };
 
 }  // namespace cooperage::decompose

@@ -197,6 +197,21 @@ void make_charts(SweepState& s) {
     Vec3 d = st.to_lower.to_centre - st.to_lower.from_centre;
     if (!(d.norm() > 0)) fail(s.vid, s.barrel_name(b) + ": its two rings have one centre");
     d.normalize();
+    // A barrel that turns back (a ring swept half a turn or more, from one
+    // end wall round to the other) has its ring centres side by side or
+    // behind the way its ribs leave: a chart across that line sees the upper
+    // cap edge on or from behind, and orders its elements at random or
+    // inside out. Such a chart faces the upper ring instead, the way the
+    // ribs leave it.
+    Vec3 leave = Vec3::Zero();
+    for (const auto& rib : st.ribs) {
+      if (rib.size() > 1) leave += s.db.node(rib[1]) - s.db.node(rib[0]);
+    }
+    const Vec3 area = pseudo_area(up.data(), up.size(), st.loop_starts);
+    if (area.norm() > 0 && (std::abs(area.normalized().dot(d)) < 0.5 || d.dot(leave) <= 0)) {
+      d = area.normalized();
+      if (d.dot(leave) < 0) d = -d;
+    }
     Vec3 e = Vec3::UnitX();
     if (std::abs(d.x()) > 0.6)
       e = std::abs(d.y()) < std::abs(d.z()) ? Vec3::UnitY() : Vec3::UnitZ();

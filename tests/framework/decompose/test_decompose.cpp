@@ -5,6 +5,8 @@
 #include "framework/decompose/decompose.h"
 
 #include "framework/core/error.h"
+#include "framework/decompose/surface_fit.h"
+#include "framework/decompose/volume_samples.h"
 #include "framework/geometry/occ/solid_pieces.h"
 #include "framework/geometry/occ/workbench.h"
 #include "schemes/builtin_schemes.h"
@@ -204,6 +206,84 @@ TEST_F(Boxes, OnlyTheVolumesWithoutASchemeAreCut) {
   EXPECT_EQ(d.model.volume(1).name, "b");
   EXPECT_EQ(d.model.volume(2).name, "t.1");
   EXPECT_EQ(d.model.volume(6).name, "c");
+}
+
+// Applies to a convex volume of at most seven planar faces: a box, or a box
+// whose one face is split where two neighbours meet on it. Imprinting more
+// neighbours on a face takes the scheme away, as a conflict between the
+// pieces of neighbouring cuts takes a real sweep's.
+class ConvexScheme final : public scheme::VolumeScheme {
+ public:
+  std::string_view name() const override { return "convex"; }
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
+    const auto surfaces = view.model.surfaces_of(view.volume_id);
+    if (surfaces.size() > 7) return scheme::Applicability::no("more than seven faces");
+    std::vector<geom::Vec3> points;
+    for (int c : curves_of(view.model, view.volume_id)) {
+      const auto& curve = view.model.curve(c);
+      const auto [t0, t1] = curve.geometry->range();
+      points.push_back(curve.geometry->point(t0));
+      points.push_back(curve.geometry->point(t1));
+    }
+    for (int s : surfaces) {
+      const auto plane = plane_of(view.model.surface(s));
+      if (!plane) return scheme::Applicability::no("surface " + std::to_string(s) + " is curved");
+      double lo = 0, hi = 0;
+      for (const auto& p : points) {
+        lo = std::min(lo, plane->normal.dot(p - plane->point));
+        hi = std::max(hi, plane->normal.dot(p - plane->point));
+      }
+      if (lo < -1e-9 && hi > 1e-9) return scheme::Applicability::no("not convex");
+    }
+    return scheme::Applicability::yes(1.0);
+  }
+  void constrain(const scheme::VolumeView&, intervals::IntervalProblem&) const override {}
+  scheme::SurfaceRoles roles(const scheme::VolumeView&) const override { return {}; }
+  scheme::EntityMesh mesh(const scheme::VolumeView&, const scheme::MeshParams&) const override {
+    return {};
+  }
+};
+
+// A two-step stair: no single cut leaves convex pieces. Of the first cut's
+// partial pieces (the base, y < 1.2, and an L above it) the L has two cuts
+// into convex pieces; the thicker one, x = 1, puts two pieces on the base,
+// whose top then holds three faces (eight in all), so it does not plan with
+// the base; the other one, y = 1.95, does.
+TEST(DecomposeSearch, APieceWhoseBestCutConflictsWithItsNeighbourTakesTheNextCut) {
+  scheme::Registry registry;
+  registry.add(std::make_unique<ConvexScheme>());
+  occ::Workbench bench;
+  bench.prism("stair",
+              {{0, 0, 0},
+               {3, 0, 0},
+               {3, 1.2, 0},
+               {2, 1.2, 0},
+               {2, 1.95, 0},
+               {1, 1.95, 0},
+               {1, 3, 0},
+               {0, 3, 0}},
+              {}, {0, 0, 1});
+  // The planner's verdict: every piece keeps its scheme once imprinted.
+  const ModelCheck conformal = [&](const geom::Model& m) {
+    const std::vector<int> lost = unmeshable_volumes(m, registry);
+    return lost.empty() ? std::string()
+                        : "volume " + std::to_string(lost.front()) + " lost its scheme";
+  };
+  DecomposeOptions options;
+  options.size = 0.5;
+  options.branches = 1;  // only the best first cut: its piece must find its own way
+  const Decomposed d =
+      decompose(occ::SolidPieces::of(bench), bench.build_model(), registry, conformal, options);
+  ASSERT_EQ(d.report.volumes.size(), 1u);
+  const auto& cuts = d.report.volumes[0].cuts;
+  ASSERT_EQ(cuts.size(), 2u);
+  EXPECT_EQ(cuts[1].depth, 1);
+  // The second cut is the plane y = 1.95, not x = 1.
+  EXPECT_NEAR(std::abs(cuts[1].surface.direction.normalized().y()), 1.0, 1e-9);
+  EXPECT_NEAR(signed_distance(cuts[1].surface, {0.5, 1.95, 0.5}), 0.0, 1e-9);
+  EXPECT_EQ(d.model.volumes().size(), 3u);
+  EXPECT_NEAR(total_volume(d.model), 3.6 + 1.5 + 1.05, 1e-9);
+  EXPECT_TRUE(conformal(d.model).empty()) << conformal(d.model);
 }
 
 // The built-in schemes: Fig. 3a is refused whole by every scheme, and the

@@ -201,6 +201,29 @@ TEST(Cooper, CurvedAxisSweepGoesAroundTheArc) {
   RecordProperty("min_scaled_jacobian", std::to_string(sj));
 }
 
+// A right triangle (r 5..10 at z = 0, apex at r 5, z 5) revolved by more
+// than half a turn: no straight axis sweeps it (the section ends in an
+// edge), so it is swept round from one end wall to the other, whose ring
+// centres lie beside each other or behind the way the ribs leave. The
+// barrel's chart must face the source the way the ribs leave it (on main
+// the chart across the centres gave every hex of layer 0 inside out).
+TEST(Cooper, ASweepRoundMoreThanHalfATurnKeepsItsElementsRightSideOut) {
+  const double pi = 3.14159265358979323846;
+  for (const double turn : {190.0, 210.0, 270.0}) {
+    occ::Workbench wb;
+    wb.revolve("ring", {{5, 0, 0}, {10, 0, 0}, {5, 0, 5}}, {0, 0, 0}, {0, 0, 1}, turn);
+    const geom::Model model = wb.build_model();
+    const auto registry = with_cooper();
+    const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
+    ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << turn;
+    expect_conformal(r.mesh);
+    EXPECT_GT(min_scaled_jacobian(r.mesh), 0.1) << turn;
+    // Pappus: the triangle's area 12.5 times the path of its centroid (r 20/3).
+    const double exact = 12.5 * (20.0 / 3.0) * turn * pi / 180.0;
+    EXPECT_NEAR(total_hex_volume(r.mesh), exact, 0.01 * exact) << turn;
+  }
+}
+
 // A 6 x 4 x 2 plate with a square hole whose +x side is sloped (x = 6 at z = 0
 // to x = 5 at z = 2): caps of different size (volume 48 - 2 - 4 = 42).
 void sloped_plate(occ::Workbench& wb) {
