@@ -157,7 +157,7 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
                         "-seconds",
                         seconds.c_str(),
                         "-ratioGap",
-                        "0.01",
+                        "0.02",
                         "-allowableGap",
                         "1e-9",
                         "-increment",

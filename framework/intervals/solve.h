@@ -36,7 +36,11 @@
 // count (every free column at the same even value near the median target,
 // if that satisfies the component) is passed to CBC as a MIP start. CBC runs
 // through its standard driver (CbcMain0/CbcMain1: preprocessing, cuts,
-// heuristics), silenced. When it hits max_seconds with a solution, that
+// heuristics), silenced, and stops once its solution is proven within 2 %
+// of the optimum's cost (CBC's ratio gap): on the 290-column component of a
+// 137-face cylinder head, proving 1 % took twice as long (4.7 s of CPU
+// against 2.5) for a solution 0.27 % cheaper, a difference of one interval
+// on a few curves. When it hits max_seconds with a solution, that
 // solution is used and a warning logged; without one, solve() throws
 // Infeasible saying the limit was reached.
 //

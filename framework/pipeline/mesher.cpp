@@ -334,7 +334,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   }
 
   // Never hand back inverted elements silently.
-  result.quality = assess_quality(result.mesh, model, {}, &known);
+  result.quality = assess_quality(result.mesh, model, options.quality_checks, &known);
   known = {};
   for (const auto& block : result.quality.blocks) {
     const auto* sj = block.find("scaled_jacobian");
@@ -437,7 +437,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
     result.mesh = keep_entities(result.mesh, model, dim == 3 ? good : std::set<int>{},
                                 dim == 3 ? std::set<int>{} : good);
     result.mesh_replaced = true;
-    result.quality = assess_quality(result.mesh, model, {});
+    result.quality = assess_quality(result.mesh, model, options.quality_checks);
   }
   lap("quality");
   beside.wait();  // before `result` leaves this function
@@ -532,15 +532,12 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
       if (t.joinable()) t.join();
     }
   } join_preload{preload};
+  // The mesher's quality report evaluates the journal's checks too, taking
+  // the scaled Jacobians the schemes computed (one evaluation per metric).
+  opts.quality_checks = job.quality;
   result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
   result.stages.insert(result.stages.end(), result.mesh.stages.begin(), result.mesh.stages.end());
-  stage_start = Clock::now();
-  // The mesher's report already has the scaled Jacobian of every block;
-  // evaluate again only when the journal checks metrics.
-  result.quality = job.quality.empty()
-                       ? result.mesh.quality
-                       : assess_quality(result.mesh.mesh, result.model, job.quality);
-  if (!job.quality.empty()) result.stages.push_back({"quality checks", seconds_since(stage_start)});
+  result.quality = result.mesh.quality;
   const bool deviates =
       std::any_of(result.mesh.verdicts.begin(), result.mesh.verdicts.end(),
                   [](const Verdict& v) { return v.state == Verdict::State::Deviates; });

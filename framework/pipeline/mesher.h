@@ -41,6 +41,10 @@ struct MeshOptions {
   /// Keep what meshed when some volumes (surfaces, in 2D) cannot be meshed
   /// or fail the volume check, instead of throwing; see MeshResult::verdicts.
   bool allow_partial = false;
+  /// Checks the quality report evaluates along with every block's scaled
+  /// Jacobian (a journal's <quality>; their metrics too), so that no
+  /// metric is computed twice: MeshResult::quality carries their outcomes.
+  std::vector<io::QualityCheck> quality_checks;
   /// Called as work advances: stage name, items done, items in the stage.
   std::function<void(const std::string& stage, std::size_t done, std::size_t total)> progress;
   /// Optional: called once with the finished mesh, as a task beside the

@@ -125,5 +125,40 @@ TEST(CooperQualityCarried, KnownValuesAreTakenOnlyWhenComplete) {
                      pipeline::assess_quality(run.mesh, model, {}), "incomplete");
 }
 
+// A journal's checks are evaluated by the run's one report (MeshOptions::
+// quality_checks), the scaled Jacobian taken from cooper: their outcomes
+// are those of a report computed afresh from the finished mesh.
+TEST(CooperQualityCarried, JournalChecksCountTheSameOnTheCarriedValues) {
+  occ::Workbench wb;
+  parts::plate_three_round_holes(wb);
+  const geom::Model model = wb.build_model();
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  io::MeshSettings settings;
+  settings.size = 0.3;
+  std::vector<io::QualityCheck> checks(3);
+  checks[0].metric = "scaled_jacobian";
+  checks[0].min = 0.97;  // some hexes of the holes' rings fall below
+  checks[0].action = io::QualityCheck::Action::Fail;
+  checks[1].metric = "scaled_jacobian";
+  checks[1].min = 0.0;
+  checks[2].metric = "skew";
+  checks[2].max = 0.1;
+  pipeline::MeshOptions options = selector::mesh_options();
+  options.quality_checks = checks;
+  const pipeline::MeshResult run = pipeline::mesh_model(model, settings, registry, options);
+  const pipeline::QualityReport fresh = pipeline::assess_quality(run.mesh, model, checks);
+  expect_same_report(run.quality, fresh, "with checks");
+  ASSERT_EQ(run.quality.checks.size(), 3u);
+  for (size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(run.quality.checks[c].violations, fresh.checks[c].violations) << "check " << c;
+    EXPECT_EQ(run.quality.checks[c].failed, fresh.checks[c].failed) << "check " << c;
+  }
+  EXPECT_GT(run.quality.checks[0].violations, 0u);  // the check has something to count
+  EXPECT_TRUE(run.quality.failed());
+  EXPECT_EQ(run.quality.checks[1].violations, 0u);
+  ASSERT_EQ(run.quality.blocks.front().metrics.size(), 2u);  // scaled_jacobian, skew
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
