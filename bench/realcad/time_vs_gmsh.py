@@ -11,7 +11,8 @@ For each file, at size D/DIV (D the bounding-box diagonal, as run_realcad.py):
     loaded machine changes the numbers less than wall time would. A refusal
     counts too: a user waits for it as for a mesh.
   * Gmsh (Debian's python3-gmsh, in a child /usr/bin/python3): import the
-    file with OCC, Mesh.MeshSizeMin = Max = S, one thread, generate(3) (tets,
+    file with OCC, Mesh.MeshSizeMin = Max = D/DIV with D from Gmsh's own
+    bounding box (its import may change the length unit), one thread, generate(3) (tets,
     the fallback a user has); its child CPU seconds, import included as in
     Cooperage's, minus those of a run that only starts Python and Gmsh
     (an interpreter's start-up is not Gmsh's; Cooperage's own start-up is
@@ -33,13 +34,16 @@ PYTHON = "/usr/bin/python3"
 
 GMSH_SCRIPT = r"""
 import sys, gmsh
-path, size, mesh = sys.argv[1], float(sys.argv[2]), sys.argv[3] == "1"
+path, div, mesh = sys.argv[1], float(sys.argv[2]), sys.argv[3] == "1"
 gmsh.initialize(["-noenv"])
 gmsh.option.setNumber("General.Terminal", 0)
 gmsh.option.setNumber("General.NumThreads", 1)
 if mesh:
     gmsh.model.occ.importShapes(path)
     gmsh.model.occ.synchronize()
+    # D/div in Gmsh's own length unit (it may scale the file's on import)
+    x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(-1, -1)
+    size = ((x1 - x0) ** 2 + (y1 - y0) ** 2 + (z1 - z0) ** 2) ** 0.5 / div
     gmsh.option.setNumber("Mesh.MeshSizeMin", size)
     gmsh.option.setNumber("Mesh.MeshSizeMax", size)
     gmsh.model.mesh.generate(3)
@@ -103,8 +107,8 @@ def main():
                                       f"/tmp/time_vs_gmsh_{os.getpid()}.vtu",
                                       "--threads", "1", "-q"], args.timeout)
             row.append((code, cpu))
-        _, start_cpu, _ = child_cpu([PYTHON, "-c", GMSH_SCRIPT, path, repr(size), "0"], args.timeout)
-        gcode, gcpu, gout = child_cpu([PYTHON, "-c", GMSH_SCRIPT, path, repr(size), "1"], args.timeout)
+        _, start_cpu, _ = child_cpu([PYTHON, "-c", GMSH_SCRIPT, path, repr(args.div), "0"], args.timeout)
+        gcode, gcpu, gout = child_cpu([PYTHON, "-c", GMSH_SCRIPT, path, repr(args.div), "1"], args.timeout)
         gmsh_s = max(gcpu - start_cpu, 1e-3)
         tets = gout.strip().splitlines()[-1] if gcode == 0 and gout.strip() else f"exit {gcode}"
         ratios = [c / gmsh_s for _, c in row]
