@@ -224,8 +224,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
 
   report(options, "curves", 0, model.curves().size());
   // The volume schemes place the nodes along their curves (by volume id:
-  // the same for every run).
+  // the same for every run); only when they mesh the volumes.
   for (const auto& [id, entry] : result.plan.volumes) {
+    if (dim != 3) break;
     if (const auto* s = registry.volume_scheme(entry.scheme)) {
       s->space_curves(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
                       result.intervals.intervals, result.intervals.sizes);

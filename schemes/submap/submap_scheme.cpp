@@ -29,10 +29,10 @@ struct LoopNodes {
   LatticePoint closure{0, 0};
 };
 
-// A curve of the face whose node steps differ by more than 2 %: graded on
-// purpose (a rib leaving a tangent cap, sizes near a small feature, a
+// A curve of the face whose node steps differ by more than `ratio`: graded
+// on purpose (a rib leaving a tangent cap, sizes near a small feature, a
 // sweep's wall with its nodes on the levels of its caps).
-bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan) {
+bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan, double ratio) {
   for (const LoopPlan& lp : plan.loops) {
     for (const auto& use : lp.uses) {
       if (!db.curve_meshed(use.curve)) continue;
@@ -43,7 +43,7 @@ bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan) {
         shortest = std::min(shortest, d);
         longest = std::max(longest, d);
       }
-      if (chain.size() > 2 && longest > 1.02 * shortest) return true;
+      if (chain.size() > 2 && longest > ratio * shortest) return true;
     }
   }
   return false;
@@ -282,8 +282,10 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
   // again (a rib leaving a tangent cap: cooper's tangent_grading.h; a side
   // of several barrels whose rows lie on the caps' levels, cooper's
   // level_spacing.h: evened out, a row moved 1 mm off the level of a blind
-  // hole's floor, and the cap stacks folded).
-  if (!has_graded_curve(db, plan)) {
+  // hole's floor, and the cap stacks folded). A single block (the lattice
+  // fills its box) keeps any grading above 2 %, other lattices a grading
+  // above half (their fill is less even than one block's).
+  if (!has_graded_curve(db, plan, fills_its_box(fill) ? 1.02 : 1.5)) {
     smooth_quads(
         out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
         options_.smooth);
