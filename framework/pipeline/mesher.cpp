@@ -218,13 +218,22 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
     check_mesh_size(estimate_mesh_size(model, counts, dim), max_elements);
   }
   lap("intervals");
-  report(options, "curves", 0, model.curves().size());
-  mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
-  lap("curves");
-
   // The one settings object every scheme reads (view.job and mesh()'s
   // argument); each gets back the plan its applicable() made (PlanEntry::data).
   const scheme::Settings params = scheme::Settings::of(settings, options.dim);
+
+  report(options, "curves", 0, model.curves().size());
+  // The volume schemes place the nodes along their curves (by volume id:
+  // the same for every run); only when they mesh the volumes.
+  for (const auto& [id, entry] : result.plan.volumes) {
+    if (dim != 3) break;
+    if (const auto* s = registry.volume_scheme(entry.scheme)) {
+      s->space_curves(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
+                      result.intervals.intervals, result.intervals.sizes);
+    }
+  }
+  mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
+  lap("curves");
 
   // Verdict entities: volumes in 3D, surfaces in 2D.
   Refusals refusals;

@@ -157,6 +157,12 @@ class VolumeScheme {
   /// meshed first, and this volume reads its mesh (docs/design.md, "Volumes
   /// that wait for a neighbour").
   virtual std::vector<int> takes_existing_mesh(const VolumeView& /*view*/) const { return {}; }
+  /// After the interval solve, before the curves are meshed: where the
+  /// nodes of the volume's curves go along them, given every curve's count
+  /// (`sizes` holds the size functions so far; a sweep puts the nodes of
+  /// the curves between its caps on the caps' levels). Default: as they are.
+  virtual void space_curves(const VolumeView& /*view*/, const std::map<int, int>& /*counts*/,
+                            std::map<int, mesh::SizeFunction>& /*sizes*/) const {}
   /// Meshes the volume; its surfaces are meshed in view.mesh. `settings` is
   /// the run's (the pipeline also sets view.job to it). Throws MeshingError.
   virtual EntityMesh mesh(const VolumeView& view, const Settings& settings) const = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "framework/core/error.h"
+#include "schemes/cooper/level_spacing.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/cooper/tangent_grading.h"
 
@@ -133,6 +134,20 @@ std::vector<int> CooperScheme::takes_existing_mesh(const scheme::VolumeView& vie
   if (!held->plan.ok) return out;
   for (const auto& [cap, scheme] : held->plan.roles.scheme) out.push_back(cap);
   return out;
+}
+
+// cite: Blacker 1996, sec. 4 (a barrel's rings of ribs on its caps'
+// levels). Several barrels only: a one-barrel sweep has no level between
+// its ends, and its curves keep their grading.
+void CooperScheme::space_curves(const scheme::VolumeView& view, const std::map<int, int>& counts,
+                                std::map<int, mesh::SizeFunction>& sizes) const {
+  const auto held = plan(view);
+  const VolumePlan& p = held->plan;
+  if (!p.ok || p.one_barrel() || !p.down) return;
+  for (auto& [curve, f] : level_spacing(p.facts, p.lattice, p.order, *p.down, counts))
+    sizes[curve] = std::move(f);
+  for (auto& [curve, f] : column_spacing(p.facts, p.lattice, *p.down, counts))
+    sizes[curve] = std::move(f);
 }
 
 // cite: Blacker 1996, sec. 4-6 (barrels, subcaps, cap stacks, projection,

@@ -42,6 +42,31 @@ BarrelEnds ends_of(const SweepState& s, size_t b) {
   return ends;
 }
 
+// Where a new node of a virtual cap lies off the plane of its end: an end
+// is flat only when its ring is (a virtual cap next to an inclined cap, a
+// lug's conical underside, follows the cone's rim). The ring's offsets from
+// the plane (upper end) or from the map of the upper ring (lower end),
+// weighted by inverse distance (power 3) in the chart. A node placed on
+// the mean plane instead lay 1 mm below the cone under it, and the hex
+// between them inverted (gmsh_918_pump_carter_sup).
+Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower) {
+  const BarrelState& st = s.barrels[b];
+  Vec3 sum = Vec3::Zero();
+  double wsum = 0;
+  for (const auto& rib : st.ribs) {
+    const Vec3& top = s.db.node(rib.front());
+    const Vec2 q = s.plane(b, top);
+    const Vec3 offset = lower ? Vec3(s.db.node(rib.back()) - st.to_lower.apply(top))
+                              : Vec3((top.dot(st.d) - st.level) * st.d);
+    const double d2 = (q - at).squaredNorm();
+    if (d2 <= 0) return offset;
+    const double w = 1.0 / (d2 * std::sqrt(d2));
+    sum += w * offset;
+    wsum += w;
+  }
+  return wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero();
+}
+
 // Applies one barrel's imprint result; true when a subcap or rib changed.
 bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r) {
   BarrelState& st = s.barrels[b];
@@ -74,6 +99,7 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
     const bool lower = lower_nodes.count(id) > 0;
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(piece_of_node.at(id))];
+    if (!p.cap) x += ring_offset(s, b, p2, lower);
     int n;
     if (p.cap) {
       x = s.model.surface(p.cap).geometry->project(x).point;

@@ -29,9 +29,10 @@ struct LoopNodes {
   LatticePoint closure{0, 0};
 };
 
-// A curve of the face whose node steps differ by more than half: graded
-// on purpose (a rib leaving a tangent cap, sizes near a small feature).
-bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan) {
+// A curve of the face whose node steps differ by more than `ratio`: graded
+// on purpose (a rib leaving a tangent cap, sizes near a small feature, a
+// sweep's wall with its nodes on the levels of its caps).
+bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan, double ratio) {
   for (const LoopPlan& lp : plan.loops) {
     for (const auto& use : lp.uses) {
       if (!db.curve_meshed(use.curve)) continue;
@@ -42,7 +43,7 @@ bool has_graded_curve(const mesh::MeshDB& db, const SubmapPlan& plan) {
         shortest = std::min(shortest, d);
         longest = std::max(longest, d);
       }
-      if (chain.size() > 2 && longest > 1.5 * shortest) return true;
+      if (chain.size() > 2 && longest > ratio * shortest) return true;
     }
   }
   return false;
@@ -275,12 +276,16 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
          local_of_point[static_cast<size_t>(c[2])], local_of_point[static_cast<size_t>(c[3])]});
   }
 
-  // 5. Guarded smoothing, then the inversion check: never silent. A lattice
-  // that fills its whole box is one block, already the transfinite
-  // interpolation of its boundary; with a graded curve, smoothing would
-  // only even out its spacing (a rib leaving a tangent cap: cooper's
-  // tangent_grading.h).
-  if (!(fills_its_box(fill) && has_graded_curve(db, plan))) {
+  // 5. Guarded smoothing, then the inversion check: never silent. The fill
+  // carries a graded curve's spacing across the face (transfinite
+  // interpolation along rows and columns); smoothing would only even it out
+  // again (a rib leaving a tangent cap: cooper's tangent_grading.h; a side
+  // of several barrels whose rows lie on the caps' levels, cooper's
+  // level_spacing.h: evened out, a row moved 1 mm off the level of a blind
+  // hole's floor, and the cap stacks folded). A single block (the lattice
+  // fills its box) keeps any grading above 2 %, other lattices a grading
+  // above half (their fill is less even than one block's).
+  if (!has_graded_curve(db, plan, fills_its_box(fill) ? 1.02 : 1.5)) {
     smooth_quads(
         out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
         options_.smooth);
