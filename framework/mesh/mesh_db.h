@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace cooperage::mesh {
@@ -80,6 +81,10 @@ class MeshDB {
     curves_[curve_id] = std::move(chain);
   }
   bool curve_meshed(int curve_id) const { return curves_.count(curve_id) > 0; }
+  /// A volume scheme set where the curve's nodes go (VolumeScheme::
+  /// space_curves): its grading is on purpose, and a surface scheme keeps it.
+  void set_curve_placed_by_volume(int curve_id) { placed_by_volume_.insert(curve_id); }
+  bool curve_placed_by_volume(int curve_id) const { return placed_by_volume_.count(curve_id) > 0; }
 
   const SurfaceMeshData& surface(int surface_id) const;
   SurfaceMeshData& mutable_surface(int surface_id) { return surfaces_[surface_id]; }
@@ -104,6 +109,7 @@ class MeshDB {
   std::vector<NodeOwner> owners_;
   std::map<int, int> vertex_nodes_;
   std::map<int, std::vector<int>> curves_;
+  std::set<int> placed_by_volume_;
   std::map<int, SurfaceMeshData> surfaces_;
   std::map<int, VolumeMeshData> volumes_;
 };

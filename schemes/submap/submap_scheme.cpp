@@ -283,9 +283,20 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
   // of several barrels whose rows lie on the caps' levels, cooper's
   // level_spacing.h: evened out, a row moved 1 mm off the level of a blind
   // hole's floor, and the cap stacks folded). A single block (the lattice
-  // fills its box) keeps any grading above 2 %, other lattices a grading
-  // above half (their fill is less even than one block's).
-  if (!has_graded_curve(db, plan, fills_its_box(fill) ? 1.02 : 1.5)) {
+  // fills its box) keeps a grading above half, or above 2 % on a face
+  // where a volume scheme placed nodes along a curve; other lattices keep a
+  // grading above half only on such a face (their fill is less even than
+  // one block's, and smoothing mends it: gmsh_Angled
+  // --dim 2, surface 30, min scaled Jacobian 0.22 unsmoothed, 0.33 smoothed).
+  const bool block = fills_its_box(fill);
+  const bool volume_placed =
+      std::any_of(plan.loops.begin(), plan.loops.end(), [&](const LoopPlan& lp) {
+        return std::any_of(lp.uses.begin(), lp.uses.end(),
+                           [&](const auto& use) { return db.curve_placed_by_volume(use.curve); });
+      });
+  const bool keep = block ? has_graded_curve(db, plan, volume_placed ? 1.02 : 1.5)
+                          : volume_placed && has_graded_curve(db, plan, 1.5);
+  if (!keep) {
     smooth_quads(
         out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
         options_.smooth);

@@ -81,6 +81,49 @@ TEST(SubmapFaces, LShapeWithUnitSizeHasAreaQuads) {
   EXPECT_EQ(fresh, 8u);  // interior lattice points (1,1)..(5,1), (1,2)..(1,4)
 }
 
+// An L-shaped cap whose long edge (x = 0, 5 intervals) is graded threefold.
+// Graded by the size function, the lattice is smoothed like any other; graded
+// by a volume scheme (cooper's walls on its caps' levels), the lattice keeps
+// it.
+TEST(SubmapFaces, AnLShapeKeepsOnlyAGradingAVolumeSchemePlaced) {
+  const geom::Model model = prism(kL);
+  const int sid = cap_at(model, 1.0);
+  const auto scheme = make_submap();
+  auto mesh_graded = [&](bool placed) {
+    auto run = run_face(model, sid, *scheme, 1.0);
+    int edge = 0;
+    for (int c : test::curves_of(model, sid)) {
+      const Vec3 a = model.vertex(model.curve(c).start_vertex).point;
+      const Vec3 b = model.vertex(model.curve(c).end_vertex).point;
+      if (std::abs(a.x()) + std::abs(b.x()) < 1e-9 && std::abs(a.y() - b.y()) > 4.9) edge = c;
+    }
+    EXPECT_GT(edge, 0);
+    const std::vector<int> chain = run.db.curve_nodes(edge);
+    EXPECT_EQ(chain.size(), 6u);
+    const double first_y = run.db.node(chain.front()).y();
+    const double ys[] = {0.0, 0.5, 1.0, 2.0, 3.5, 5.0};  // steps 0.5 .. 1.5
+    for (size_t k = 1; k + 1 < chain.size(); ++k)
+      run.db.mutable_node(chain[k]).y() = first_y < 2.5 ? ys[k] : 5.0 - ys[k];
+    if (placed) run.db.set_curve_placed_by_volume(edge);
+    const scheme::SurfaceView view{model, sid, &run.db, nullptr};
+    scheme::Settings params;
+    params.size = 1.0;
+    run.mesh = scheme->mesh(view, params);
+    return run;
+  };
+  const auto sized = mesh_graded(false);
+  const auto placed = mesh_graded(true);
+  ASSERT_EQ(sized.mesh.coords.size(), placed.mesh.coords.size());
+  double moved = 0.0;
+  for (size_t i = 0; i < sized.mesh.coords.size(); ++i)
+    moved = std::max(moved, (sized.mesh.coords[i] - placed.mesh.coords[i]).norm());
+  EXPECT_GT(moved, 0.01) << "the sized grading was not smoothed, or the placed one was";
+  expect_valid_surface_mesh(model, sid, sized);
+  expect_valid_surface_mesh(model, sid, placed);
+  EXPECT_GE(min_scaled_jacobian(model.surface(sid), sized.mesh), 0.5);
+  EXPECT_GE(min_scaled_jacobian(model.surface(sid), placed.mesh), 0.5);
+}
+
 TEST(SubmapFaces, CombConstraintsAreSatisfiedByTheIntervalAssignment) {
   // Odd sizes make the goals fractional, so the constraints do real work.
   const geom::Model model = prism(kComb);
