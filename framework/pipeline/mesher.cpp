@@ -438,7 +438,9 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
         " could not be meshed" +
         (good.empty()
              ? std::string()
-             : "; --allow-partial writes the " + std::to_string(good.size()) + " that meshed");
+             : "; --allow-partial writes the " + std::to_string(good.size()) + " that meshed") +
+        // What to do about the first refusal too (issue 16 item 5).
+        (first.hint.empty() ? std::string() : "; for " + first.entity.name() + ": " + first.hint);
     throw IncompleteMesh(first, result.verdicts, hint);
   }
   if (options.allow_partial && result.incomplete()) {

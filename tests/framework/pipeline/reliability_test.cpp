@@ -314,6 +314,10 @@ TEST_F(Reliability, AnAssemblyReportsEveryVolumeAndWritesNothingByDefault) {
     EXPECT_NE(e.hint().find("1 of 2 volumes could not be meshed; --allow-partial writes the 1"),
               std::string::npos)
         << e.hint();
+    // What to do about the refused volume follows the count.
+    const std::string own = "; for volume 2: " + e.verdicts()[1].hint;
+    EXPECT_FALSE(e.verdicts()[1].hint.empty());
+    EXPECT_NE(e.hint().find(own), std::string::npos) << e.hint();
   }
   EXPECT_TRUE(files().empty());
 }
