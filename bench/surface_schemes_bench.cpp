@@ -1,6 +1,7 @@
 // Surface schemes on the same faces: map vs submap vs pave on a rectangle,
-// submap on a comb at three sizes. Reports quads per second (the scheme's mesh() alone;
-// curves are meshed before timing) and peak memory.
+// submap on a comb at three sizes and on a long strip. Reports quads per
+// second (the scheme's mesh() alone; curves are meshed before timing) and
+// peak memory.
 #include "bench_models.h"
 #include "peak_memory.h"
 
@@ -70,6 +71,16 @@ void BM_PaveRectangle(benchmark::State& state) {
                      10.0 / static_cast<double>(state.range(0)));
 }
 BENCHMARK(BM_PaveRectangle)->Arg(100)->Arg(316)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+// A strip 1 wide and L long at size 0.1: 10 x 10 L quads, one block. Linear
+// in L once each lattice line's boundary lengths are summed once (they were
+// walked again for every point: quadratic, like a tall cylinder side).
+void BM_SubmapLongStrip(benchmark::State& state) {
+  const double length = static_cast<double>(state.range(0));
+  const geom::Model model = bench::rectangle_plate(1.0, length);
+  run_surface_scheme(state, model, bench::top_surface(model), "submap", 0.1);
+}
+BENCHMARK(BM_SubmapLongStrip)->Arg(100)->Arg(400)->Arg(1600)->Unit(benchmark::kMillisecond);
 
 // A comb with 5 teeth (area 24) at sizes 1/4, 1/16, 1/64 of a unit.
 void BM_SubmapComb(benchmark::State& state) {

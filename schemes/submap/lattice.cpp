@@ -177,22 +177,49 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
   // Where the boundary runs straight along an axis between the two ends a
   // point sees, its node spacing there (a graded curve: a rib leaving a
   // tangent cap, tangent_grading.h in cooper) decides the fraction, as in
-  // transfinite interpolation; -1 when the line is not all boundary.
-  auto boundary_fraction = [&](int axis, int other, int e0, int self, int e1) -> double {
-    double run = 0.0, total = 0.0;
-    for (int k = e0; k < e1; ++k) {
-      const int ai = axis == 0 ? k : other, aj = axis == 0 ? other : k;
-      const int bi = axis == 0 ? k + 1 : other, bj = axis == 0 ? other : k + 1;
-      if (!inside_box(ai, aj) || !inside_box(bi, bj)) return -1.0;
-      const int g0 = gat(ai, aj), g1 = gat(bi, bj);
-      if (g0 < 0 || g1 < 0 || static_cast<size_t>(g0) >= boundary_count ||
-          static_cast<size_t>(g1) >= boundary_count)
-        return -1.0;
-      const double d = (out.uv[static_cast<size_t>(g1)] - out.uv[static_cast<size_t>(g0)]).norm();
-      total += d;
-      if (k < self) run += d;
+  // transfinite interpolation; -1 when the line is not all boundary. Each
+  // line's running length and count of non-boundary steps are summed once,
+  // when first asked (walking the line for every point made a 36 x 8,000
+  // cylinder side quadratic: 25 s).
+  struct LineSums {
+    std::vector<double> length;  // length[k - start]: boundary length from start to k
+    std::vector<int> gaps;       // steps before k that are not boundary to boundary
+  };
+  std::array<std::vector<LineSums>, 2> lines;  // [axis][other - min of the other axis]
+  lines[0].resize(static_cast<size_t>(nj));
+  lines[1].resize(static_cast<size_t>(ni));
+  auto line_sums = [&](int axis, int other) -> const LineSums& {
+    LineSums& line =
+        lines[static_cast<size_t>(axis)][static_cast<size_t>(other - (axis == 0 ? jmin : imin))];
+    if (!line.length.empty()) return line;
+    const int start = axis == 0 ? imin : jmin, stop = axis == 0 ? imax : jmax;
+    line.length.assign(static_cast<size_t>(stop - start + 1), 0.0);
+    line.gaps.assign(static_cast<size_t>(stop - start + 1), 0);
+    for (int k = start; k < stop; ++k) {
+      const int g0 = axis == 0 ? gat(k, other) : gat(other, k);
+      const int g1 = axis == 0 ? gat(k + 1, other) : gat(other, k + 1);
+      const bool boundary = g0 >= 0 && g1 >= 0 && static_cast<size_t>(g0) < boundary_count &&
+                            static_cast<size_t>(g1) < boundary_count;
+      const auto at_k = static_cast<size_t>(k - start);
+      line.length[at_k + 1] =
+          line.length[at_k] +
+          (boundary ? (out.uv[static_cast<size_t>(g1)] - out.uv[static_cast<size_t>(g0)]).norm()
+                    : 0.0);
+      line.gaps[at_k + 1] = line.gaps[at_k] + (boundary ? 0 : 1);
     }
-    return total > 0 ? run / total : -1.0;
+    return line;
+  };
+  auto boundary_fraction = [&](int axis, int other, int e0, int self, int e1) -> double {
+    const bool other_inside =
+        axis == 0 ? other >= jmin && other <= jmax : other >= imin && other <= imax;
+    const int start = axis == 0 ? imin : jmin, stop = axis == 0 ? imax : jmax;
+    if (!other_inside || e0 < start || e1 > stop) return -1.0;
+    const LineSums& line = line_sums(axis, other);
+    const auto a = static_cast<size_t>(e0 - start), m = static_cast<size_t>(self - start),
+               b = static_cast<size_t>(e1 - start);
+    if (line.gaps[b] != line.gaps[a]) return -1.0;
+    const double total = line.length[b] - line.length[a];
+    return total > 0 ? (line.length[m] - line.length[a]) / total : -1.0;
   };
   for (size_t p = boundary_count; p < out.ij.size(); ++p) {
     const int i = out.ij[p][0], j = out.ij[p][1];
