@@ -63,14 +63,27 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   if (m.boundary_count != static_cast<int>(boundary.size())) {
     fail(s.vid, "the polygon mesher changed the boundary of a subcap in " + s.barrel_name(b));
   }
+  // The mesh lies in the chart's plane. Mapped back onto its end alone (the
+  // barrel's least-squares map at a lower end), it misses its own boundary
+  // where the end is not a plane, or not an affine image of the chart (a
+  // lug's conical underside, a bottom under several such rings), and the
+  // nodes next to the boundary fold over it: the boundary's residuals are
+  // carried inside, as in a projection (sec. 6.1).
+  std::vector<Vec3> chart(m.points.size()), mapped(m.points.size());
+  for (size_t k = 0; k < m.points.size(); ++k) {
+    chart[k] = st.u * m.points[k].x() + st.v * m.points[k].y() + st.level * st.d;
+    mapped[k] = end == 1 ? st.to_lower.apply(chart[k]) : chart[k];
+  }
+  std::vector<Vec3> boundary_at(boundary.size());
+  for (size_t k = 0; k < boundary.size(); ++k) boundary_at[k] = s.pos(boundary[k]);
+  const std::vector<Vec3> placed = with_boundary_residuals(chart, mapped, boundary_at);
   std::vector<int> node(m.points.size());
   for (size_t k = 0; k < m.points.size(); ++k) {
     if (k < boundary.size()) {
       node[k] = boundary[k];
       continue;
     }
-    Vec3 x = st.u * m.points[k].x() + st.v * m.points[k].y() + st.level * st.d;
-    if (end == 1) x = st.to_lower.apply(x);
+    Vec3 x = placed[k];
     if (p.cap) {
       x = s.model.surface(p.cap).geometry->project(x).point;
       node[k] = s.out.add_owned(x, {2, p.cap});

@@ -63,4 +63,23 @@ void ResidualField::apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) co
   }
 }
 
+// cite: Blacker 1996, sec. 6.1 (least-squares weighted residuals).
+std::vector<Vec3> with_boundary_residuals(const std::vector<Vec3>& points,
+                                          const std::vector<Vec3>& mapped,
+                                          const std::vector<Vec3>& boundary_at) {
+  const std::size_t boundary = boundary_at.size();
+  std::vector<Vec3> residual(boundary);
+  double largest = 0.0;
+  for (std::size_t k = 0; k < boundary; ++k) {
+    residual[k] = boundary_at[k] - mapped[k];
+    largest = std::max(largest, residual[k].norm());
+  }
+  std::vector<Vec3> out = mapped;
+  if (largest <= residual_tolerance(points.data(), boundary)) return out;
+  std::vector<Vec3> r;
+  ResidualField(points, boundary).apply(residual, r);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] += r[i];
+  return out;
+}
+
 }  // namespace cooperage::cooper

@@ -39,4 +39,14 @@ class ResidualField {
   std::vector<double> weights_;
 };
 
+/// Where the nodes of a cap mesh go when its boundary nodes are placed
+/// already (sec. 6.1): `mapped[i]` is where a map puts node i (the first
+/// `boundary_at.size()` are the boundary), and the boundary's residuals
+/// (`boundary_at[k] - mapped[k]`) are carried inside by the weights of
+/// `points` (the same nodes on the mesh they come from). The boundary lands
+/// on `boundary_at`; a map that explains the boundary moves nothing else.
+std::vector<Vec3> with_boundary_residuals(const std::vector<Vec3>& points,
+                                          const std::vector<Vec3>& mapped,
+                                          const std::vector<Vec3>& boundary_at);
+
 }  // namespace cooperage::cooper

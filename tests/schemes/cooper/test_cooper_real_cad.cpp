@@ -175,18 +175,21 @@ TEST(CooperRealCad, PyoccFaceRecognitionMeshesAtEverySize) {
 // 17 mm off the level of the blind holes' floors; a lug's top rim was
 // spaced evenly while its foot ends on two levels, so its ribs ran 5 mm
 // sideways; the imprinted nodes of a virtual cap next to a cone lay on its
-// end's mean plane, below the cone. Now: all hex, nothing inverted, the
-// volume within 1 % of the CAD's. The worst hexes are poor (min scaled
-// Jacobian 0.016 at D/40, 0.004 at D/80, where the lugs' cones meet the
-// flange) and D/60 still inverts one there.
-TEST(CooperRealCad, PumpCoverMeshesAtD40AndD80) {
+// end's mean plane, below the cone. Then D/45 to D/75 still inverted a hex:
+// a subcap meshed by the polygon mesher at a lower end (a lug's cone, the
+// bottom face) was put back by the barrel's least-squares map alone, its
+// nodes next to the boundary off the boundary's own positions (min corner
+// sine -0.42 on a cone, -0.69 on the bottom at D/60). Now the boundary's
+// residuals are carried inside: all hex, min scaled Jacobian at least 0.09
+// from D/40 to D/100, the volume within 1 % of the CAD's.
+TEST(CooperRealCad, PumpCoverMeshesFromD40ToD80) {
   const std::string path = real_cad("gmsh_918_pump_carter_sup.stp");
   if (!fs::exists(path))
     GTEST_SKIP() << path << " is absent (the shared real-CAD folder is not here)";
   scheme::Registry registry;
   register_builtin_schemes(registry);
   const geom::Model model = pipeline::load_any(path);
-  for (double div : {40.0, 80.0}) {
+  for (double div : {40.0, 50.0, 60.0, 70.0, 80.0}) {
     io::MeshSettings settings;
     settings.size = model.box().diagonal() / div;
     pipeline::MeshOptions options = selector::mesh_options();
@@ -212,7 +215,7 @@ TEST(CooperRealCad, PumpCoverMeshesAtD40AndD80) {
       EXPECT_EQ(b.type, quality::ElementType::Hex) << "D/" << div;
       const auto* sj = b.find("scaled_jacobian");
       ASSERT_NE(sj, nullptr);
-      EXPECT_GT(sj->min, 0.0) << "D/" << div;
+      EXPECT_GE(sj->min, 0.05) << "D/" << div;
       hexes += b.count;
       std::printf("[cooper real CAD] pump cover D/%g: %zu hexes, min scaled Jacobian %.4f\n", div,
                   b.count, sj->min);
