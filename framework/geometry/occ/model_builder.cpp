@@ -163,7 +163,12 @@ class Numbering {
       GProp_GProps props;
       BRepGProp::VolumeProperties(solids[v].shape, props);
       vol.volume = std::abs(props.Mass());
-      vol.box = box_of(solids[v].shape);
+      // The union of its faces' tight boxes: what BRepBndLib::AddOptimal
+      // gives for the solid, without bounding every face a second time (an
+      // optimisation per face; the decomposition search builds a model for
+      // every candidate cut).
+      for (const auto& shell : vol.shells)
+        for (const auto& use : shell) vol.box.add(model.surface(use.surface).box);
       const int owner = solids[v].owner;
       vol.name = names[static_cast<size_t>(owner)];
       if (pieces_per_owner[owner] > 1) vol.name += "." + std::to_string(++seen_per_owner[owner]);
