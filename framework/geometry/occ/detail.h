@@ -130,6 +130,14 @@ struct Piece {
   int owner = 0;       ///< index into the named shapes
 };
 
+/// A face's area and tight bounding box (BRepBndLib::AddOptimal without
+/// tolerances), computed once per face and thread (face_facts.cpp).
+struct FaceFacts {
+  double area = 0.0;
+  geom::BoundingBox box;
+};
+FaceFacts face_facts(const TopoDS_Face& face);
+
 /// Solids and free faces of the named shapes, in creation order
 /// (model_builder.cpp).
 void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,

@@ -15,7 +15,6 @@
 #include "framework/geometry/validate.h"
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
-#include <BRepBndLib.hxx>
 #include <BRepClass3d.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
@@ -23,7 +22,6 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <TopoDS_Compound.hxx>
-#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -43,18 +41,6 @@ namespace cooperage::occ {
 namespace {
 
 using detail::Piece;
-
-geom::BoundingBox box_of(const TopoDS_Shape& s) {
-  Bnd_Box b;
-  BRepBndLib::AddOptimal(s, b, Standard_False, Standard_False);
-  geom::BoundingBox out;
-  if (b.IsVoid()) return out;
-  double x0, y0, z0, x1, y1, z1;
-  b.Get(x0, y0, z0, x1, y1, z1);
-  out.add(Vec3(x0, y0, z0));
-  out.add(Vec3(x1, y1, z1));
-  return out;
-}
 
 }  // namespace
 
@@ -144,10 +130,9 @@ class Numbering {
       s.loops = loops_[static_cast<size_t>(i - 1)];
       s.volumes = face_volumes_[static_cast<size_t>(i - 1)];
       s.geometry = detail::make_surface_geometry(f);
-      GProp_GProps props;
-      BRepGProp::SurfaceProperties(f, props);
-      s.area = std::abs(props.Mass());
-      s.box = box_of(f);
+      const detail::FaceFacts facts = detail::face_facts(f);
+      s.area = facts.area;
+      s.box = facts.box;
       const int id = model.add_surface(s);
       for (const auto& loop : s.loops)
         for (const auto& use : loop.uses) {

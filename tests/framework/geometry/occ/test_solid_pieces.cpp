@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <thread>
 
 namespace cooperage::occ {
 namespace {
@@ -45,6 +46,38 @@ TEST(SolidPieces, APlaneSplitsABrickIntoTwoPiecesSharingTheCutFace) {
   for (const auto& s : m.surfaces()) shared += s.volumes.size() == 2 ? 1 : 0;
   EXPECT_EQ(shared, 1);
   EXPECT_EQ(m.volume(1).name, "b.1");
+}
+
+// Faces a cut leaves as they were keep their area and tight box from the
+// thread's earlier builds (face_facts.cpp); a model built in a fresh thread,
+// which remembers nothing, has the same areas and boxes, and so do the
+// volumes' boxes (the union of their faces').
+TEST(SolidPieces, RememberedFaceAreasAndBoxesEqualFreshOnes) {
+  Workbench bench;
+  bench.cylinder("c", {0, 0, 0}, {0, 0, 1}, 2.0, 3.0);
+  const SolidPieces one = SolidPieces::of(bench);
+  (void)one.build_model(false);  // the thread now knows the uncut faces
+  const SolidPieces cut = one.split(0, {CutSurface::Kind::Plane, {0, 0, 1}, {0, 0, 1}, 0});
+  ASSERT_EQ(cut.size(), 2);
+  const geom::Model warm = cut.build_model(false);
+  geom::Model fresh;
+  std::thread([&] { fresh = cut.build_model(false); }).join();
+  ASSERT_EQ(warm.surfaces().size(), fresh.surfaces().size());
+  for (const auto& s : warm.surfaces()) {
+    const auto& f = fresh.surface(s.id);
+    EXPECT_EQ(s.area, f.area) << "surface " << s.id;
+    EXPECT_EQ(s.box.min, f.box.min) << "surface " << s.id;
+    EXPECT_EQ(s.box.max, f.box.max) << "surface " << s.id;
+  }
+  for (const auto& v : warm.volumes()) {
+    EXPECT_EQ(v.box.min, fresh.volume(v.id).box.min);
+    EXPECT_EQ(v.box.max, fresh.volume(v.id).box.max);
+  }
+  // The cylinder's tight box, not its control points' (a circle's B-spline
+  // hull would reach past the radius).
+  const geom::BoundingBox box = warm.volume(1).box;
+  EXPECT_NEAR(box.max.x(), 2.0, 1e-6);
+  EXPECT_NEAR(box.min.y(), -2.0, 1e-6);
 }
 
 TEST(SolidPieces, APlaneMissingTheSolidGivesOnePiece) {

@@ -1,0 +1,46 @@
+// The area and tight bounding box of a face, remembered per face (same
+// TShape and location) for the thread's later model builds: the
+// decomposition search builds a model for every candidate cut, and a cut
+// leaves most faces as they were. The tight box (BRepBndLib::AddOptimal, a
+// particle swarm over the surface) was a fifth of a refused screw's search.
+#include "framework/geometry/occ/detail.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <NCollection_DataMap.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
+
+#include <cmath>
+
+namespace cooperage::occ::detail {
+namespace {
+
+// Holding the face keeps its TShape alive, so a key is never reused by
+// another face. Bounded: cleared when it grows past kMaxFaces.
+constexpr int kMaxFaces = 20000;
+
+}  // namespace
+
+FaceFacts face_facts(const TopoDS_Face& face) {
+  thread_local NCollection_DataMap<TopoDS_Shape, FaceFacts, TopTools_ShapeMapHasher> known;
+  if (const FaceFacts* f = known.Seek(face)) return *f;
+  FaceFacts out;
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  out.area = std::abs(props.Mass());
+  Bnd_Box b;
+  BRepBndLib::AddOptimal(face, b, Standard_False, Standard_False);
+  if (!b.IsVoid()) {
+    double x0, y0, z0, x1, y1, z1;
+    b.Get(x0, y0, z0, x1, y1, z1);
+    out.box.add(Vec3(x0, y0, z0));
+    out.box.add(Vec3(x1, y1, z1));
+  }
+  if (known.Extent() >= kMaxFaces) known.Clear();
+  known.Bind(face, out);
+  return out;
+}
+
+}  // namespace cooperage::occ::detail
