@@ -224,18 +224,19 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
 
   report(options, "curves", 0, model.curves().size());
   // The volume schemes place the nodes along their curves (by volume id:
-  // the same for every run); only when they mesh the volumes.
-  for (const auto& [id, entry] : result.plan.volumes) {
-    if (dim != 3) break;
-    if (const auto* s = registry.volume_scheme(entry.scheme)) {
-      const auto before = result.intervals.sizes;
-      s->space_curves(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
-                      result.intervals.intervals, result.intervals.sizes);
-      for (const auto& [curve, f] : result.intervals.sizes) {
-        const auto was = before.find(curve);
-        if (was == before.end() || was->second.at != f.at || was->second.size != f.size)
-          result.mesh.set_curve_placed_by_volume(curve);
-      }
+  // the same for every run); only when they mesh the volumes. The curves
+  // whose sizes they changed are marked (submap keeps their grading).
+  if (dim == 3) {
+    const auto before = result.intervals.sizes;
+    for (const auto& [id, entry] : result.plan.volumes) {
+      if (const auto* s = registry.volume_scheme(entry.scheme))
+        s->space_curves(scheme::VolumeView{model, id, &result.mesh, &params, entry.data.get()},
+                        result.intervals.intervals, result.intervals.sizes);
+    }
+    for (const auto& [curve, f] : result.intervals.sizes) {
+      const auto was = before.find(curve);
+      if (was == before.end() || was->second.at != f.at || was->second.size != f.size)
+        result.mesh.set_curve_placed_by_volume(curve);
     }
   }
   mesh_curves(model, result.intervals.intervals, settings, result.mesh, &result.intervals.sizes);
