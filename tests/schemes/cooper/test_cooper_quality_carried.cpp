@@ -39,21 +39,33 @@ void expect_same_report(const pipeline::QualityReport& a, const pipeline::Qualit
   }
 }
 
-// Meshes the part as a run does (its report from cooper's values) and
-// compares with the report computed from the finished mesh.
-void expect_carried_equals_recomputed(const std::string& name, const parts::Build& build,
-                                      double size) {
+struct Meshed {
+  geom::Model model;
+  pipeline::MeshResult run;
+};
+
+// Builds the part and meshes it as a run does (its report from cooper's
+// values).
+Meshed mesh_part(const parts::Build& build, double size,
+                 const pipeline::MeshOptions& options = selector::mesh_options()) {
   occ::Workbench wb;
   build(wb);
-  const geom::Model model = wb.build_model();
+  Meshed out;
+  out.model = wb.build_model();
   scheme::Registry registry;
   register_builtin_schemes(registry);
   io::MeshSettings settings;
   settings.size = size;
-  const pipeline::MeshResult run =
-      pipeline::mesh_model(model, settings, registry, selector::mesh_options());
-  ASSERT_GT(run.mesh.hex_count() + run.mesh.wedge_count(), 0u) << name;
-  expect_same_report(run.quality, pipeline::assess_quality(run.mesh, model, {}), name);
+  out.run = pipeline::mesh_model(out.model, settings, registry, options);
+  return out;
+}
+
+// Compares the run's report with the one computed from the finished mesh.
+void expect_carried_equals_recomputed(const std::string& name, const parts::Build& build,
+                                      double size) {
+  const Meshed m = mesh_part(build, size);
+  ASSERT_GT(m.run.mesh.hex_count() + m.run.mesh.wedge_count(), 0u) << name;
+  expect_same_report(m.run.quality, pipeline::assess_quality(m.run.mesh, m.model, {}), name);
 }
 
 TEST(CooperQualityCarried, ReportFromTheCheckEqualsTheRecomputedOne) {
@@ -104,15 +116,9 @@ TEST(CooperQualityCarried, SweepHandsBackEveryElementsValue) {
 
 // Known values are taken only when there is one per element.
 TEST(CooperQualityCarried, KnownValuesAreTakenOnlyWhenComplete) {
-  occ::Workbench wb;
-  parts::blind_hole(wb);
-  const geom::Model model = wb.build_model();
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
-  io::MeshSettings settings;
-  settings.size = 0.3;
-  const pipeline::MeshResult run =
-      pipeline::mesh_model(model, settings, registry, selector::mesh_options());
+  const Meshed m = mesh_part(parts::blind_hole, 0.3);
+  const geom::Model& model = m.model;
+  const pipeline::MeshResult& run = m.run;
   const int id = run.mesh.volumes().begin()->first;
   const size_t hexes = run.mesh.volume(id).hexes.size();
   ASSERT_GT(hexes, 1u);
@@ -129,13 +135,6 @@ TEST(CooperQualityCarried, KnownValuesAreTakenOnlyWhenComplete) {
 // quality_checks), the scaled Jacobian taken from cooper: their outcomes
 // are those of a report computed afresh from the finished mesh.
 TEST(CooperQualityCarried, JournalChecksCountTheSameOnTheCarriedValues) {
-  occ::Workbench wb;
-  parts::plate_three_round_holes(wb);
-  const geom::Model model = wb.build_model();
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
-  io::MeshSettings settings;
-  settings.size = 0.3;
   std::vector<io::QualityCheck> checks(3);
   checks[0].metric = "scaled_jacobian";
   checks[0].min = 0.97;  // some hexes of the holes' rings fall below
@@ -146,7 +145,9 @@ TEST(CooperQualityCarried, JournalChecksCountTheSameOnTheCarriedValues) {
   checks[2].max = 0.1;
   pipeline::MeshOptions options = selector::mesh_options();
   options.quality_checks = checks;
-  const pipeline::MeshResult run = pipeline::mesh_model(model, settings, registry, options);
+  const Meshed m = mesh_part(parts::plate_three_round_holes, 0.3, options);
+  const geom::Model& model = m.model;
+  const pipeline::MeshResult& run = m.run;
   const pipeline::QualityReport fresh = pipeline::assess_quality(run.mesh, model, checks);
   expect_same_report(run.quality, fresh, "with checks");
   ASSERT_EQ(run.quality.checks.size(), 3u);
