@@ -123,6 +123,67 @@ bool adjacent(const Loop& loop, int a, int b) {
          loop[(static_cast<size_t>(i) + n - 1) % n] == b;
 }
 
+bool flat_quad(const Loop& loop, const std::map<int, Vec2>& xy) {
+  if (loop.size() != 4) return false;
+  for (size_t k = 0; k < 4; ++k) {
+    const Vec2 a = xy.at(loop[(k + 3) % 4]) - xy.at(loop[k]);
+    const Vec2 b = xy.at(loop[(k + 1) % 4]) - xy.at(loop[k]);
+    const double len = a.norm() * b.norm();
+    if (len <= 0.0 || std::abs(cross(b, a)) / len < 0.2) return true;
+  }
+  return false;
+}
+
+bool absorb_touching_hole(Loop& outer, const Loop& hole) {
+  const size_t n = outer.size(), h = hole.size();
+  for (size_t i = 0; i < n; ++i) {
+    const int u = outer[i], v = outer[(i + 1) % n];
+    const int j = index_in(hole, v);
+    if (j < 0 || hole[(static_cast<size_t>(j) + 1) % h] != u) continue;
+    // outer ... u, [hole after u up to before v], v ...
+    Loop merged(outer.begin(), outer.begin() + static_cast<long>(i) + 1);
+    for (size_t k = (static_cast<size_t>(j) + 2) % h; k != static_cast<size_t>(j); k = (k + 1) % h)
+      merged.push_back(hole[k]);
+    merged.insert(merged.end(), outer.begin() + static_cast<long>(i) + 1, outer.end());
+    // Edges the two loops shared beyond the first come back as spikes p, q, p.
+    for (bool again = true; again && merged.size() > 2;) {
+      again = false;
+      const size_t m = merged.size();
+      for (size_t k = 0; k < m; ++k) {
+        if (merged[k] != merged[(k + 2) % m]) continue;
+        const size_t a = (k + 1) % m, b = (k + 2) % m;
+        merged.erase(merged.begin() + static_cast<long>(std::max(a, b)));
+        merged.erase(merged.begin() + static_cast<long>(std::min(a, b)));
+        again = true;
+        break;
+      }
+    }
+    outer = std::move(merged);
+    return true;
+  }
+  return false;
+}
+
+Vec2 hole_owner_probe(const Loop& hole, const std::map<int, Vec2>& xy,
+                      const std::vector<Loop>& outers) {
+  auto on_an_outer = [&](int a, int b) {
+    for (const Loop& o : outers) {
+      if (adjacent(o, a, b)) return true;
+    }
+    return false;
+  };
+  const size_t h = hole.size();
+  for (size_t k = 0; k < h; ++k) {
+    const int a = hole[k], b = hole[(k + 1) % h];
+    if (on_an_outer(a, b)) continue;
+    const Vec2 p = xy.at(a), q = xy.at(b);
+    const Vec2 d = q - p;
+    // A clockwise hole has the subcap's material on its left.
+    return 0.5 * (p + q) + 1e-3 * Vec2(-d.y(), d.x());
+  }
+  return xy.at(hole.front());
+}
+
 // Splits a counter-clockwise loop by a path x -> interior -> y (x, y on the
 // loop): left = path + loop from y forward to x; right = reversed path +
 // loop from x forward to y (sec. 5.2: b^ and b').

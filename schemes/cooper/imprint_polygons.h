@@ -65,6 +65,18 @@ bool adjacent(const Loop& loop, int a, int b);
 /// path); second = reversed path + loop from x forward to y (sec. 5.2: the
 /// caps b^ and b').
 std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y);
+/// A four-node loop with a corner whose sine is below 0.2 (nearly straight
+/// or folded): meshed as one quad, it sweeps to a flat hex.
+bool flat_quad(const Loop& loop, const std::map<int, Vec2>& xy);
+/// A clockwise hole sharing an edge with counter-clockwise `outer` (the
+/// region touches it): the hole joins the outer loop, which then runs around
+/// it; false when they share no edge.
+bool absorb_touching_hole(Loop& outer, const Loop& hole);
+/// A point just on the material side of one of the hole's edges that is on
+/// none of `outers`: it lies in the region owning the hole even when the
+/// hole's nodes lie on the regions' boundaries.
+Vec2 hole_owner_probe(const Loop& hole, const std::map<int, Vec2>& xy,
+                      const std::vector<Loop>& outers);
 /// Splits a loop at its first repeated node; false when none.
 bool split_at_repeat(const Loop& loop, Loop& a, Loop& b);
 /// The first pair of crossing segments (i, k), i < k, in the order of a

@@ -221,12 +221,13 @@ std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& p
   std::vector<std::vector<Loop>> loops;
   for (const Loop& o : outers) loops.push_back({o});
   for (size_t h = 1; h < old.loops.size(); ++h) {
-    const Vec2 p = xy().at(old.loops[h].front());
+    const Loop& hole = old.loops[h];
+    const Vec2 p = hole_owner_probe(hole, xy(), outers);
     for (auto& l : loops) {
-      if (point_in_loop(p, l.front(), xy())) {
-        l.push_back(old.loops[h]);
-        break;
-      }
+      if (!point_in_loop(p, l.front(), xy())) continue;
+      // A split path along the hole's nodes leaves it touching the piece.
+      if (!absorb_touching_hole(l.front(), hole)) l.push_back(hole);
+      break;
     }
   }
   for (auto& l : loops) ids.push_back(new_cap(e, l, old.id));
@@ -346,13 +347,14 @@ bool Imprinter::on_hole_only(int o, int node) {
   return hole;
 }
 
-// sec. 5.2 where a feature touches a hole at one point (two bosses meeting
-// at a corner: the top's remainder has an outer loop and a hole through one
-// vertex). A ribbed node whose partner lies only on a hole of the opposing
-// end, between two nodes whose partners do not, ends no gap: the gaps on
-// either side form one path from the opposing outer loop through the hole's
-// node back to it, which splits the opposing subcap (a path from an outer
-// loop to a hole alone would not).
+// sec. 5.2 where a feature touches a hole (two bosses meeting at a corner:
+// the top's remainder has an outer loop and a hole through one vertex; or a
+// crossing combined onto a hole's nodes, sec. 5.3). A run of ribbed nodes
+// whose partners lie only on one hole of the opposing end, one after the
+// other along it, between two nodes whose partners do not, ends no gap: the
+// gaps on either side form one path from the opposing outer loop through the
+// hole's nodes back to it, which splits the opposing subcap (a path from an
+// outer loop to a hole alone would not).
 std::vector<size_t> Imprinter::gap_anchors(int e, const Loop& outer,
                                            const std::vector<size_t>& ribbed) {
   const size_t m = ribbed.size(), n = outer.size();
@@ -364,15 +366,32 @@ std::vector<size_t> Imprinter::gap_anchors(int e, const Loop& outer,
     for (size_t k = (ribbed[g0] + 1) % n; k != ribbed[g1]; k = (k + 1) % n) gap.push_back(outer[k]);
     return gap;
   };
+  auto image = [&](size_t g) { return *partner(e, outer[ribbed[g]]); };
+  std::vector<char> through(m, 0);
+  for (size_t g = 0; g < m; ++g) {
+    const size_t prev = (g + m - 1) % m;
+    if (!hole_only[g] || hole_only[prev]) continue;  // not the start of a run
+    size_t last = g;
+    bool along = true;
+    while (hole_only[(last + 1) % m] && (last + 1) % m != g) {
+      const size_t step = (last + 1) % m;
+      along = gap_between(last, step).empty() && opposing_edge(e, image(last), image(step));
+      if (!along) break;
+      last = step;
+    }
+    const size_t next = (last + 1) % m;
+    if (!along || next == g || next == prev) continue;
+    if (skipped_gap(e, gap_between(prev, g), image(prev), image(g), m) ||
+        skipped_gap(e, gap_between(last, next), image(last), image(next), m))
+      continue;
+    for (size_t k = g;; k = (k + 1) % m) {
+      through[k] = 1;
+      if (k == last) break;
+    }
+  }
   std::vector<size_t> out;
   for (size_t g = 0; g < m; ++g) {
-    const size_t prev = (g + m - 1) % m, next = (g + 1) % m;
-    const int x = *partner(e, outer[ribbed[prev]]), v = *partner(e, outer[ribbed[g]]),
-              y = *partner(e, outer[ribbed[next]]);
-    const bool through = hole_only[g] && !hole_only[prev] && !hole_only[next] &&
-                         !skipped_gap(e, gap_between(prev, g), x, v, m) &&
-                         !skipped_gap(e, gap_between(g, next), v, y, m);
-    if (!through) out.push_back(ribbed[g]);
+    if (!through[g]) out.push_back(ribbed[g]);
   }
   return out.size() >= 2 ? out : ribbed;
 }
@@ -522,6 +541,24 @@ bool Imprinter::coincident_loop(int e, const Loop& la) {
   return false;
 }
 
+Imprinter::Undo Imprinter::undo_point() const {
+  return {r_.interior_ribs.size(), r_.seams.size(), r_.steps.size(), next_node_};
+}
+
+void Imprinter::roll_back(int e, const Loop& gap, const Undo& undo) {
+  for (int v : gap) {
+    const auto p = partner(e, v);
+    if (!p) continue;
+    partner_[e].erase(v);
+    partner_[1 - e].erase(*p);
+    if (*p >= undo.next_node) r_.ends.xy.erase(*p);
+  }
+  r_.interior_ribs.resize(undo.interior_ribs);
+  r_.seams.resize(undo.seams);
+  r_.steps.resize(undo.steps);
+  next_node_ = undo.next_node;
+}
+
 bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1) {
   const int x = *partner(e, r0);
   const int y = *partner(e, r1);
@@ -540,6 +577,10 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     if (point_in_subcap(probe, caps(1 - e)[static_cast<size_t>(c)], xy()))
       bi = static_cast<size_t>(c);
   }
+  if (!gap.empty() && gap_leaves_subcap(e, gap, a.loops.front(), bi) &&
+      seam_gap_to_arc(e, gap, x, y, common))
+    return true;
+  const Undo undo = undo_point();
   Loop path;
   for (int v : gap) path.push_back(project(e, v, a.loops.front()));
   const Loop outer = caps(1 - e)[bi].loops.front();
@@ -561,9 +602,21 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }
-  if (index_in(outer, x) < 0 || index_in(outer, y) < 0)
-    return split_hole(1 - e, bi, x, path, y) || join_holes(e, a, r0, path, r1, bi);
+  if (index_in(outer, x) < 0 || index_in(outer, y) < 0) {
+    if (split_pinched(1 - e, bi, x, path, y) || split_hole(1 - e, bi, x, path, y) ||
+        join_holes(e, a, r0, path, r1, bi))
+      return true;
+    // No split: ribs to nodes on no subcap would end later gaps nowhere.
+    roll_back(e, gap, undo);
+    return false;
+  }
   auto [left, right] = split_loop(outer, x, path, y);
+  // A piece that would be one quad with a straight corner (a vertex of a's
+  // loop poking just across an opposing boundary that has a node there)
+  // sweeps to a flat hex; seaming the gap onto that boundary instead leans
+  // the ribs a little and cuts no piece.
+  if ((flat_quad(left, xy()) || flat_quad(right, xy())) && seam_gap_to_arc(e, gap, x, y, common))
+    return true;
   replace(1 - e, bi, {left, right});
   r_.steps.push_back(ImprintStep::Subtract);
   return true;

@@ -91,11 +91,28 @@ class Imprinter {
   // of one of its hole loops: the piece between the path and one arc of the
   // hole becomes a subcap, the hole grows by it (sec. 5.2-5.3).
   bool split_hole(int e, size_t bi, int x, const Loop& path, int y);
+  // Splits subcap bi of end e along x -> path -> y from its outer loop to a
+  // hole that touches the outer loop at a node; false when there is none.
+  bool split_pinched(int e, size_t bi, int x, const Loop& path, int y);
   // sec. 5.2: a's gap r0 -> path -> r1 runs from one hole of subcap bi of
   // the opposing end to another, and a second gap of a's loop runs back: both
   // are projected, the piece between them leaves bi and the two holes join.
   bool join_holes(int e, const Subcap& a, int r0, const Loop& path, int r1, size_t bi);
   bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
+  // The ribs a gap's projection made, taken back when it split nothing.
+  struct Undo {
+    size_t interior_ribs, seams, steps;
+    int next_node;
+  };
+  Undo undo_point() const;
+  void roll_back(int e, const Loop& gap, const Undo& undo);
+  // A gap node lies outside subcap bi of the opposing end by more than a
+  // tenth of its edges (`around` is the gap's loop, for their length).
+  bool gap_leaves_subcap(int e, const Loop& gap, const Loop& around, size_t bi);
+  // sec. 5.4: seams the gap's nodes onto the free nodes of an arc x -> y of
+  // one of the `common` opposing subcaps' outer loops, the closest such arc
+  // with as many nodes; false when there is none or seaming is off.
+  bool seam_gap_to_arc(int e, const Loop& gap, int x, int y, const std::vector<int>& common);
 
   // sec. 5.3: the gap's ends reach two subcaps, b (at r1) and c (at r0).
   bool intersect(int e, const Subcap& a, int r0, const Loop& gap, int r1,

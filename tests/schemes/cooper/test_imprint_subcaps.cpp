@@ -376,6 +376,61 @@ TEST(ImprintSubcaps, FeaturesTouchingAtACornerSplitTheOpposingCap) {
   }
 }
 
+// The lower end of the barrel under a blind hole's floor that straddles a
+// wall over a cone's tip (data/cooper_blind_holes_across_cone_tip.xml at
+// size 5, in small): upper, the floor's hexagon (radius 3 at (62, 20)) and
+// the rest; lower, the wall x = 60 splits the end, and the tip's half disc
+// (radius 2 at (60, 20)) lies right of it. The hexagon's edges cross the
+// wall and the tip's arc within 0.3 of the tip's corners (60, 18) and
+// (60, 22). The imprinting combined those crossings onto the corners, then
+// projected the hexagon's vertex (59, 20) into the wrong subcap and cut
+// slivers back and forth until it gave up after 10,000 steps.
+TEST(ImprintSubcaps, AFootprintGrazingTheCornersOfAnOpposingPieceSeamsOntoThem) {
+  Hand h;
+  const double s = 5.0;
+  h.exterior(rect(0, 0, 70, 40), s);
+  std::vector<Vec2> hexagon;
+  for (int k = 0; k < 6; ++k)
+    hexagon.push_back(Vec2(62, 20) + 3.0 * Vec2(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)));
+  h.subcap(0, 1, {hexagon}, 2.9);
+  h.subcap(0, 2, {rect(0, 0, 70, 40), std::vector<Vec2>(hexagon.rbegin(), hexagon.rend())}, s);
+  // Lower: the wall's nodes (60, y), the tip's arc through (61.69, 19 +- 1.07).
+  auto line = [&](const Vec2& from, const Vec2& to, std::vector<int>& out) {
+    const int steps = static_cast<int>(std::lround((to - from).norm() / s));
+    for (int k = 0; k < steps; ++k) out.push_back(h.node(1, from + (to - from) * k / double(steps)));
+  };
+  auto wall = [&](std::vector<double> ys, std::vector<int>& out) {
+    for (double y : ys) out.push_back(h.node(1, {60, y}));
+  };
+  const int a0 = h.node(1, {61.69, 18.93}), a1 = h.node(1, {61.69, 21.07});
+  Subcap left{3, {}}, right{4, {}}, tip{5, {}};
+  std::vector<int> l, r;
+  line({0, 0}, {60, 0}, l);
+  wall({0, 5, 10, 14.1, 18, 22, 25.9, 30}, l);
+  line({60, 40}, {0, 40}, l);
+  line({0, 40}, {0, 0}, l);
+  left.loops = {l};
+  line({60, 0}, {70, 0}, r);
+  line({70, 0}, {70, 40}, r);
+  line({70, 40}, {60, 40}, r);
+  wall({40, 30, 25.9, 22}, r);
+  r.push_back(a1);
+  r.push_back(a0);
+  wall({18, 14.1, 10, 5}, r);
+  right.loops = {r};
+  tip.loops = {{h.node(1, {60, 18}), a0, a1, h.node(1, {60, 22})}};
+  h.ends.lower = {left, right, tip};
+  for (const Subcap& c : h.ends.lower) {
+    ASSERT_GT(signed_area(c.loops.front(), h.ends.xy), 0) << c.id;
+    ASSERT_EQ(c.loops.front().size() % 2, 0u) << c.id;
+  }
+  const ImprintResult res = imprint_subcaps(h.ends);
+  // Seams move matched pieces' outlines by up to the crossing's offset.
+  expect_partition(res, 70.0 * 40.0, 3.0);
+  EXPECT_GE(count(res, ImprintStep::Seam), 1u);
+  EXPECT_LT(res.steps.size(), 40u);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
 
