@@ -11,6 +11,7 @@
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/decomposed_geometry.h"
+#include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "must_mesh_parts.h"
 #include "schemes/builtin_schemes.h"
@@ -144,6 +145,33 @@ TEST(CooperParity, MustMeshPartsAtTwoSizes) {
       settings.size = size;
       check_model(model, settings, name + " at size " + std::to_string(size));
     }
+  }
+}
+
+// Lugs on a block's wall with a cone of about 45 degrees under them, from
+// the plan => mesh campaign (fuzz/parity_campaign.py --seed 3, cases 75,
+// 145, 147). The plan swept them in one barrel up from the bottom, the cone
+// and its tip together; the wall's lattice then put the notch's floor on the
+// wall's bottom row ("boundary nodes ... fall on the same lattice point").
+// Whatever the plan decides, meshing must follow it.
+TEST(CooperParity, LugsWithAFortyFiveDegreeConeUnderneath) {
+  struct Lug {
+    geom::Vec3 block;
+    double y, z0, radius, tip_z, tip_radius, size;
+  };
+  for (const Lug& l : {Lug{{62.43, 49.66, 15.93}, 20.98, 6.98, 5.66, 4.08, 2.74, 2.05},
+                       Lug{{32.56, 48.29, 39.82}, 33.08, 12.4, 11.05, 8.33, 6.19, 6.359},
+                       Lug{{32.36, 38.92, 28.08}, 24.48, 14.32, 10.22, 9.07, 1.53, 4.057}}) {
+    occ::Workbench wb;
+    wb.brick("block", {0, 0, 0}, l.block);
+    wb.cylinder("lug", {l.block.x(), l.y, l.z0}, {0, 0, 1}, l.radius, l.block.z() - l.z0);
+    wb.cone("under", {l.block.x(), l.y, l.tip_z}, {0, 0, 1}, l.tip_radius, l.radius,
+            l.z0 - l.tip_z);
+    wb.fuse("part", {"block", "lug", "under"});
+    io::MeshSettings settings;
+    settings.size = l.size;
+    settings.decompose = io::Decompose::Off;
+    expect_parity(wb.build_model(), settings, "lug at size " + std::to_string(l.size));
   }
 }
 
