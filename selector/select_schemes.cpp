@@ -133,6 +133,7 @@ class Selector {
       for (int round = 0;; ++round) {
         restart_ = false;
         roles_.clear();
+        volume_types_.clear();
         waits_for_.clear();
         selection_.volumes.clear();
         selection_.refused.clear();
@@ -150,6 +151,9 @@ class Selector {
         if (!restart_ || round >= kMaxRounds) break;
       }
     }
+    for (const auto& [v, types] : volume_types_)
+      planned_types_.insert(planned_types_.end(), types.begin(), types.end());
+    job_.planned_vertex_types = &planned_types_;
     for (const geom::Surface& s : model_.surfaces()) choose_surface(s.id);
     if (options_.check_intervals) relax_until_feasible();
     for (const auto& [v, targets] : waits_for_) {
@@ -393,6 +397,7 @@ class Selector {
       if (c != order.front() && yield_.count(id)) {
         for (const Request& a : asks) request(a);
       }
+      volume_types_[id] = vs->vertex_types(planned);
       choice.scheme = c->scheme;
       choice.reason = choice.pinned
                           ? "pinned at " + place(pin->where)
@@ -525,7 +530,11 @@ class Selector {
   const geom::Model& model_;
   const scheme::Registry& registry_;
   const io::MeshSettings& settings_;
-  const scheme::Settings job_;  ///< what every scheme is asked with
+  scheme::Settings job_;  ///< what every scheme is asked with
+  /// Per volume: the vertex types its chosen plan relies on; flattened into
+  /// planned_types_ (job_.planned_vertex_types) before the surfaces.
+  std::map<int, std::vector<io::VertexTypeSetting>> volume_types_;
+  std::vector<io::VertexTypeSetting> planned_types_;
   SelectOptions options_;
   std::map<int, Role> roles_;
   std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it

@@ -157,6 +157,13 @@ class VolumeScheme {
   /// meshed first, and this volume reads its mesh (docs/design.md, "Volumes
   /// that wait for a neighbour").
   virtual std::vector<int> takes_existing_mesh(const VolumeView& /*view*/) const { return {}; }
+  /// Vertex types of its surfaces the plan relies on where a surface scheme
+  /// alone might classify otherwise (a side's corner between two types,
+  /// typed to agree with its neighbours); the selector hands them to the
+  /// surface schemes as if the journal pinned them.
+  virtual std::vector<io::VertexTypeSetting> vertex_types(const VolumeView& /*view*/) const {
+    return {};
+  }
   /// After the interval solve, before the curves are meshed: where the
   /// nodes of the volume's curves go along them, given every curve's count
   /// (`sizes` holds the size functions so far; a sweep puts the nodes of

@@ -37,9 +37,12 @@ std::string Settings::no_scheme_applies(int volume_id) const {
   return "no hex scheme applies";
 }
 
-const std::vector<io::VertexTypeSetting>& Settings::vertex_types() const {
-  static const std::vector<io::VertexTypeSetting> none;
-  return job ? job->vertex_types : none;
+std::vector<io::VertexTypeSetting> Settings::vertex_types() const {
+  std::vector<io::VertexTypeSetting> out;
+  if (job) out = job->vertex_types;
+  if (planned_vertex_types)
+    out.insert(out.end(), planned_vertex_types->begin(), planned_vertex_types->end());
+  return out;
 }
 
 }  // namespace cooperage::scheme

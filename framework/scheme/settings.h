@@ -39,8 +39,14 @@ struct Settings {
   /// "no hex scheme applies", "no wedge scheme applies" or "no mixed scheme
   /// applies": a volume's refusal names the element kind it was asked for.
   std::string no_scheme_applies(int volume_id) const;
-  /// The journal's hard vertex classifications (submap), every surface's.
-  const std::vector<io::VertexTypeSetting>& vertex_types() const;
+  /// Vertex types the chosen volume schemes' plans rely on (cooper types a
+  /// side's corner that lies between two types to agree with its
+  /// neighbours); the selector sets them before it chooses the surfaces.
+  /// Null: none. Must outlive every call given these Settings.
+  const std::vector<io::VertexTypeSetting>* planned_vertex_types = nullptr;
+  /// The hard vertex classifications (submap), every surface's: the
+  /// journal's, then the planned ones.
+  std::vector<io::VertexTypeSetting> vertex_types() const;
 };
 
 }  // namespace cooperage::scheme

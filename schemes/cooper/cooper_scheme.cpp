@@ -126,6 +126,24 @@ scheme::SurfaceRoles CooperScheme::roles(const scheme::VolumeView& view) const {
   return roles;
 }
 
+// cite: Blacker 1996, sec. 3 (the sides jointly submappable).
+std::vector<io::VertexTypeSetting> CooperScheme::vertex_types(
+    const scheme::VolumeView& view) const {
+  const auto held = plan(view);
+  std::vector<io::VertexTypeSetting> out;
+  if (!held->plan.ok) return out;
+  for (const RetypedCorner& c : held->plan.lattice.retyped) {
+    io::VertexTypeSetting t;
+    t.surface = c.surface;
+    t.vertex = c.vertex;
+    t.type = c.turn > 0 ? io::VertexType::End
+                        : c.turn == 0 ? io::VertexType::Side : io::VertexType::Corner;
+    t.where.file = "volume " + std::to_string(held->plan.volume) + " (cooper)";
+    out.push_back(t);
+  }
+  return out;
+}
+
 // cite: Blacker 1996, sec. 6.1 (a stack is meshed from "an existing
 // mesh"): a cap meshed beforehand is swept as it is, whoever meshed it.
 std::vector<int> CooperScheme::takes_existing_mesh(const scheme::VolumeView& view) const {

@@ -71,6 +71,8 @@ class CooperScheme final : public scheme::VolumeScheme {
   /// scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override;
+  /// The side corners the lattice typed to agree with their neighbours.
+  std::vector<io::VertexTypeSetting> vertex_types(const scheme::VolumeView& view) const override;
   void space_curves(const scheme::VolumeView& view, const std::map<int, int>& counts,
                     std::map<int, mesh::SizeFunction>& sizes) const override;
   /// sweep_volume() on the plan. Throws MeshingError naming the volume.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace cooperage::cooper {
 namespace {
@@ -147,6 +148,36 @@ std::string one_barrel_notch(const SideLattice& lattice, const BarrelTree& tree)
   return {};
 }
 
+// A side face on both sides of one barrel end: a notch whose floor is a cap
+// of the same end as the face's own rim (a lug's cone swept up with the
+// bottom, in one barrel or under a blind hole's floor). The end is one row
+// of the face's lattice, so the face between them folds onto it. Empty when
+// there is none.
+std::string side_on_both_sides_of_an_end(const SideLattice& lattice, const BarrelTree& tree) {
+  std::map<int, std::pair<size_t, int>> end_of;  // cap -> (barrel, 0 upper / 1 lower)
+  for (size_t b = 0; b < tree.barrels.size(); ++b) {
+    for (const EndPiece& e : tree.barrels[b].upper) {
+      if (e.cap) end_of[e.cap] = {b, 0};
+    }
+    for (const EndPiece& e : tree.barrels[b].lower) {
+      if (e.cap) end_of[e.cap] = {b, 1};
+    }
+  }
+  std::map<std::tuple<int, size_t, int>, int> side_of;  // (face, barrel, end) -> leaving sign
+  for (const CapContact& c : lattice.contacts) {
+    const auto it = end_of.find(c.cap);
+    if (it == end_of.end()) continue;
+    const auto key = std::make_tuple(c.face, it->second.first, it->second.second);
+    const auto [seen, added] = side_of.emplace(key, c.leaving_sign);
+    if (added || seen->second == c.leaving_sign) continue;
+    return "side surface " + std::to_string(c.face) + " lies on both sides of the " +
+           (it->second.second ? "lower" : "upper") + " end of barrel " +
+           std::to_string(it->second.first + 1) + " (cap " + std::to_string(c.cap) +
+           " is the floor of a notch in it): its lattice folds";
+  }
+  return {};
+}
+
 // Runs the steps for one sorting of the faces.
 VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                     const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
@@ -175,6 +206,8 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   if (p.tree.barrels.size() > 1 && !p.lattice.knife_edge.empty())
     return fail(4, p.lattice.knife_edge + "; a many-to-one sweep cannot imprint subcaps there");
   if (const std::string why = one_barrel_notch(p.lattice, p.tree); !why.empty())
+    return fail(4, why);
+  if (const std::string why = side_on_both_sides_of_an_end(p.lattice, p.tree); !why.empty())
     return fail(4, why);
   if (cand.anchor.down) p.down = cand.anchor.down->normalized();
   const CapSchemeOf scheme_of = [&](int cap, std::string& why) {

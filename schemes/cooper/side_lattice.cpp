@@ -1,6 +1,7 @@
 #include "schemes/cooper/side_lattice.h"
 
 #include "framework/scheme/vertex_angles.h"
+#include "schemes/cooper/side_corner_types.h"
 
 #include <algorithm>
 #include <cmath>
@@ -167,6 +168,7 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
     }
   }
   std::map<int, std::vector<int>> dirs;  // side face -> lattice direction per use
+  std::set<int> ambiguous;               // sides typed once their neighbours are
   for (const FaceFact& f : facts.faces) {
     if (caps.count(f.id)) continue;
     if (f.loops.size() != 1 || !f.submappable) {
@@ -175,7 +177,11 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
     }
     std::string why;
     auto d = loop_directions(f, why);
-    if (d.empty()) {
+    // Corners between two types wait for the neighbours (side_corner_types.h).
+    if (has_ambiguous_corner(f.angles) && f.angles.size() == f.loops.front().size() &&
+        type_side_corners(f.angles, std::vector<int>(f.angles.size(), -1))) {
+      ambiguous.insert(f.id);
+    } else if (d.empty()) {
       out.why = why;
       return out;
     }
@@ -186,33 +192,64 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   std::map<int, int> along_parity;  // face -> 0 or 1
   std::map<int, bool> curve_along;  // decided curves
   for (const auto& [curve, list] : cap_curves) curve_along[curve] = true;
+  // Sides whose corners fit one typing first; then one with a corner between
+  // two types, typed to agree with its neighbours, and the rigid ones again.
   for (bool progress = true; progress;) {
     progress = false;
-    for (int s : out.sides) {
-      if (along_parity.count(s)) continue;
-      const auto& loop = facts.face(s)->loops.front();
-      const auto& d = dirs.at(s);
-      int parity = -1;
-      for (size_t k = 0; k < loop.size() && parity < 0; ++k) {
-        const auto it = curve_along.find(loop[k].curve);
-        if (it != curve_along.end()) parity = (d[k] + (it->second ? 0 : 1)) % 2;
-      }
-      if (parity < 0) continue;
-      for (size_t k = 0; k < loop.size(); ++k) {
-        const bool along = d[k] % 2 == parity;
-        const auto [it, added] = curve_along.emplace(loop[k].curve, along);
-        if (!added && it->second != along) {
-          out.why =
-              "curve " + std::to_string(loop[k].curve) + " runs " +
-              (it->second ? "along the caps" : "between the caps") +
-              " for a neighbour of side surface " + std::to_string(s) + " but " +
-              (along ? "along" : "between") +
-              " them in its lattice; the sides are not jointly submappable (Blacker 1996, Fig. 5)";
-          return out;
+    for (int pass = 0; pass < 2 && !progress; ++pass) {
+      for (int s : out.sides) {
+        if (along_parity.count(s) || (pass == 0 && ambiguous.count(s))) continue;
+        const auto& loop = facts.face(s)->loops.front();
+        std::vector<int> decided(loop.size(), -1);
+        bool any = false;
+        for (size_t k = 0; k < loop.size(); ++k) {
+          const auto it = curve_along.find(loop[k].curve);
+          if (it == curve_along.end()) continue;
+          decided[k] = it->second ? 1 : 0;
+          any = true;
         }
+        if (!any) continue;
+        int parity = -1;
+        if (ambiguous.count(s)) {
+          if (const auto t = type_side_corners(facts.face(s)->angles, decided)) {
+            dirs[s] = t->directions;
+            parity = t->parity;
+            for (size_t k = 0; k < loop.size(); ++k) {
+              const auto own = scheme::classify_angle(facts.face(s)->angles[k]);
+              if (own && static_cast<int>(*own) == t->turns[k]) continue;
+              out.retyped.push_back({s, vertex_at_start(facts, loop[k]), t->turns[k]});
+            }
+          }
+        }
+        const auto& d = dirs.at(s);
+        if (parity < 0) {
+          if (d.empty()) {
+            out.why = "the corners of side surface " + std::to_string(s) +
+                      " take no types that agree with its neighbours (no lattice)";
+            return out;
+          }
+          for (size_t k = 0; k < loop.size() && parity < 0; ++k) {
+            if (decided[k] >= 0) parity = (d[k] + (decided[k] ? 0 : 1)) % 2;
+          }
+        }
+        for (size_t k = 0; k < loop.size(); ++k) {
+          const bool along = d[k] % 2 == parity;
+          const auto [it, added] = curve_along.emplace(loop[k].curve, along);
+          if (!added && it->second != along) {
+            out.why =
+                "curve " + std::to_string(loop[k].curve) + " runs " +
+                (it->second ? "along the caps" : "between the caps") +
+                " for a neighbour of side surface " + std::to_string(s) + " but " +
+                (along ? "along" : "between") +
+                " them in its lattice; the sides are not jointly submappable (Blacker 1996, "
+                "Fig. 5)";
+            return out;
+          }
+        }
+        along_parity[s] = parity;
+        progress = true;
+        if (pass == 1) break;  // the rigid sides again first
       }
-      along_parity[s] = parity;
-      progress = true;
     }
   }
   for (int s : out.sides) {

@@ -57,6 +57,14 @@ struct StackedCurve {
   int level_class = -1;
 };
 
+/// A side's corner typed otherwise than its angle alone says, to agree
+/// with its neighbours (side_corner_types.h): submap must type it so too.
+struct RetypedCorner {
+  int surface = 0;
+  int vertex = 0;
+  int turn = 0;  ///< END 1, SIDE 0, CORNER -1
+};
+
 struct SideLattice {
   bool ok = false;
   std::string why;                ///< for !ok: a sentence naming the faces
@@ -78,6 +86,7 @@ struct SideLattice {
   /// Ribs leaving a cap tangentially: their first interval must be at least
   /// first_size long (the interval constraints grade the curve `along`).
   std::vector<TangentDeparture> graded;
+  std::vector<RetypedCorner> retyped;
 };
 
 /// Upper bound of an end cap's dihedral angle with its sides [degrees]; the

@@ -688,6 +688,30 @@ TEST(CooperMany, BlindHoleFloorAcrossAConeTipMeshes) {
   }
 }
 
+// A lug on a block's wall with a 45-degree cone under it (the plan => mesh
+// campaign, fuzz/parity_campaign.py --seed 3 case 75). The wall's notch has
+// chamfered floor corners at 225 degrees, between SIDE and CORNER; their
+// own types (one each way by rounding) disagreed with the cone beside them
+// and no sorting fitted. Now the corners take the types the cone needs
+// (side_corner_types.h) and submap is handed them.
+TEST(CooperMany, LugWithAFortyFiveDegreeConeUnderItMeshes) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {62.43, 49.66, 15.93});
+  wb.cylinder("lug", {62.43, 20.98, 6.98}, {0, 0, 1}, 5.66, 8.95);
+  wb.cone("under", {62.43, 20.98, 4.08}, {0, 0, 1}, 2.74, 5.66, 2.9);
+  wb.fuse("part", {"block", "lug", "under"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto r = pipeline::mesh_model(model, sized(2.05), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  const double exact = model.volume(1).volume;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper III] lug over a 45-degree cone, size 2.05: %zu hexes, min SJ %.4f\n",
+              s.hexes, s.min_sj);
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
