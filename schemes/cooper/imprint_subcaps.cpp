@@ -545,8 +545,8 @@ Imprinter::Undo Imprinter::undo_point() const {
   return {r_.interior_ribs.size(), r_.seams.size(), r_.steps.size(), next_node_};
 }
 
-void Imprinter::roll_back(int e, const Loop& gap, const Undo& undo) {
-  for (int v : gap) {
+void Imprinter::roll_back(int e, const Loop& fresh, const Undo& undo) {
+  for (int v : fresh) {
     const auto p = partner(e, v);
     if (!p) continue;
     partner_[e].erase(v);
@@ -581,6 +581,10 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
       seam_gap_to_arc(e, gap, x, y, common))
     return true;
   const Undo undo = undo_point();
+  Loop fresh;  // the gap's nodes without a rib yet (a run through a hole has some)
+  for (int v : gap) {
+    if (!partner(e, v)) fresh.push_back(v);
+  }
   Loop path;
   for (int v : gap) path.push_back(project(e, v, a.loops.front()));
   const Loop outer = caps(1 - e)[bi].loops.front();
@@ -607,7 +611,7 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
         join_holes(e, a, r0, path, r1, bi))
       return true;
     // No split: ribs to nodes on no subcap would end later gaps nowhere.
-    roll_back(e, gap, undo);
+    roll_back(e, fresh, undo);
     return false;
   }
   auto [left, right] = split_loop(outer, x, path, y);

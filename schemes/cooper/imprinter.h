@@ -99,13 +99,14 @@ class Imprinter {
   // are projected, the piece between them leaves bi and the two holes join.
   bool join_holes(int e, const Subcap& a, int r0, const Loop& path, int r1, size_t bi);
   bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
-  // The ribs a gap's projection made, taken back when it split nothing.
+  // The ribs a gap's projection made (from the nodes in `fresh`, unribbed
+  // before it), taken back when it split nothing.
   struct Undo {
     size_t interior_ribs, seams, steps;
     int next_node;
   };
   Undo undo_point() const;
-  void roll_back(int e, const Loop& gap, const Undo& undo);
+  void roll_back(int e, const Loop& fresh, const Undo& undo);
   // A gap node lies outside subcap bi of the opposing end by more than a
   // tenth of its edges (`around` is the gap's loop, for their length).
   bool gap_leaves_subcap(int e, const Loop& gap, const Loop& around, size_t bi);
