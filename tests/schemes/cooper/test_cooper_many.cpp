@@ -712,6 +712,28 @@ TEST(CooperMany, LugWithAFortyFiveDegreeConeUnderItMeshes) {
               s.hexes, s.min_sj);
 }
 
+// A lug with a cone 31 degrees off the plane under it (the campaign's seed 3
+// case 147): with caps facing the axis within 30 degrees the cone was a
+// side and the hexes beside it reached a scaled Jacobian of 0.03; within 35
+// it is a lower cap of the lug's barrel.
+TEST(CooperMany, LugWithAShallowConeUnderItSweepsTheConeAsACap) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {32.36, 38.92, 28.08});
+  wb.cylinder("lug", {32.36, 24.48, 14.32}, {0, 0, 1}, 10.22, 13.76);
+  wb.cone("under", {32.36, 24.48, 9.07}, {0, 0, 1}, 1.53, 10.22, 5.25);
+  wb.fuse("part", {"block", "lug", "under"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto r = pipeline::mesh_model(model, sized(4.057), *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  const double exact = model.volume(1).volume;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // chords
+  EXPECT_GE(s.min_sj, 0.3);
+  std::printf("[cooper III] lug over a 31-degree cone, size 4.057: %zu hexes, min SJ %.4f\n",
+              s.hexes, s.min_sj);
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
