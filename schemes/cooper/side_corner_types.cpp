@@ -12,15 +12,21 @@ namespace {
 using scheme::VertexType;
 
 // Types a corner may take: its angle's own first (when it has one), then
-// any other within kCornerRetypeDeg of its ideal.
-std::vector<int> corner_options(double angle) {
-  std::vector<int> out;
+// any other within kCornerRetypeDeg of its ideal. The ideals lie 90 degrees
+// apart, so there are at most two, and they are consecutive turns.
+struct CornerOptions {
+  int turn[2] = {0, 0};
+  int count = 0;
+};
+
+CornerOptions corner_options(double angle) {
+  CornerOptions out;
   const auto own = scheme::classify_angle(angle);
-  if (own && *own != VertexType::Reversal) out.push_back(static_cast<int>(*own));
+  if (own && *own != VertexType::Reversal) out.turn[out.count++] = static_cast<int>(*own);
   for (VertexType t : {VertexType::End, VertexType::Side, VertexType::Corner}) {
-    const int v = static_cast<int>(t);
-    if (own && *own == t) continue;
-    if (std::abs(angle - scheme::ideal_angle_degrees(t)) <= kCornerRetypeDeg) out.push_back(v);
+    if (out.count == 2 || (own && *own == t)) continue;
+    if (std::abs(angle - scheme::ideal_angle_degrees(t)) <= kCornerRetypeDeg)
+      out.turn[out.count++] = static_cast<int>(t);
   }
   return out;
 }
@@ -29,10 +35,9 @@ double departure(double angle, int turn) {
   return std::abs(angle - scheme::ideal_angle_degrees(static_cast<VertexType>(turn)));
 }
 
-std::vector<int> directions_of(const std::vector<int>& turn) {
-  std::vector<int> d(turn.size());
+void directions_of(const std::vector<int>& turn, std::vector<int>& d) {
+  d.assign(turn.size(), 0);
   for (size_t k = 1; k < turn.size(); ++k) d[k] = ((d[k - 1] + turn[k]) % 4 + 4) % 4;
-  return d;
 }
 
 // The parity that makes the directions agree with `decided` (0 when
@@ -55,52 +60,56 @@ constexpr size_t kMaxAmbiguous = 12;  // 4,096 typings at most
 bool has_ambiguous_corner(const std::vector<double>& angles) {
   int sum = 0;
   for (double a : angles) {
-    const auto options = corner_options(a);
-    if (options.size() > 1) return true;
-    if (!options.empty()) sum += options.front();
+    const CornerOptions o = corner_options(a);
+    if (o.count > 1) return true;
+    if (o.count == 1) sum += o.turn[0];
   }
   return sum != 4;
+}
+
+bool can_turn_four(const std::vector<double>& angles) {
+  int lo = 0, hi = 0;
+  for (double a : angles) {
+    const CornerOptions o = corner_options(a);
+    if (o.count == 0) return false;
+    lo += std::min(o.turn[0], o.turn[o.count - 1]);
+    hi += std::max(o.turn[0], o.turn[o.count - 1]);
+  }
+  return lo <= 4 && 4 <= hi;  // options are consecutive turns: every sum between
 }
 
 std::optional<SideTyping> type_side_corners(const std::vector<double>& angles,
                                             const std::vector<int>& decided) {
   const size_t n = angles.size();
   if (n == 0 || decided.size() != n) return std::nullopt;
-  std::vector<std::vector<int>> options(n);
+  std::vector<CornerOptions> options(n);
   std::vector<size_t> free;
   for (size_t k = 0; k < n; ++k) {
     options[k] = corner_options(angles[k]);
-    if (options[k].empty()) return std::nullopt;
-    if (options[k].size() > 1) free.push_back(k);
+    if (options[k].count == 0) return std::nullopt;
+    if (options[k].count > 1) free.push_back(k);
   }
   if (free.size() > kMaxAmbiguous) free.clear();  // the angles' own types only
   std::optional<SideTyping> best;
   double best_cost = std::numeric_limits<double>::infinity();
-  std::vector<int> turn(n);
-  for (size_t k = 0; k < n; ++k) turn[k] = options[k].front();
-  // Mixed-radix count over the free corners, the angles' own types first.
-  std::vector<size_t> pick(free.size(), 0);
-  for (;;) {
-    for (size_t f = 0; f < free.size(); ++f) turn[free[f]] = options[free[f]][pick[f]];
+  std::vector<int> turn(n), d;
+  for (size_t k = 0; k < n; ++k) turn[k] = options[k].turn[0];
+  // Binary count over the free corners, the angles' own types first.
+  for (unsigned long pick = 0; pick < (1UL << free.size()); ++pick) {
+    for (size_t f = 0; f < free.size(); ++f) turn[free[f]] = options[free[f]].turn[(pick >> f) & 1];
     int sum = 0;
     double cost = 0;
     for (size_t k = 0; k < n; ++k) {
       sum += turn[k];
       cost += departure(angles[k], turn[k]);
     }
-    if (sum == 4 && cost < best_cost) {
-      const std::vector<int> d = directions_of(turn);
-      const int parity = agreeing_parity(d, decided);
-      if (parity >= 0) {
-        best = SideTyping{turn, d, parity};
-        best_cost = cost;
-        if (free.empty() || std::all_of(pick.begin(), pick.end(), [](size_t p) { return p == 0; }))
-          return best;  // the angles' own types agree: nothing to choose
-      }
-    }
-    size_t f = 0;
-    while (f < free.size() && ++pick[f] == options[free[f]].size()) pick[f++] = 0;
-    if (f == free.size()) break;
+    if (sum != 4 || cost >= best_cost) continue;
+    directions_of(turn, d);
+    const int parity = agreeing_parity(d, decided);
+    if (parity < 0) continue;
+    best = SideTyping{turn, d, parity};
+    best_cost = cost;
+    if (pick == 0) return best;  // the angles' own types agree: nothing to choose
   }
   return best;
 }

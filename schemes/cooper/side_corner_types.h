@@ -30,6 +30,10 @@ constexpr double kCornerRetypeDeg = 60.0;
 /// by four quarter turns: the typing then waits for the neighbours.
 bool has_ambiguous_corner(const std::vector<double>& angles);
 
+/// Some typing of the corners (each within kCornerRetypeDeg of its type's
+/// ideal) turns by four quarter turns.
+bool can_turn_four(const std::vector<double>& angles);
+
 /// The typing of a loop with corner angles `angles` that agrees with
 /// `decided` (per use: 1 runs along the caps, 0 between them, -1 not known
 /// yet; with none known, parity 0 and any typing agrees), turns by four quarter turns, and keeps each

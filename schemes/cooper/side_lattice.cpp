@@ -179,7 +179,7 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
     auto d = loop_directions(f, why);
     // Corners between two types wait for the neighbours (side_corner_types.h).
     if (has_ambiguous_corner(f.angles) && f.angles.size() == f.loops.front().size() &&
-        type_side_corners(f.angles, std::vector<int>(f.angles.size(), -1))) {
+        can_turn_four(f.angles)) {
       ambiguous.insert(f.id);
     } else if (d.empty()) {
       out.why = why;

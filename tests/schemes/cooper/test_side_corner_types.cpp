@@ -32,6 +32,9 @@ TEST(SideCornerTypes, TheAnglesOwnTypesWhenTheyAgree) {
   expect_agrees(*t, decided);
   EXPECT_FALSE(has_ambiguous_corner({90, 90, 90, 90}));
   EXPECT_TRUE(has_ambiguous_corner(kWall));
+  EXPECT_TRUE(can_turn_four(kWall));
+  EXPECT_FALSE(can_turn_four({90, 90, 90}));         // three right angles turn by three
+  EXPECT_TRUE(can_turn_four({90, 90, 90, 140, 90}));  // 140 as a SIDE
 }
 
 TEST(SideCornerTypes, AChamferedNotchTakesTheTypesItsNeighboursNeed) {
