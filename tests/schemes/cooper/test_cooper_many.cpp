@@ -688,6 +688,29 @@ TEST(CooperMany, BlindHoleFloorAcrossAConeTipMeshes) {
   }
 }
 
+// A block with a lug centred on its wall x = block.x from z0 to the top and
+// a cone under it (radius tip_r at tip_z up to the lug's radius at z0),
+// meshed automatically at `size`: cooper, the volume within 1 % (chords),
+// no hex below a scaled Jacobian of 0.3.
+void expect_lug_over_cone_meshes(const geom::Vec3& block, double y, double z0, double r,
+                                 double tip_z, double tip_r, double size, const char* name) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, block);
+  wb.cylinder("lug", {block.x(), y, z0}, {0, 0, 1}, r, block.z() - z0);
+  wb.cone("under", {block.x(), y, tip_z}, {0, 0, 1}, tip_r, r, z0 - tip_z);
+  wb.fuse("part", {"block", "lug", "under"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto res = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
+  EXPECT_EQ(res.plan.volumes.at(1).scheme, "cooper") << name;
+  const Summary s = check_mesh(model, res.mesh);
+  const double exact = model.volume(1).volume;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact) << name;
+  EXPECT_GE(s.min_sj, 0.3) << name;
+  std::printf("[cooper III] %s, size %g: %zu hexes, min SJ %.4f\n", name, size, s.hexes,
+              s.min_sj);
+}
+
 // A lug on a block's wall with a 45-degree cone under it (the plan => mesh
 // campaign, fuzz/parity_campaign.py --seed 3 case 75). The wall's notch has
 // chamfered floor corners at 225 degrees, between SIDE and CORNER; their
@@ -695,21 +718,8 @@ TEST(CooperMany, BlindHoleFloorAcrossAConeTipMeshes) {
 // and no sorting fitted. Now the corners take the types the cone needs
 // (side_corner_types.h) and submap is handed them.
 TEST(CooperMany, LugWithAFortyFiveDegreeConeUnderItMeshes) {
-  occ::Workbench wb;
-  wb.brick("block", {0, 0, 0}, {62.43, 49.66, 15.93});
-  wb.cylinder("lug", {62.43, 20.98, 6.98}, {0, 0, 1}, 5.66, 8.95);
-  wb.cone("under", {62.43, 20.98, 4.08}, {0, 0, 1}, 2.74, 5.66, 2.9);
-  wb.fuse("part", {"block", "lug", "under"});
-  const geom::Model model = wb.build_model();
-  const auto registry = builtin();
-  const auto r = pipeline::mesh_model(model, sized(2.05), *registry, selector::mesh_options());
-  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
-  const double exact = model.volume(1).volume;
-  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // chords
-  EXPECT_GE(s.min_sj, 0.3);
-  std::printf("[cooper III] lug over a 45-degree cone, size 2.05: %zu hexes, min SJ %.4f\n",
-              s.hexes, s.min_sj);
+  expect_lug_over_cone_meshes({62.43, 49.66, 15.93}, 20.98, 6.98, 5.66, 4.08, 2.74, 2.05,
+                              "lug over a 45-degree cone");
 }
 
 // A lug with a cone 31 degrees off the plane under it (the campaign's seed 3
@@ -717,21 +727,8 @@ TEST(CooperMany, LugWithAFortyFiveDegreeConeUnderItMeshes) {
 // side and the hexes beside it reached a scaled Jacobian of 0.03; within 35
 // it is a lower cap of the lug's barrel.
 TEST(CooperMany, LugWithAShallowConeUnderItSweepsTheConeAsACap) {
-  occ::Workbench wb;
-  wb.brick("block", {0, 0, 0}, {32.36, 38.92, 28.08});
-  wb.cylinder("lug", {32.36, 24.48, 14.32}, {0, 0, 1}, 10.22, 13.76);
-  wb.cone("under", {32.36, 24.48, 9.07}, {0, 0, 1}, 1.53, 10.22, 5.25);
-  wb.fuse("part", {"block", "lug", "under"});
-  const geom::Model model = wb.build_model();
-  const auto registry = builtin();
-  const auto r = pipeline::mesh_model(model, sized(4.057), *registry, selector::mesh_options());
-  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
-  const double exact = model.volume(1).volume;
-  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // chords
-  EXPECT_GE(s.min_sj, 0.3);
-  std::printf("[cooper III] lug over a 31-degree cone, size 4.057: %zu hexes, min SJ %.4f\n",
-              s.hexes, s.min_sj);
+  expect_lug_over_cone_meshes({32.36, 38.92, 28.08}, 24.48, 14.32, 10.22, 9.07, 1.53, 4.057,
+                              "lug over a 31-degree cone");
 }
 
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
