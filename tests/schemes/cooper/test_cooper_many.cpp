@@ -632,6 +632,28 @@ TEST(CooperMany, RoundBossAboveARoundFootMeshes) {
               s.hexes, s.min_sj);
 }
 
+// A journal of tests/schemes/cooper/data meshed by cooper (with the polygon
+// mesher) at each of `sizes`: the volume within 1 % of `exact` (chords),
+// no hex below `min_sj`.
+void expect_data_journal_meshes(const char* file, double exact, std::vector<double> sizes,
+                                double min_sj) {
+  const auto registry = with_polygon_mesher();
+  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
+                                       "/tests/schemes/cooper/data/" + file);
+  const geom::Model model = pipeline::build_geometry(job);
+  for (double size : sizes) {
+    io::MeshSettings settings = *job.mesh;
+    settings.size = size;
+    const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
+    EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper") << file << " " << size;
+    const Summary s = check_mesh(model, r.mesh);
+    EXPECT_NEAR(s.volume, exact, 0.01 * exact) << file << " " << size;
+    EXPECT_GE(s.min_sj, min_sj) << file << " " << size;
+    std::printf("[cooper] %s, size %g: %zu hexes, min scaled Jacobian %.4f\n", file, size,
+                s.hexes, s.min_sj);
+  }
+}
+
 // A lug with a conical underside on a block's wall, swept from the top
 // (data/cooper_lug_cone_underside.xml; issue 15, gmsh_918_pump_carter_sup in
 // small): the cone's subcap is meshed by the polygon mesher in its barrel's
@@ -639,24 +661,8 @@ TEST(CooperMany, RoundBossAboveARoundFootMeshes) {
 // By the barrel's map alone it lay up to 3.5 off its rim and the hexes over
 // it were poor (min scaled Jacobian 0.39 to 0.55 at these sizes).
 TEST(CooperMany, LugWithAConicalUndersideMeshesWell) {
-  const auto registry = with_polygon_mesher();
-  const io::Job job = io::read_journal(std::string(COOPERAGE_SOURCE_DIR) +
-                                       "/tests/schemes/cooper/data/cooper_lug_cone_underside.xml");
-  const geom::Model model = pipeline::build_geometry(job);
-  const double exact = 72000.0 + 1000.0 * M_PI + 248.0 * M_PI / 3.0;
-  for (double size : {2.5, 3.0, 3.5}) {
-    io::MeshSettings settings = *job.mesh;
-    settings.size = size;
-    const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
-    EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
-    const Summary s = check_mesh(model, r.mesh);
-    EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;  // chords
-    EXPECT_GE(s.min_sj, 0.6) << size;
-    std::printf(
-        "[cooper II] cooper_lug_cone_underside.xml, size %g: %zu hexes, min scaled "
-        "Jacobian %.4f\n",
-        size, s.hexes, s.min_sj);
-  }
+  expect_data_journal_meshes("cooper_lug_cone_underside.xml",
+                             72000.0 + 1000.0 * M_PI + 248.0 * M_PI / 3.0, {2.5, 3.0, 3.5}, 0.6);
 }
 
 // Blind holes on the lug (data/cooper_blind_holes_across_cone_tip.xml;
@@ -667,25 +673,10 @@ TEST(CooperMany, LugWithAConicalUndersideMeshesWell) {
 // onto the opposing boundary where their projection would leave the subcap
 // or cut a flat quad, and a hole touching the outer loop is split through.
 TEST(CooperMany, BlindHoleFloorAcrossAConeTipMeshes) {
-  const auto registry = with_polygon_mesher();
-  const io::Job job = io::read_journal(
-      std::string(COOPERAGE_SOURCE_DIR) +
-      "/tests/schemes/cooper/data/cooper_blind_holes_across_cone_tip.xml");
-  const geom::Model model = pipeline::build_geometry(job);
-  const double exact = 72000.0 + 1000.0 * M_PI + 248.0 * M_PI / 3.0 - 250.0 * M_PI - 135.0 * M_PI;
-  for (double size : {1.5, 2.0, 2.5, 3.0}) {
-    io::MeshSettings settings = *job.mesh;
-    settings.size = size;
-    const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
-    EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
-    const Summary s = check_mesh(model, r.mesh);
-    EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;  // chords
-    EXPECT_GE(s.min_sj, 0.3) << size;
-    std::printf(
-        "[cooper III] cooper_blind_holes_across_cone_tip.xml, size %g: %zu hexes, min scaled "
-        "Jacobian %.4f\n",
-        size, s.hexes, s.min_sj);
-  }
+  expect_data_journal_meshes(
+      "cooper_blind_holes_across_cone_tip.xml",
+      72000.0 + 1000.0 * M_PI + 248.0 * M_PI / 3.0 - 250.0 * M_PI - 135.0 * M_PI,
+      {1.5, 2.0, 2.5, 3.0}, 0.3);
 }
 
 // A block with a lug centred on its wall x = block.x from z0 to the top and
