@@ -129,25 +129,6 @@ std::string shared_edge_stretch(const VolumeFacts& facts, const SweepOrder& orde
   return {};
 }
 
-// In one barrel every chain of a side runs from one end to the other, so a
-// side face has two (its ends' rims between them) or none (a band). A face
-// with more is a wall whose notch ends on a cap of the same end as the wall's
-// own rim (a lug with a conical underside on a block's wall, swept up from
-// the bottom and the cone together): its lattice would put the notch's floor
-// on the wall's bottom row. Empty when there is none; the many-to-one sorting
-// (the cone a lower cap of the lug's barrel) may still hold.
-std::string one_barrel_notch(const SideLattice& lattice, const BarrelTree& tree) {
-  if (tree.barrels.size() != 1) return {};
-  std::map<int, int> chains;
-  for (const LinkChain& c : lattice.chains) ++chains[c.face];
-  for (const auto& [face, n] : chains) {
-    if (n <= 2) continue;
-    return "side surface " + std::to_string(face) + " has " + std::to_string(n) +
-           " chains between the ends; in one barrel its lattice folds a notch onto its own rim";
-  }
-  return {};
-}
-
 // A side face on both sides of one barrel end: a notch whose floor is a cap
 // of the same end as the face's own rim (a lug's cone swept up with the
 // bottom, in one barrel or under a blind hole's floor). The end is one row
@@ -205,8 +186,6 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   // slot wall 0.1 mm beside it). One barrel has nothing to imprint.
   if (p.tree.barrels.size() > 1 && !p.lattice.knife_edge.empty())
     return fail(4, p.lattice.knife_edge + "; a many-to-one sweep cannot imprint subcaps there");
-  if (const std::string why = one_barrel_notch(p.lattice, p.tree); !why.empty())
-    return fail(4, why);
   if (const std::string why = side_on_both_sides_of_an_end(p.lattice, p.tree); !why.empty())
     return fail(4, why);
   if (cand.anchor.down) p.down = cand.anchor.down->normalized();
