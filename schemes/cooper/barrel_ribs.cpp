@@ -197,6 +197,12 @@ void make_charts(SweepState& s) {
     Vec3 d = st.to_lower.to_centre - st.to_lower.from_centre;
     if (!(d.norm() > 0)) fail(s.vid, s.barrel_name(b) + ": its two rings have one centre");
     d.normalize();
+    // In a straight sweep every barrel's chart faces the sweep axis. The
+    // centres' offset leans where a thin barrel's rings shift sideways (a
+    // dome's slice over a countersink shrinking inward: occt_screw's first
+    // barrel leaned 22 degrees, and the nodes imprinted on its lower end
+    // fell 0.9 under their ring, inverting a hex below at D/35 to D/100).
+    if (s.plan.down && s.plan.down->dot(d) > 0) d = s.plan.down->normalized();
     // A barrel that turns back (a ring swept half a turn or more, from one
     // end wall round to the other) has its ring centres side by side or
     // behind the way its ribs leave: a chart across that line sees the upper
