@@ -67,6 +67,26 @@ Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower) {
   return wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero();
 }
 
+// The height along d of a new node of a virtual lower end: the lower ring's
+// heights, weighted as in ring_offset. Through the map of the upper end's
+// mean plane, a node under a curved upper end (a dome's slice beside a
+// slot) inherits the map's fit of that curve and fell up to 0.9 under a
+// flat lower ring, inverting a hex of the barrel below.
+double lower_ring_height(const SweepState& s, size_t b, const Vec2& at, double fallback) {
+  const BarrelState& st = s.barrels[b];
+  double sum = 0, wsum = 0;
+  for (const auto& rib : st.ribs) {
+    const Vec2 q = s.plane(b, s.db.node(rib.front()));
+    const double h = s.db.node(rib.back()).dot(st.d);
+    const double d2 = (q - at).squaredNorm();
+    if (d2 <= 0) return h;
+    const double w = 1.0 / (d2 * std::sqrt(d2));
+    sum += w * h;
+    wsum += w;
+  }
+  return wsum > 0 ? sum / wsum : fallback;
+}
+
 // Applies one barrel's imprint result; true when a subcap or rib changed.
 bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r) {
   BarrelState& st = s.barrels[b];
@@ -99,7 +119,10 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
     const bool lower = lower_nodes.count(id) > 0;
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(piece_of_node.at(id))];
-    if (!p.cap) x += ring_offset(s, b, p2, lower);
+    if (!p.cap) {
+      x += ring_offset(s, b, p2, lower);
+      if (lower) x += (lower_ring_height(s, b, p2, x.dot(st.d)) - x.dot(st.d)) * st.d;
+    }
     int n;
     if (p.cap) {
       x = s.model.surface(p.cap).geometry->project(x).point;
