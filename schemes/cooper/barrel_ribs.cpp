@@ -201,7 +201,7 @@ void make_charts(SweepState& s) {
     // centres' offset leans where a thin barrel's rings shift sideways (a
     // dome's slice over a countersink shrinking inward: occt_screw's first
     // barrel leaned 22 degrees, and the nodes imprinted on its lower end
-    // fell 0.9 under their ring, inverting a hex below at D/35 to D/100).
+    // fell 0.9 under their ring, inverting a hex below at D/25 to D/100).
     if (s.plan.down && s.plan.down->dot(d) > 0) d = s.plan.down->normalized();
     // A barrel that turns back (a ring swept half a turn or more, from one
     // end wall round to the other) has its ring centres side by side or
