@@ -48,16 +48,24 @@ BarrelEnds ends_of(const SweepState& s, size_t b) {
 // the plane (upper end) or from the map of the upper ring (lower end),
 // weighted by inverse distance (power 3) in the chart. A node placed on
 // the mean plane instead lay 1 mm below the cone under it, and the hex
-// between them inverted (gmsh_918_pump_carter_sup).
-Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower) {
+// between them inverted (gmsh_918_pump_carter_sup). On a lower end the
+// height along d is the lower ring's own, measured from the node's `base`:
+// through the map of the upper end's mean plane, a node under a curved
+// upper end (a dome's slice beside a slot) inherited the map's fit of that
+// curve and fell up to 0.9 under a flat lower ring, inverting a hex below.
+Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower, const Vec3& base) {
   const BarrelState& st = s.barrels[b];
   Vec3 sum = Vec3::Zero();
   double wsum = 0;
   for (const auto& rib : st.ribs) {
     const Vec3& top = s.db.node(rib.front());
     const Vec2 q = s.plane(b, top);
-    const Vec3 offset = lower ? Vec3(s.db.node(rib.back()) - st.to_lower.apply(top))
-                              : Vec3((top.dot(st.d) - st.level) * st.d);
+    Vec3 offset = (top.dot(st.d) - st.level) * st.d;
+    if (lower) {
+      const Vec3& bottom = s.db.node(rib.back());
+      offset = bottom - st.to_lower.apply(top);
+      offset += ((bottom - base).dot(st.d) - offset.dot(st.d)) * st.d;
+    }
     const double d2 = (q - at).squaredNorm();
     if (d2 <= 0) return offset;
     const double w = 1.0 / (d2 * std::sqrt(d2));
@@ -65,26 +73,6 @@ Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower) {
     wsum += w;
   }
   return wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero();
-}
-
-// The height along d of a new node of a virtual lower end: the lower ring's
-// heights, weighted as in ring_offset. Through the map of the upper end's
-// mean plane, a node under a curved upper end (a dome's slice beside a
-// slot) inherits the map's fit of that curve and fell up to 0.9 under a
-// flat lower ring, inverting a hex of the barrel below.
-double lower_ring_height(const SweepState& s, size_t b, const Vec2& at, double fallback) {
-  const BarrelState& st = s.barrels[b];
-  double sum = 0, wsum = 0;
-  for (const auto& rib : st.ribs) {
-    const Vec2 q = s.plane(b, s.db.node(rib.front()));
-    const double h = s.db.node(rib.back()).dot(st.d);
-    const double d2 = (q - at).squaredNorm();
-    if (d2 <= 0) return h;
-    const double w = 1.0 / (d2 * std::sqrt(d2));
-    sum += w * h;
-    wsum += w;
-  }
-  return wsum > 0 ? sum / wsum : fallback;
 }
 
 // Applies one barrel's imprint result; true when a subcap or rib changed.
@@ -119,10 +107,7 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
     const bool lower = lower_nodes.count(id) > 0;
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(piece_of_node.at(id))];
-    if (!p.cap) {
-      x += ring_offset(s, b, p2, lower);
-      if (lower) x += (lower_ring_height(s, b, p2, x.dot(st.d)) - x.dot(st.d)) * st.d;
-    }
+    if (!p.cap) x += ring_offset(s, b, p2, lower, x);
     int n;
     if (p.cap) {
       x = s.model.surface(p.cap).geometry->project(x).point;
