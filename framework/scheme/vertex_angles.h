@@ -40,12 +40,16 @@ struct LoopCorner {
 /// Interior angles at every junction of loop `loop_index` of a surface, in
 /// loop order (corner k sits before uses[k]). The angle is measured in the
 /// tangent plane with the surface's natural normal, so 90 and 270 degrees
-/// are told apart on curved faces too.
+/// are told apart on curved faces too; where the curves leave along one
+/// line, chords a little way along them tell a cusp (0) from a slit (360).
 std::vector<LoopCorner> loop_corners(const geom::Model& model, int surface_id, int loop_index);
 
 /// The sharpest corner over all loops of a surface (smallest angle), or none
-/// when no loop has a junction. No element at a corner of angle a has a
-/// scaled Jacobian above sin(a): the --dim 2 fallback and `info` use it.
+/// when no loop has a junction. Where several loops pass through a vertex
+/// (a hole touching the outer loop) the angle is the face's narrowest
+/// opening there, 0 for a circle touching a line. No element at a corner of
+/// angle a has a scaled Jacobian above sin(a): the --dim 2 fallback and
+/// `info` use it.
 std::optional<LoopCorner> sharpest_corner(const geom::Model& model, int surface_id);
 
 /// Groups the uses of a single-loop surface into logical sides between END
