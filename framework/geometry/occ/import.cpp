@@ -13,6 +13,7 @@
 #include "framework/core/isolate.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/exchange.h"
 #include "framework/geometry/validate.h"
 
 #include <BRepBndLib.hxx>
@@ -23,14 +24,8 @@
 #include <BRepTools.hxx>
 #include <BinTools.hxx>
 #include <BRep_Builder.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
-#include <IGESData_IGESModel.hxx>
-#include <Interface_Static.hxx>
-#include <STEPControl_Reader.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Solid.hxx>
-#include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
@@ -50,86 +45,8 @@
 namespace cooperage::occ {
 namespace {
 
-struct Unit {
-  const char* occt;  ///< name understood by "xstep.cascade.unit"
-  double metres;
-};
-
-/// Length unit from a STEP/IGES unit name ("MM", "MILLIMETRE", "INCH", ...).
-bool unit_from_name(std::string name, Unit& unit) {
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  static const struct {
-    const char* names[4];
-    Unit unit;
-  } table[] = {
-      {{"MM", "MILLIMETRE", "MILLIMETER", nullptr}, {"MM", 1e-3}},
-      {{"M", "METRE", "METER", nullptr}, {"M", 1.0}},
-      {{"CM", "CENTIMETRE", "CENTIMETER", nullptr}, {"CM", 1e-2}},
-      {{"KM", "KILOMETRE", "KILOMETER", nullptr}, {"KM", 1e3}},
-      {{"UM", "MICROMETRE", "MICROMETER", "MICRON"}, {"UM", 1e-6}},
-      {{"INCH", "IN", "INCHES", nullptr}, {"INCH", 0.0254}},
-      {{"FT", "FOOT", "FEET", nullptr}, {"FT", 0.3048}},
-      {{"MI", "MILE", nullptr, nullptr}, {"MI", 1609.344}},
-      {{"MIL", nullptr, nullptr, nullptr}, {"MIL", 2.54e-5}},
-      {{"UIN", "MICROINCH", nullptr, nullptr}, {"UIN", 2.54e-8}},
-  };
-  for (const auto& row : table)
-    for (const char* n : row.names)
-      if (n && name == n) {
-        unit = row.unit;
-        return true;
-      }
-  return false;
-}
-
 [[noreturn]] void parse_error(const std::string& path, const std::string& why) {
   throw MeshingError(ErrorCode::ParseError, path + ": " + why);
-}
-
-TopoDS_Shape read_step(const std::string& path, Unit& unit) {
-  STEPControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
-    parse_error(path, "not a readable STEP file");
-  TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
-  reader.FileUnits(lengths, angles, solid_angles);
-  if (lengths.Length() > 0) unit_from_name(lengths.First().ToCString(), unit);
-  Interface_Static::SetCVal("xstep.cascade.unit", unit.occt);
-  reader.SetSystemLengthUnit(unit.metres * 1000.0);
-  if (reader.NbRootsForTransfer() <= 0) parse_error(path, "the STEP file holds no shape");
-  reader.TransferRoots();
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  if (reader.NbShapes() <= 0) parse_error(path, "no shape could be read from the STEP file");
-  return reader.OneShape();
-}
-
-TopoDS_Shape read_iges(const std::string& path, Unit& unit) {
-  IGESControl_Reader reader;
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
-    parse_error(path, "not a readable IGES file");
-  Handle(IGESData_IGESModel) model = reader.IGESModel();
-  if (!model.IsNull()) {
-    // The unit flag of the global section (IGES 5.3, sec. 2.2.4.3); the
-    // cascade unit (in mm) is set to it so the transfer does not convert.
-    IGESData_GlobalSection gs = model->GlobalSection();
-    static const Unit by_flag[] = {{"INCH", 0.0254}, {"MM", 1e-3},     {"MM", 1e-3},
-                                   {"FT", 0.3048},   {"MI", 1609.344}, {"M", 1.0},
-                                   {"KM", 1e3},      {"MIL", 2.54e-5}, {"UM", 1e-6},
-                                   {"CM", 1e-2},     {"UIN", 2.54e-8}};
-    const int flag = gs.UnitFlag();
-    bool known = false;
-    if (flag == 3 && !gs.UnitName().IsNull())
-      known = unit_from_name(gs.UnitName()->ToCString(), unit);
-    if (!known && flag >= 1 && flag <= 11 && flag != 3) unit = by_flag[flag - 1];
-    gs.SetCascadeUnit(unit.metres * 1000.0);
-    model->SetGlobalSection(gs);
-  }
-  Interface_Static::SetCVal("xstep.cascade.unit", unit.occt);
-  if (reader.NbRootsForTransfer() <= 0) parse_error(path, "the IGES file holds no shape");
-  reader.TransferRoots();
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  if (reader.NbShapes() <= 0) parse_error(path, "no shape could be read from the IGES file");
-  return reader.OneShape();
 }
 
 TopoDS_Shape read_brep(const std::string& path) {
@@ -198,8 +115,8 @@ enum class CadKind { Step, Iges, Brep };
 void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge, std::string& out) {
   Unit unit{"MM", 1e-3};
   const TopoDS_Shape shape = detail::guarded(ErrorCode::ParseError, path, [&] {
-    TopoDS_Shape s = kind == CadKind::Step   ? read_step(path, unit)
-                     : kind == CadKind::Iges ? read_iges(path, unit)
+    TopoDS_Shape s = kind == CadKind::Step   ? exchange::read(exchange::Format::Step, path, unit)
+                     : kind == CadKind::Iges ? exchange::read(exchange::Format::Iges, path, unit)
                                              : read_brep(path);
     if (s.IsNull()) parse_error(path, "the file holds no shape");
     BRepLib::BuildCurves3d(s);
@@ -279,6 +196,10 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
                            "' (expected .step, .stp, .iges, .igs or .brep)");
   const CadKind kind = step ? CadKind::Step : iges ? CadKind::Iges : CadKind::Brep;
 
+  // The STEP/IGES module is loaded here, before the fork: the child must not
+  // be the first to run the dynamic loader (another thread of this process
+  // may hold its lock at the fork).
+  if (kind != CadKind::Brep) exchange::load();
   const IsolationLimits limits = limits_for(path);
   const IsolatedRun run = run_isolated(
       [&](std::string& out) { read_in_child(path, kind, heal, impl_->merge_on_import, out); },

@@ -1,14 +1,10 @@
 // Workbench::write: the named shapes to a STEP, IGES or BREP file, written to a
 // temporary name and renamed so a failure never leaves a half file.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/exchange.h"
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Controller.hxx>
-#include <IGESControl_Writer.hxx>
-#include <Interface_Static.hxx>
-#include <STEPControl_Writer.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include <algorithm>
@@ -40,20 +36,9 @@ void Workbench::write(const std::string& path, const std::vector<std::string>& s
   const std::string tmp = path + ".tmp";
   detail::guarded(ErrorCode::GeometryError, path, [&] {
     bool ok = false;
-    if (step) {
-      STEPControl_Writer writer;
-      Interface_Static::SetCVal("xstep.cascade.unit", impl_->unit_name.c_str());
-      Interface_Static::SetCVal("write.step.unit", impl_->unit_name.c_str());
-      ok = writer.Transfer(all, STEPControl_AsIs) == IFSelect_RetDone &&
-           writer.Write(tmp.c_str()) == IFSelect_RetDone;
-      Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-      Interface_Static::SetCVal("write.step.unit", "MM");
-    } else if (iges) {
-      IGESControl_Controller::Init();
-      IGESControl_Writer writer(impl_->unit_name.c_str(), /*modecr=*/1);  // 1: B-rep solids
-      ok = writer.AddShape(all);
-      writer.ComputeModel();
-      ok = ok && writer.Write(tmp.c_str());
+    if (step || iges) {
+      ok = exchange::write(step ? exchange::Format::Step : exchange::Format::Iges, tmp, all,
+                           impl_->unit_name);
     } else {
       ok = BRepTools::Write(all, tmp.c_str());
     }

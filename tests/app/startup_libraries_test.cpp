@@ -1,0 +1,60 @@
+// Issue 20, start-up: OCCT's STEP/IGES toolkits are loaded only when a STEP
+// or IGES file is read or written (framework/geometry/occ/exchange.h). The
+// dynamic loader's own trace (LD_DEBUG=files names every library it opens)
+// tells which libraries a command mapped.
+#include "run_command.h"
+#include "temp_dir.h"
+
+#include "framework/geometry/occ/workbench.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace cooperage {
+namespace {
+
+const std::string kCli = COOPERAGE_CLI;
+
+// A line "file=<name or path of library...>" of the trace.
+bool opened(const std::string& trace, const std::string& library) {
+  std::istringstream lines(trace);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t at = line.find("file=");
+    if (at != std::string::npos && line.find(library, at) != std::string::npos) return true;
+  }
+  return false;
+}
+
+class StartupLibraries : public testing::TempDirTest {};
+
+TEST_F(StartupLibraries, AJournalRunMapsNoStepOrIgesToolkit) {
+  const auto version = testing::run_command("LD_DEBUG=files " + kCli + " --version");
+  ASSERT_EQ(version.exit_code, 0) << version.err;
+  EXPECT_TRUE(opened(version.err, "libTKernel")) << "the trace should name OCCT's kernel";
+  const auto run = testing::run_command("cd " + dir_.string() + " && LD_DEBUG=files " + kCli +
+                                        " run -q " + COOPERAGE_SOURCE_DIR + "/examples/brick.xml");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* toolkit : {"libTKSTEP", "libTKIGES", "libTKXSBase"}) {
+    EXPECT_FALSE(opened(version.err, toolkit)) << toolkit << " mapped by --version";
+    EXPECT_FALSE(opened(run.err, toolkit)) << toolkit << " mapped by a journal of primitives";
+  }
+}
+
+TEST_F(StartupLibraries, AStepFileLoadsTheExchangeModuleAndReads) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 3, 4});
+  bench.write(path("b.step"), {});
+  bench.write(path("b.igs"), {});
+  for (const char* file : {"b.step", "b.igs"}) {
+    const auto info = testing::run_command("LD_DEBUG=files " + kCli + " info " + path(file));
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NE(info.out.find("1 volumes, 6 surfaces"), std::string::npos) << info.out;
+    EXPECT_TRUE(opened(info.err, "libcooperage_occ_exchange")) << file;
+    EXPECT_TRUE(opened(info.err, "libTKXSBase")) << file;
+  }
+}
+
+}  // namespace
+}  // namespace cooperage
