@@ -29,6 +29,20 @@ std::string hint_place(const SweepHints& h) {
   return h.where.empty() ? std::string() : " (" + h.where + ")";
 }
 
+// "sources 1 2 4, targets 5 7 8, direction (0, 0, 1)": what a hint asks.
+std::string hint_text(const SweepHints& h) {
+  std::string out;
+  auto list = [&](const char* what, const std::vector<int>& ids) {
+    if (ids.empty()) return;
+    out += (out.empty() ? "" : ", ") + std::string(what);
+    for (int id : ids) out += " " + std::to_string(id);
+  };
+  list("sources", h.sources);
+  list("targets", h.targets);
+  if (h.direction) out += (out.empty() ? "" : ", ") + std::string("direction ") + direction_text(*h.direction);
+  return out;
+}
+
 // The hints a plan must honour; empty when it does, else why not.
 std::string check_hints(const VolumePlan& p, const SweepHints& hints) {
   for (int s : hints.sources) {
@@ -412,10 +426,17 @@ VolumePlan plan_volume(const geom::Model& model, int volume_id, const scheme::Re
     refused.why = f;
     return refused;
   }
-  if (in.hints.direction) {
+  if (in.hints.direction && in.hints.sources.empty() && in.hints.targets.empty()) {
     refused.why = vname + ": the direction hint " + direction_text(*in.hints.direction) +
                   hint_place(in.hints) + " cannot be honoured: " +
                   (first_failure.empty() ? "no sorting fits it" : first_failure);
+  } else if (!in.hints.sources.empty() || !in.hints.targets.empty()) {
+    // A hint is honoured or named in the refusal (issue 15 item 7), also when
+    // no sorting got as far as checking it.
+    refused.why = vname + ": the sweep hint (" + hint_text(in.hints) + ")" + hint_place(in.hints) +
+                  " cannot be honoured: " +
+                  (first_failure.empty() ? "no sorting fits it" : first_failure);
+    if (!pair_why.empty() && pair_why != first_failure) refused.why += "; " + pair_why;
   } else {
     refused.why =
         vname +
