@@ -1,15 +1,18 @@
 # OpenCASCADE 7.6 from Debian's libocct-*-dev. Debian's OpenCASCADEConfig.cmake
 # refuses to load unless the visualisation and OCAF modules are installed too
 # (its DataExchange targets reference TKV3d, TKCAF, ...), so the libraries we
-# use are found directly. Sets OCCT_INCLUDE_DIR, OCCT_LIBRARIES and
-# OCCT_EXCHANGE_LIBRARIES; the include
-# directory is given only to the sources in framework/geometry/occ.
+# use are found directly. Sets OCCT_INCLUDE_DIR and the library lists below;
+# the include directory is given only to the sources in framework/geometry/occ.
 find_path(OCCT_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade REQUIRED)
-# OCCT_EXCHANGE_LIBRARIES: the STEP/IGES toolkits, linked only by the
-# exchange module that framework/geometry/occ loads on first use.
+# OCCT_LIBRARIES: what the framework links. The toolkits only some runs
+# need are linked by modules the framework opens on first use
+# (framework/geometry/occ/lazy_module.h): OCCT_EXCHANGE_LIBRARIES (STEP,
+# IGES) and OCCT_LOFT_LIBRARIES (ThruSections; TKOffset brings TKFillet and
+# TKBool). OCCT_TEST_LIBRARIES: the modelling toolkits tests use directly
+# (a fillet).
 set(OCCT_LIBRARIES "")
-foreach(_lib TKShHealing TKFillet TKOffset TKFeat TKBool TKBO TKPrim TKMesh TKTopAlgo
-             TKGeomAlgo TKBRep TKGeomBase TKG3d TKG2d TKMath TKernel)
+foreach(_lib TKShHealing TKBO TKPrim TKTopAlgo TKGeomAlgo TKBRep TKGeomBase TKG3d TKG2d
+             TKMath TKernel)
   find_library(OCCT_${_lib}_LIBRARY ${_lib} REQUIRED)
   list(APPEND OCCT_LIBRARIES ${OCCT_${_lib}_LIBRARY})
 endforeach()
@@ -18,4 +21,12 @@ foreach(_lib TKSTEP TKSTEPAttr TKSTEP209 TKSTEPBase TKIGES TKXSBase)
   find_library(OCCT_${_lib}_LIBRARY ${_lib} REQUIRED)
   list(APPEND OCCT_EXCHANGE_LIBRARIES ${OCCT_${_lib}_LIBRARY})
 endforeach()
+find_library(OCCT_TKOffset_LIBRARY TKOffset REQUIRED)
+set(OCCT_LOFT_LIBRARIES ${OCCT_TKOffset_LIBRARY})
+set(OCCT_TEST_LIBRARIES "")
+foreach(_lib TKFillet TKBool TKOffset)
+  find_library(OCCT_${_lib}_LIBRARY ${_lib} REQUIRED)
+  list(APPEND OCCT_TEST_LIBRARIES ${OCCT_${_lib}_LIBRARY})
+endforeach()
+list(APPEND OCCT_TEST_LIBRARIES ${OCCT_LIBRARIES})
 message(STATUS "OpenCASCADE: ${OCCT_INCLUDE_DIR}")

@@ -1,5 +1,7 @@
 // Issue 20, start-up: OCCT's STEP/IGES toolkits are loaded only when a STEP
-// or IGES file is read or written (framework/geometry/occ/exchange.h). The
+// or IGES file is read or written, its loft toolkit (with the fillet and
+// boolean toolkits it needs) only for a <loft>
+// (framework/geometry/occ/lazy_module.h). The
 // dynamic loader's own trace (LD_DEBUG=files names every library it opens)
 // tells which libraries a command mapped.
 #include "run_command.h"
@@ -27,16 +29,25 @@ bool opened(const std::string& trace, const std::string& library) {
   return false;
 }
 
-class StartupLibraries : public testing::TempDirTest {};
+class StartupLibraries : public testing::TempDirTest {
+ protected:
+  // Shell commands that copy an example journal into the scratch directory
+  // and enter it (its exports land there, not in the source tree).
+  std::string journal_here(const std::string& example) const {
+    return "cp " + std::string(COOPERAGE_SOURCE_DIR) + "/examples/" + example + " " +
+           dir_.string() + " && cd " + dir_.string();
+  }
+};
 
 TEST_F(StartupLibraries, AJournalRunMapsNoStepOrIgesToolkit) {
   const auto version = testing::run_command("LD_DEBUG=files " + kCli + " --version");
   ASSERT_EQ(version.exit_code, 0) << version.err;
   EXPECT_TRUE(opened(version.err, "libTKernel")) << "the trace should name OCCT's kernel";
-  const auto run = testing::run_command("cd " + dir_.string() + " && LD_DEBUG=files " + kCli +
-                                        " run -q " + COOPERAGE_SOURCE_DIR + "/examples/brick.xml");
+  const auto run = testing::run_command(journal_here("brick.xml") + " && LD_DEBUG=files " + kCli +
+                                        " run -q brick.xml");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* toolkit : {"libTKSTEP", "libTKIGES", "libTKXSBase"}) {
+  for (const char* toolkit :
+       {"libTKSTEP", "libTKIGES", "libTKXSBase", "libTKOffset", "libTKFillet", "libTKBool"}) {
     EXPECT_FALSE(opened(version.err, toolkit)) << toolkit << " mapped by --version";
     EXPECT_FALSE(opened(run.err, toolkit)) << toolkit << " mapped by a journal of primitives";
   }
@@ -54,6 +65,15 @@ TEST_F(StartupLibraries, AStepFileLoadsTheExchangeModuleAndReads) {
     EXPECT_TRUE(opened(info.err, "libcooperage_occ_exchange")) << file;
     EXPECT_TRUE(opened(info.err, "libTKXSBase")) << file;
   }
+}
+
+TEST_F(StartupLibraries, ALoftLoadsTheLoftModule) {
+  const auto run = testing::run_command(journal_here("twisted_block.xml") + " && LD_DEBUG=files " +
+                                        kCli + " run -q twisted_block.xml");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(opened(run.err, "libcooperage_occ_loft"));
+  EXPECT_TRUE(opened(run.err, "libTKOffset"));
+  EXPECT_FALSE(opened(run.err, "libTKSTEP"));
 }
 
 }  // namespace

@@ -1,19 +1,26 @@
 // Workbench::loft: a solid through planar polygon sections (and optionally an
-// apex point at either end), built by BRepOffsetAPI_ThruSections. The sections
-// are validated here so that OCCT only sees input it can loft.
+// apex point at either end), built by OCCT's ThruSections in the loft module
+// (loft_module.cpp). The sections are validated here so that OCCT only sees
+// input it can loft.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/lazy_module.h"
 
 #include <Eigen/Geometry>
 
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepLib.hxx>
-#include <BRepOffsetAPI_ThruSections.hxx>
 #include <TopAbs_ShapeEnum.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Solid.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <dlfcn.h>
 
 #include <cmath>
+#include <mutex>
+#include <vector>
 
 namespace cooperage::occ {
 namespace {
@@ -105,6 +112,21 @@ std::vector<Plane> check_sections(const std::string& shape,
   return planes;
 }
 
+// OCCT's ThruSections from the loft module (loft_module.cpp), opened on the
+// first loft.
+using ThruSectionsFn = int (*)(const TopoDS_Shape*, size_t, int, TopoDS_Shape*);
+ThruSectionsFn thru_sections() {
+  static ThruSectionsFn fn = nullptr;
+  static std::once_flag once;
+  std::call_once(once, [] {
+    void* handle = open_module("libcooperage_occ_loft.so", "cooperage_loft_abi", /*abi=*/1);
+    fn = reinterpret_cast<ThruSectionsFn>(dlsym(handle, "cooperage_loft_thru_sections"));
+    if (fn == nullptr)
+      throw MeshingError(ErrorCode::Internal, "libcooperage_occ_loft.so lacks its loft function");
+  });
+  return fn;
+}
+
 }  // namespace
 
 void Workbench::loft(const std::string& name, const std::vector<std::vector<Vec3>>& sections,
@@ -112,20 +134,19 @@ void Workbench::loft(const std::string& name, const std::vector<std::vector<Vec3
   impl_->check_new_name(name);
   check_sections(name, sections, ruled);
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
-               BRepOffsetAPI_ThruSections maker(Standard_True,
-                                                ruled ? Standard_True : Standard_False);
                // A ruled loft keeps the user's pairing of points (validated above); a
                // smooth one lets OCCT make differently shaped sections compatible.
-               maker.CheckCompatibility(ruled ? Standard_False : Standard_True);
+               std::vector<TopoDS_Shape> profiles;
                for (const auto& s : sections) {
                  if (s.size() == 1)
-                   maker.AddVertex(BRepBuilderAPI_MakeVertex(detail::to_pnt(s.front())).Vertex());
+                   profiles.push_back(
+                       BRepBuilderAPI_MakeVertex(detail::to_pnt(s.front())).Vertex());
                  else
-                   maker.AddWire(detail::polygon_wire(s));
+                   profiles.push_back(detail::polygon_wire(s));
                }
-               maker.Build();
-               if (!maker.IsDone()) invalid(name, "OpenCASCADE could not loft the sections");
-               TopoDS_Shape shape = maker.Shape();
+               TopoDS_Shape shape;
+               if (thru_sections()(profiles.data(), profiles.size(), ruled ? 1 : 0, &shape) != 0)
+                 invalid(name, "OpenCASCADE could not loft the sections");
                TopExp_Explorer solids(shape, TopAbs_SOLID);
                if (!solids.More()) invalid(name, "the loft did not produce a solid");
                TopoDS_Solid solid = TopoDS::Solid(solids.Current());

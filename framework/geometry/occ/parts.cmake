@@ -4,6 +4,7 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/primitives.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loft.cpp
   ${CMAKE_CURRENT_LIST_DIR}/booleans.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/lazy_module.cpp
   ${CMAKE_CURRENT_LIST_DIR}/exchange.cpp
   ${CMAKE_CURRENT_LIST_DIR}/import.cpp
   ${CMAKE_CURRENT_LIST_DIR}/write.cpp
@@ -15,18 +16,23 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/solid_pieces.cpp
   PRIVATE_DEPS TBB::tbb)
 
-# OCCT's STEP/IGES readers and writers in a module of their own, loaded by
-# exchange.cpp on the first STEP or IGES file (exchange_module.cpp says why).
-# Built beside libcooperage_framework, where the loader looks first; tests
-# that link the framework's objects find it by its build path.
-add_library(cooperage_occ_exchange MODULE ${CMAKE_CURRENT_LIST_DIR}/exchange_module.cpp)
-target_include_directories(cooperage_occ_exchange PRIVATE ${PROJECT_SOURCE_DIR})
-target_include_directories(cooperage_occ_exchange SYSTEM PRIVATE ${OCCT_INCLUDE_DIR})
-target_link_libraries(cooperage_occ_exchange PRIVATE ${OCCT_EXCHANGE_LIBRARIES} ${OCCT_LIBRARIES}
-                      cooperage_warnings)
-set_target_properties(cooperage_occ_exchange PROPERTIES
-  PREFIX "lib" CXX_VISIBILITY_PRESET hidden
-  LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# OCCT toolkits most runs never need, in modules of their own opened on
+# first use (lazy_module.h): STEP/IGES (exchange_module.cpp) and lofts
+# (loft_module.cpp). Built beside libcooperage_framework, where the loader
+# looks first; tests that link the framework's objects find them in the
+# build directory.
+foreach(_module exchange loft)
+  set(_target cooperage_occ_${_module})
+  add_library(${_target} MODULE ${CMAKE_CURRENT_LIST_DIR}/${_module}_module.cpp)
+  target_include_directories(${_target} PRIVATE ${PROJECT_SOURCE_DIR})
+  target_include_directories(${_target} SYSTEM PRIVATE ${OCCT_INCLUDE_DIR})
+  target_link_libraries(${_target} PRIVATE ${OCCT_LIBRARIES} cooperage_warnings)
+  set_target_properties(${_target} PROPERTIES
+    PREFIX "lib" CXX_VISIBILITY_PRESET hidden
+    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  add_dependencies(cooperage_fw_occ ${_target})
+endforeach()
+target_link_libraries(cooperage_occ_exchange PRIVATE ${OCCT_EXCHANGE_LIBRARIES})
+target_link_libraries(cooperage_occ_loft PRIVATE ${OCCT_LOFT_LIBRARIES})
 target_compile_definitions(cooperage_fw_occ PRIVATE
-  COOPERAGE_EXCHANGE_BUILD_PATH="$<TARGET_FILE:cooperage_occ_exchange>")
-add_dependencies(cooperage_fw_occ cooperage_occ_exchange)
+  COOPERAGE_MODULE_BUILD_DIR="${CMAKE_CURRENT_BINARY_DIR}")
