@@ -20,6 +20,7 @@
 #include <STEPControl_Writer.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopoDS_Shape.hxx>
+#include <XSControl_Reader.hxx>
 
 #include <cstdio>
 #include <cstring>
@@ -34,21 +35,35 @@ int fail(char* error, size_t size, const char* why) {
   return 1;
 }
 
+// The read file's roots as one shape, in the file's unit (the cascade
+// unit set for the transfer only, so the kernel does not convert).
+int transfer(XSControl_Reader& reader, const char* kind, TopoDS_Shape* shape, const Unit& unit,
+             char* error, size_t size) {
+  char why[64];
+  Interface_Static::SetCVal("xstep.cascade.unit", unit.occt);
+  if (reader.NbRootsForTransfer() <= 0) {
+    std::snprintf(why, sizeof why, "the %s file holds no shape", kind);
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    return fail(error, size, why);
+  }
+  reader.TransferRoots();
+  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+  if (reader.NbShapes() <= 0) {
+    std::snprintf(why, sizeof why, "no shape could be read from the %s file", kind);
+    return fail(error, size, why);
+  }
+  *shape = reader.OneShape();
+  return 0;
+}
+
 int read_step(const char* path, TopoDS_Shape* shape, Unit* unit, char* error, size_t size) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path) != IFSelect_RetDone) return fail(error, size, "not a readable STEP file");
   TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
   reader.FileUnits(lengths, angles, solid_angles);
   if (lengths.Length() > 0) unit_from_name(lengths.First().ToCString(), *unit);
-  Interface_Static::SetCVal("xstep.cascade.unit", unit->occt);
   reader.SetSystemLengthUnit(unit->metres * 1000.0);
-  if (reader.NbRootsForTransfer() <= 0) return fail(error, size, "the STEP file holds no shape");
-  reader.TransferRoots();
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  if (reader.NbShapes() <= 0)
-    return fail(error, size, "no shape could be read from the STEP file");
-  *shape = reader.OneShape();
-  return 0;
+  return transfer(reader, "STEP", shape, *unit, error, size);
 }
 
 int read_iges(const char* path, TopoDS_Shape* shape, Unit* unit, char* error, size_t size) {
@@ -71,14 +86,7 @@ int read_iges(const char* path, TopoDS_Shape* shape, Unit* unit, char* error, si
     gs.SetCascadeUnit(unit->metres * 1000.0);
     model->SetGlobalSection(gs);
   }
-  Interface_Static::SetCVal("xstep.cascade.unit", unit->occt);
-  if (reader.NbRootsForTransfer() <= 0) return fail(error, size, "the IGES file holds no shape");
-  reader.TransferRoots();
-  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-  if (reader.NbShapes() <= 0)
-    return fail(error, size, "no shape could be read from the IGES file");
-  *shape = reader.OneShape();
-  return 0;
+  return transfer(reader, "IGES", shape, *unit, error, size);
 }
 
 }  // namespace
