@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 
@@ -74,6 +75,32 @@ TEST_F(StartupLibraries, ALoftLoadsTheLoftModule) {
   EXPECT_TRUE(opened(run.err, "libcooperage_occ_loft"));
   EXPECT_TRUE(opened(run.err, "libTKOffset"));
   EXPECT_FALSE(opened(run.err, "libTKSTEP"));
+}
+
+TEST_F(StartupLibraries, CooperageModuleDirIsLookedInFirst) {
+  // The built module, linked into a scratch directory named by the variable:
+  // the loader's trace shows the one it opened.
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {1, 1, 1});
+  bench.write(path("b.step"), {});
+  const auto where = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  ASSERT_EQ(where.exit_code, 0) << where.err;
+  std::string built;
+  std::istringstream lines(where.err);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t at = line.find("file=/");
+    const size_t end = line.find("libcooperage_occ_exchange.so");
+    if (at != std::string::npos && end != std::string::npos && end > at)
+      built = line.substr(at + 5, end - at - 5) + "libcooperage_occ_exchange.so";
+  }
+  ASSERT_FALSE(built.empty()) << where.err;
+  const std::filesystem::path modules = dir_ / "modules";
+  std::filesystem::create_directories(modules);
+  std::filesystem::create_symlink(built, modules / "libcooperage_occ_exchange.so");
+  const auto run = testing::run_command("COOPERAGE_MODULE_DIR=" + modules.string() +
+                                        " LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(opened(run.err, (modules / "libcooperage_occ_exchange.so").string())) << run.err;
 }
 
 }  // namespace
