@@ -116,7 +116,7 @@ ReportSetting read_report(const Element& e) {
   if (std::none_of(kReportExtensions.begin(), kReportExtensions.end(),
                    [&](const std::string& ext) { return ends_with(r.file, ext); }))
     e.fail_at("file", "attribute \"file\" must end in one of " + detail::list(kReportExtensions) +
-                          " (the report is an HTML page), got \"" + r.file + "\"");
+                          " (the report is an HTML page), got \"" + clip_path(r.file) + "\"");
   return r;
 }
 
@@ -164,7 +164,7 @@ void read_root(const Element& root, Job& job) {
       PluginSetting p = read_plugin(e, job.base_dir);
       for (const auto& other : job.plugins)
         if (other.path == p.path)
-          e.fail("plug-in \"" + p.file + "\" is already loaded at line " +
+          e.fail("plug-in \"" + clip_path(p.file) + "\" is already loaded at line " +
                  std::to_string(other.where.line));
       job.plugins.push_back(std::move(p));
     } else if (tag == "geometry") {
@@ -184,7 +184,7 @@ void read_root(const Element& root, Job& job) {
       ReportSetting r = read_report(e);
       for (const auto& other : job.reports)
         if (other.file == r.file)
-          e.fail("file \"" + r.file + "\" is already a report at line " +
+          e.fail("file \"" + clip_path(r.file) + "\" is already a report at line " +
                  std::to_string(other.where.line));
       job.reports.push_back(std::move(r));
     } else {

@@ -72,6 +72,12 @@ TEST(JournalLimits, NoErrorEchoesMoreThanALineOfInput) {
            journal("<brick name=\"b\" size=\"" + big + "\"/>"),              // attribute value
            journal("<brick name=\"b\" size=\"1 1 1\">" + big + "</brick>"),  // text
            journal(R"(<brick name="b" size="1 1 1"/>)", "<export file=\"" + big + ".step\"/>"),
+           // A report path of the wrong extension, a report and a plug-in named twice.
+           journal(R"(<brick name="b" size="1 1 1"/>)", "<report file=\"" + big + "\"/>"),
+           journal(R"(<brick name="b" size="1 1 1"/>)",
+                   "<report file=\"" + big + ".html\"/><report file=\"" + big + ".html\"/>"),
+           "<cooperage version=\"1\"><plugin file=\"" + big + "\"/><plugin file=\"" + big +
+               "\"/></cooperage>",
            "<cooperage version=\"" + big + "\"/>",
            "<" + big + ">",
        }) {
