@@ -133,6 +133,7 @@ class Selector {
       for (int round = 0;; ++round) {
         restart_ = false;
         roles_.clear();
+        imposed_.clear();
         volume_types_.clear();
         waits_for_.clear();
         selection_.volumes.clear();
@@ -376,6 +377,8 @@ class Selector {
       }
       waits_for_ = std::move(waits);
       for (const auto& [surface, role] : roles) {
+        if (role != scheme::kMeshedByVolume && takes.count(surface) == 0)
+          imposed_.insert(surface);
         auto it = roles_.find(surface);
         if (it != roles_.end() &&
             (role == scheme::kMeshedByVolume) != (it->second.scheme == scheme::kMeshedByVolume)) {
@@ -449,6 +452,7 @@ class Selector {
                       role->second.volume_scheme + ")";
       choice.fixed_by_volume = true;
       choice.pinned = pin != nullptr;
+      choice.any_quad_mesh = !choice.pinned && imposed_.count(id) == 0;
     } else if (pin) {
       const Candidate* c = find_candidate(choice.candidates, pin->scheme);
       if (!c) {
@@ -537,6 +541,9 @@ class Selector {
   std::vector<io::VertexTypeSetting> planned_types_;
   SelectOptions options_;
   std::map<int, Role> roles_;
+  /// Surfaces some chosen volume needs meshed by its role's scheme (not
+  /// taken as found): no fallback there (Choice::any_quad_mesh).
+  std::set<int> imposed_;
   std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it
   std::map<int, scheme::NeighbourMeshes> yield_;  // requests made of a volume
   bool restart_ = false;                          // a request was added this round
@@ -555,7 +562,7 @@ std::string describe(const Candidate& c) {
 
 pipeline::SchemePlan Selection::plan() const {
   const auto entry = [](const Choice& c) {
-    pipeline::PlanEntry e{c.scheme, c.reason, {}, nullptr};
+    pipeline::PlanEntry e{c.scheme, c.reason, {}, nullptr, c.any_quad_mesh};
     for (const Candidate& k : c.candidates) {
       e.details.push_back(describe(k));
       if (k.scheme == c.scheme) e.data = k.applicability.plan;  // carried to constrain() and mesh()

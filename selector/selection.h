@@ -31,6 +31,9 @@ struct Choice {
   std::string reason;  ///< "best score 1.00", "pinned at job.xml:7", "role from volume 2 (map)"
   bool pinned = false;
   bool fixed_by_volume = false;
+  /// Surfaces: every volume it bounds takes any all-quad mesh of it
+  /// (PlanEntry::any_quad_mesh).
+  bool any_quad_mesh = false;
 };
 
 struct Selection {

@@ -270,6 +270,12 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
       [&](int id) {
         const PlanEntry& entry = result.plan.surfaces.at(id);
         const auto* s = registry.surface_scheme(entry.scheme);
+        if (dim == 3 && entry.any_quad_mesh) {
+          scheme::Settings own = params;
+          own.allow_quad_fallback = true;
+          return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &own, entry.data.get()},
+                         own);
+        }
         return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &params, entry.data.get()},
                        params);
       },

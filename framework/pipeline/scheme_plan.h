@@ -23,6 +23,11 @@ struct PlanEntry {
   /// the views, so the scheme analyses the entity once per run. Shared and
   /// immutable: copies of the plan share it.
   std::shared_ptr<const scheme::PlanData> data;
+  /// Surfaces: every volume it bounds takes any valid all-quad mesh of it
+  /// with the agreed intervals (VolumeScheme::takes_existing_mesh), so the
+  /// mesher may let a failing structured scheme fall back to pave
+  /// (Settings::allow_quad_fallback).
+  bool any_quad_mesh = false;
 };
 
 /// Why the planner found no scheme for an entity.

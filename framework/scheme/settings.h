@@ -21,6 +21,11 @@ struct Settings {
   /// EntityMesh::warnings, instead of failing. A volume scheme needs the
   /// surface meshes it imposed, so the pipeline leaves this off in 3D.
   bool allow_fallback = false;
+  /// In 3D, for one surface whose mesh every volume it bounds takes as it
+  /// finds it (cooper's uncut source caps: PlanEntry::any_quad_mesh): a
+  /// structured scheme that fails there may fall back to the all-quad one
+  /// (pave), saying so in EntityMesh::warnings; never to triangles.
+  bool allow_quad_fallback = false;
   /// The job's <mesh> settings (per-volume element kinds, sweep hints and
   /// pins, vertex types, sizes); null: none (every default). It must
   /// outlive every call that is given these Settings.

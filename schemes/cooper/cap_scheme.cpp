@@ -42,21 +42,40 @@ std::string mixed_cap_scheme(const geom::Model& model, const scheme::Registry& r
   return {};
 }
 
+// The journal's scheme for the cap, when it pins one that serves `role`:
+// a cap is meshed beforehand and taken as it is, so any scheme of its role
+// will do, and the user's word wins over the best score. A pin of another
+// role (tri on a hex cap) is left to the selector, which names the conflict.
+const scheme::SurfaceScheme* pinned_cap_scheme(const scheme::Registry& registry, int surface,
+                                               scheme::Role role,
+                                               const scheme::Settings* settings) {
+  if (settings == nullptr || settings->job == nullptr) return nullptr;
+  for (const io::SurfaceSetting& s : settings->job->surfaces) {
+    if (s.id != surface || s.scheme == "auto") continue;
+    const scheme::SurfaceScheme* pinned = registry.surface_scheme(s.scheme);
+    if (pinned != nullptr && scheme::serves(pinned->serves(), role)) return pinned;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why, Elements elements, const scheme::Settings* settings) {
+  const scheme::Role role = elements == Elements::Mixed  ? scheme::Role::MixedCap
+                            : elements == Elements::Wedge ? scheme::Role::TriCap
+                                                          : scheme::Role::QuadCap;
+  if (const scheme::SurfaceScheme* pinned = pinned_cap_scheme(registry, surface, role, settings))
+    return std::string(pinned->name());
   if (elements == Elements::Mixed) return mixed_cap_scheme(model, registry, surface, why, settings);
   // Hex mode: the best-scoring quad-cap scheme (scores are the scaled
   // Jacobian each can reach, so a corner map/submap would squash goes to
   // pave); ties keep the registration order map, submap, pave, plug-ins.
   // Wedge mode: the best triangle scheme (tri).
-  const bool wedge = elements == Elements::Wedge;
   const scheme::RoleChoice c =
-      scheme::best_surface_scheme(registry, wedge ? scheme::Role::TriCap : scheme::Role::QuadCap,
-                                  scheme::SurfaceView{model, surface, nullptr, settings});
+      scheme::best_surface_scheme(registry, role, scheme::SurfaceView{model, surface, nullptr, settings});
   if (c.scheme) return std::string(c.scheme->name());
-  why = no_scheme(surface, wedge ? "triangle" : "quad", c.reasons);
+  why = no_scheme(surface, elements == Elements::Wedge ? "triangle" : "quad", c.reasons);
   return {};
 }
 

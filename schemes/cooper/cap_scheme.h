@@ -17,7 +17,9 @@ namespace cooperage::cooper {
 /// quad-cap scheme (map, submap, pave; ties in registration order); wedge
 /// mode the best tri-cap scheme ("tri"); mixed mode the best mixed-cap one,
 /// an all-quad scheme (map, submap) only where it reaches
-/// kMixedMinQuadQuality, else "quad_dominant". "" with `why` when none applies.
+/// kMixedMinQuadQuality, else "quad_dominant". A scheme the journal pins on
+/// the cap (<surface id scheme>) wins when it serves the role. "" with
+/// `why` when none applies.
 /// `settings` reach the candidates' applicable(); null: defaults.
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why, Elements elements = Elements::Hex,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <optional>
 #include <string>
 
@@ -46,9 +47,40 @@ FallbackChain::FallbackChain(std::unique_ptr<scheme::SurfaceScheme> primary,
       triangles_(std::move(triangles)),
       min_quality_(min_quality) {}
 
+scheme::EntityMesh FallbackChain::primary_or_quads(const scheme::SurfaceView& view,
+                                                   const scheme::Settings& params) const {
+  try {
+    return primary_->mesh(view, params);
+  } catch (const MeshingError& e) {
+    // The primary's reason is the one to act on when the fallback fails too.
+    const std::exception_ptr primary_error = std::current_exception();
+    // view.plan is the primary's (its applicable()); the fallback plans anew.
+    scheme::SurfaceView own = view;
+    own.plan = nullptr;
+    scheme::EntityMesh quads;
+    try {
+      quads = quads_->mesh(own, params);
+    } catch (const MeshingError&) {
+      std::rethrow_exception(primary_error);
+    }
+    if (const geom::SurfaceGeometry* surface = view.surface().geometry.get()) {
+      const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };
+      if (mesh::surface_mesh_quality(quads.coords, quads.quads, quads.tris, normal_at).inverted > 0)
+        std::rethrow_exception(primary_error);
+    }
+    quads.warnings.push_back(std::string(primary_->name()) + " failed (" + e.message() + "); " +
+                             std::string(quads_->name()) +
+                             "'s all-quad mesh instead (the volumes take any quad mesh of it)");
+    return quads;
+  }
+}
+
 scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
                                        const scheme::Settings& params) const {
-  if (!params.allow_fallback) return primary_->mesh(view, params);
+  if (!params.allow_fallback) {
+    if (params.allow_quad_fallback && quads_) return primary_or_quads(view, params);
+    return primary_->mesh(view, params);
+  }
   const geom::SurfaceGeometry* surface = view.surface().geometry.get();
   if (surface == nullptr) return primary_->mesh(view, params);
   const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };

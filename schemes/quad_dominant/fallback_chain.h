@@ -17,7 +17,10 @@
 // EntityMesh::warnings saying what was given up and why; nothing inverted is
 // ever returned (no valid mesh at all: the primary's error, with the
 // fallbacks' reasons). Without allow_fallback (a volume scheme imposed the
-// surface's scheme, e.g. cooper's submapped sides) it is the primary alone.
+// surface's scheme, e.g. cooper's submapped sides) it is the primary alone,
+// except that with Settings::allow_quad_fallback (in 3D, a surface every
+// volume takes as it finds it: cooper's uncut source caps) a failing
+// primary gives way to step 2, the all-quad fallback.
 // applicable() and constrain() are the primary's: every quad scheme's
 // constraints make the boundary interval total even, which pave and the
 // quad-dominant split need, and tri takes any count.
@@ -60,6 +63,11 @@ class FallbackChain final : public scheme::SurfaceScheme {
                           const scheme::Settings& params) const override;
 
  private:
+  /// Settings::allow_quad_fallback: the primary, or when it fails, the
+  /// all-quad fallback's valid mesh with a warning; else the primary's error.
+  scheme::EntityMesh primary_or_quads(const scheme::SurfaceView& view,
+                                      const scheme::Settings& params) const;
+
   std::unique_ptr<scheme::SurfaceScheme> primary_;
   std::unique_ptr<scheme::SurfaceScheme> quads_;
   std::unique_ptr<scheme::SurfaceScheme> triangles_;

@@ -747,6 +747,49 @@ TEST(CooperMany, LugWithAShallowConeUnderItSweepsTheConeAsACap) {
                               "lug over a 31-degree cone");
 }
 
+// Two pockets 0.4 apart in x and offset by 0.16 in y, at size 1.887 (the
+// plan => mesh campaign, fuzz/parity_campaign.py --seed 5 case 30). The top
+// is an uncut source cap, which submap fits best; with the intervals the
+// pockets' walls need, its lattice folds. Cooper takes any quad mesh of
+// such a cap, so pave meshes it instead, with a warning naming the face.
+TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {76.17, 45.81, 14.11});
+  wb.brick("f0", {32.86, 30.05, 6.09}, {14.62, 14, 22.13});
+  wb.brick("f1", {4.3, 29.89, 8.24}, {28.16, 11.26, 19.98});
+  wb.cut("part", {"block", "f0", "f1"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto r = pipeline::mesh_model(model, sized(1.887), *registry, selector::mesh_options());
+  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  const double exact = 76.17 * 45.81 * 14.11 - 14.62 * 14.0 * (14.11 - 6.09) -
+                       28.16 * 11.26 * (14.11 - 8.24);
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GE(s.min_sj, 0.3);
+  int top = 0;  // the cap at z = 14.11 holding both pockets' mouths
+  for (const auto& f : model.surfaces())
+    if (f.box.min.z() > 14.1 && f.box.max.x() - f.box.min.x() > 70.0) top = f.id;
+  ASSERT_GT(top, 0);
+  bool warned = false;
+  for (const auto& w : r.warnings)
+    warned |= w.entity.id == top && w.message.find("pave's all-quad mesh instead") != std::string::npos;
+  EXPECT_TRUE(warned) << "surface " << top << " was not said to be paved instead";
+
+  // A scheme the journal pins on such a cap is the one it gets (it serves
+  // the cap's role); before, the pin conflicted with the role cooper chose.
+  io::MeshSettings pinned = sized(1.887);
+  io::SurfaceSetting pave;
+  pave.id = top;
+  pave.scheme = "pave";
+  pinned.surfaces.push_back(pave);
+  const auto p = pipeline::mesh_model(model, pinned, *registry, selector::mesh_options());
+  ASSERT_EQ(p.plan.volumes.at(1).scheme, "cooper");
+  EXPECT_EQ(p.plan.surfaces.at(top).scheme, "pave");
+  EXPECT_TRUE(p.warnings.empty());
+  EXPECT_NEAR(check_mesh(model, p.mesh).volume, exact, 0.005 * exact);
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {

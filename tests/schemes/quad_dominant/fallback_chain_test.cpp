@@ -5,6 +5,7 @@
 // excuse. The quality is measured here, against the plane's normal.
 #include "schemes/quad_dominant/fallback_chain.h"
 
+#include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/io/job.h"
 #include "framework/pipeline/mesh_curves.h"
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <string>
 
 namespace cooperage::quad_dominant {
 namespace {
@@ -39,13 +42,21 @@ struct BladeCap {
   Vec3 normal;
 };
 
-BladeCap mesh_blade_cap(double degrees, double size) {
+/// The blade's cap with its curves meshed at `size` (even total).
+struct BladeModel {
+  geom::Model model;
+  int sid = 0;
+  mesh::MeshDB db;
+};
+
+void build_blade(double degrees, double size, BladeModel& out) {
   const double corner = degrees * M_PI / 180.0;
   occ::Workbench wb;
   const double tip = 2.0 / std::tan(corner), length = tip + 4.0;
   wb.prism("blade", {{0, 0, 0}, {length, 0, 0}, {length, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
-  const geom::Model model = wb.build_model();
-  int sid = 0;
+  out.model = wb.build_model();
+  const geom::Model& model = out.model;
+  int& sid = out.sid;
   for (const auto& s : model.surfaces()) {
     if (s.geometry->type() == geom::SurfaceType::Plane && s.box.max.z() < 1e-9) sid = s.id;
   }
@@ -56,8 +67,15 @@ BladeCap mesh_blade_cap(double degrees, double size) {
     intervals[c.id] = std::max(1, static_cast<int>(std::lround(c.length / size)));
   for (const auto& use : model.surface(sid).loops.front().uses) total += intervals[use.curve];
   if (total % 2) ++intervals[model.surface(sid).loops.front().uses.front().curve];
-  mesh::MeshDB db;
-  pipeline::mesh_curves(model, intervals, io::MeshSettings{}, db);
+  pipeline::mesh_curves(model, intervals, io::MeshSettings{}, out.db);
+}
+
+BladeCap mesh_blade_cap(double degrees, double size) {
+  BladeModel blade;
+  build_blade(degrees, size, blade);
+  const geom::Model& model = blade.model;
+  const int sid = blade.sid;
+  mesh::MeshDB& db = blade.db;
   const FallbackChain chain(pave::make_pave(), nullptr, tri::make_tri(), 0.2);
   scheme::Settings settings;
   settings.size = size;
@@ -113,6 +131,62 @@ TEST(FallbackChain, AThirtyDegreeCornerIsNoExcuse) {
     EXPECT_TRUE(cap.mesh.warnings.empty()) << cap.mesh.warnings[0];
   }
   EXPECT_GT(worst, 0.0);
+}
+
+/// A structured scheme that fails on every face, as submap does where the
+/// interval counts do not fit a face's shape.
+class FailingScheme final : public scheme::SurfaceScheme {
+ public:
+  explicit FailingScheme(std::string why) : why_(std::move(why)) {}
+  std::string_view name() const override { return "failing"; }
+  scheme::Applicability applicable(const scheme::SurfaceView&) const override {
+    return scheme::Applicability::yes(1.0, "");
+  }
+  void constrain(const scheme::SurfaceView&, intervals::IntervalProblem&) const override {}
+  scheme::EntityMesh mesh(const scheme::SurfaceView&, const scheme::Settings&) const override {
+    throw MeshingError(ErrorCode::MeshingFailed, why_);
+  }
+
+ private:
+  std::string why_;
+};
+
+std::string error_of(const FallbackChain& chain, const BladeModel& blade,
+                     const scheme::Settings& settings) {
+  try {
+    chain.mesh({blade.model, blade.sid, &blade.db}, settings);
+  } catch (const MeshingError& e) {
+    return e.message();
+  }
+  return "";
+}
+
+// In 3D a volume scheme needs the surface scheme it chose, so a failure is
+// the run's failure; but on a surface every volume takes as it finds it
+// (cooper's uncut caps), any all-quad mesh will do: pave's, never triangles.
+TEST(FallbackChain, ASurfaceTakenAsFoundFallsBackToQuadsOnly) {
+  BladeModel blade;
+  build_blade(30.0, 0.25, blade);
+  const FallbackChain chain(std::make_unique<FailingScheme>("the lattice does not fit"),
+                            pave::make_pave(), tri::make_tri(), 0.2);
+  scheme::Settings settings;
+  settings.size = 0.25;
+  EXPECT_EQ(error_of(chain, blade, settings), "the lattice does not fit");
+
+  settings.allow_quad_fallback = true;
+  const scheme::EntityMesh m = chain.mesh({blade.model, blade.sid, &blade.db}, settings);
+  EXPECT_TRUE(m.tris.empty());
+  EXPECT_FALSE(m.quads.empty());
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].find("failing failed (the lattice does not fit); pave's all-quad mesh"),
+            std::string::npos)
+      << m.warnings[0];
+
+  // When the fallback fails too, the primary's reason is the one reported.
+  const FallbackChain both(std::make_unique<FailingScheme>("the lattice does not fit"),
+                           std::make_unique<FailingScheme>("no quads either"), tri::make_tri(),
+                           0.2);
+  EXPECT_EQ(error_of(both, blade, settings), "the lattice does not fit");
 }
 
 }  // namespace
