@@ -218,8 +218,66 @@ std::vector<size_t> odd_loop_picks(const std::vector<Eigen::Vector2d>& P, const 
 
 }  // namespace
 
+namespace {
+
+/// Whether two coarse edges of the picked polygon that share no vertex
+/// cross. Skipping a node can cut across a sliver of the face (a cone's
+/// flank running into a wall at 8 degrees: the chord over the skipped node
+/// passes beyond the loop's other side), and no triangulation recovers a
+/// boundary that crosses itself. Edges are swept in order of their least x.
+bool picks_cross(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
+                 const std::vector<size_t>& picks) {
+  const size_t m = picks.size();
+  if (m < 4) return false;
+  const auto at = [&](size_t j) { return P[static_cast<size_t>(L[picks[j % m]])]; };
+  std::vector<std::pair<double, size_t>> order(m);  // (least x, edge j -> j + 1)
+  for (size_t j = 0; j < m; ++j) order[j] = {std::min(at(j).x(), at(j + 1).x()), j};
+  std::sort(order.begin(), order.end());
+  for (size_t a = 0; a < m; ++a) {
+    const size_t i = order[a].second;
+    const double right = std::max(at(i).x(), at(i + 1).x());
+    for (size_t b = a + 1; b < m && order[b].first <= right; ++b) {
+      const size_t k = order[b].second;
+      if (k == i || (k + 1) % m == i || (i + 1) % m == k) continue;  // share a vertex
+      if (segments_cross(at(i), at(i + 1), at(k), at(k + 1))) return true;
+    }
+  }
+  return false;
+}
+
+/// The picks of an even loop at `offset`.
+std::vector<size_t> every_other(size_t n, size_t offset) {
+  std::vector<size_t> picks;
+  for (size_t k = offset; k < n; k += 2) picks.push_back(k);
+  return picks;
+}
+
+}  // namespace
+
 std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std::vector<int>& L,
                                int odd_rank, double corner_angle) {
+  std::vector<size_t> picks = preferred_picks(P, L, odd_rank, corner_angle);
+  if (!picks_cross(P, L, picks)) return picks;
+  // A crossing coarse loop fails the triangulation for sure: the picks that
+  // do not cross, of a single parity, rather than the best skipped node.
+  const size_t n = L.size();
+  if (n % 2 == 0) {
+    for (size_t offset : {size_t{0}, size_t{1}}) {
+      std::vector<size_t> plain = every_other(n, offset);
+      if (coarse_loop_valid(P, L, offset) && !picks_cross(P, L, plain)) return plain;
+    }
+  } else {
+    for (int rank = 0; rank < 8; ++rank) {
+      std::vector<size_t> odd = odd_loop_picks(P, L, rank);
+      if (!picks_cross(P, L, odd)) return odd;
+    }
+  }
+  return picks;  // the triangulation reports it
+}
+
+std::vector<size_t> preferred_picks(const std::vector<Eigen::Vector2d>& P,
+                                    const std::vector<int>& L, int odd_rank,
+                                    double corner_angle) {
   const size_t n = L.size();
   std::vector<size_t> picks;
   if (n % 2 == 0) {
@@ -232,7 +290,7 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
             " nodes is too coarse for its shape (its every-other-node polygon folds)");
       }
     }
-    for (size_t k = offset; k < n; k += 2) picks.push_back(k);
+    picks = every_other(n, offset);
   } else {
     picks = odd_loop_picks(P, L, odd_rank);
   }

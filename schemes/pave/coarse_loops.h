@@ -56,8 +56,16 @@ bool coarse_loop_valid(const std::vector<Eigen::Vector2d>& points, const std::ve
 /// when that lifts the worst skipped node by at least 0.2 and its coarse
 /// polygon does not fold. Throws
 /// std::runtime_error when no single parity gives a valid coarse loop.
+/// When those picks make a coarse loop whose edges cross (a chord over a
+/// skipped node cutting across a sliver of the face), the first single
+/// parity (even loops) or odd-edge place (odd loops) whose loop does not.
 std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& points,
                                const std::vector<int>& loop, int odd_rank, double corner_angle);
+
+/// loop_picks() before the crossing check: the best skipped node's choice.
+std::vector<size_t> preferred_picks(const std::vector<Eigen::Vector2d>& points,
+                                    const std::vector<int>& loop, int odd_rank,
+                                    double corner_angle);
 
 /// Builds the coarse loops of the fine loops (fine node ids into `points`),
 /// their vertices by loop_picks(). Throws std::runtime_error when a loop has

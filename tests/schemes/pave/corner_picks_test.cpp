@@ -3,6 +3,7 @@
 // rectangle becomes a coarse vertex whatever its side counts.
 #include "schemes/pave/coarse_loops.h"
 #include "schemes/pave/corner_picks.h"
+#include "schemes/pave/pave_2d.h"
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,48 @@ TEST(PaveCornerPicks, CoarseBoundaryPairsTheOddEdgesAndKeepsTheCornersAsCoarseVe
     const int f = coarse.fine_of_coarse[c];
     EXPECT_EQ(coarse.min_cells[c], f == 0 || f == 5 || f == 8 || f == 13 ? 1 : 2) << "node " << f;
   }
+}
+
+/// Whether two edges of the coarse polygon that share no vertex cross
+/// (a plain O(m^2) check, independent of the one in coarse_loops.cpp).
+bool coarse_polygon_crosses(const std::vector<V2>& P, const std::vector<int>& L,
+                            const std::vector<size_t>& picks) {
+  const size_t m = picks.size();
+  const auto at = [&](size_t j) { return P[static_cast<size_t>(L[picks[j % m]])]; };
+  const auto side = [](const V2& a, const V2& b, const V2& c) {
+    const V2 u = b - a, v = c - a;
+    return u.x() * v.y() - u.y() * v.x();
+  };
+  for (size_t i = 0; i < m; ++i)
+    for (size_t k = i + 2; k < m; ++k) {
+      if ((k + 1) % m == i) continue;
+      const bool apart_k = (side(at(i), at(i + 1), at(k)) > 0) != (side(at(i), at(i + 1), at(k + 1)) > 0);
+      const bool apart_i = (side(at(k), at(k + 1), at(i)) > 0) != (side(at(k), at(k + 1), at(i + 1)) > 0);
+      if (apart_k && apart_i) return true;
+    }
+  return false;
+}
+
+// The cap of a lug's cone underside where it runs into a block's wall at 8
+// degrees, as pave got it in the plan => mesh campaign (seed 5 case 94,
+// surface 7, normalised): a sliver ends at node 0. Node 0 is the sharpest
+// corner, so the best skipped node makes it a coarse vertex and skips node
+// 1; the chord 0 -> 2 then passes beyond the sliver's other side (nodes 19
+// to 22) and the triangulation failed ("loop edges intersect").
+TEST(PaveCornerPicks, ACoarseLoopThatWouldCrossItselfTakesTheOtherNodes) {
+  const std::vector<V2> P = {
+      {0, 0},           {0.164981, 0},    {0.321134, 0.0530454}, {0.451654, 0.153848},
+      {0.542398, 0.291499}, {0.58359, 0.45114},  {0.570775, 0.615518}, {0.505319, 0.766865},
+      {0.394299, 0.888782}, {0.249714, 0.968092}, {0.0872188, 0.996189}, {0.0857594, 0.756413},
+      {0.0846734, 0.565159}, {0.121011, 0.554793}, {0.149024, 0.522206}, {0.151681, 0.475026},
+      {0.127502, 0.439498}, {0.0925531, 0.425116}, {0.113259, 0.250749}, {0.127689, 0.129656},
+      {0.136067, 0.0596069}, {0.140935, 0.0190919}, {0.111802, 0.0155072}, {0.0674366, 0.00972009}};
+  const std::vector<int> L = iota_loop(P.size());
+  ASSERT_TRUE(coarse_polygon_crosses(P, L, preferred_picks(P, L, 0, kCorner)))
+      << "the case no longer arises: the test shows nothing";
+  EXPECT_FALSE(coarse_polygon_crosses(P, L, loop_picks(P, L, 0, kCorner)));
+  const QuadMesh2D m = pave_2d({P});
+  EXPECT_FALSE(m.quads.empty());
 }
 
 }  // namespace
