@@ -285,6 +285,16 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       for (const geom::Vec3& y : c.samples) upright = upright && (flat(y) - foot).norm() <= tol;
     }
     if (!upright) continue;
+    // A rectangle whose sides are split only at straight (180-degree)
+    // vertices is one lattice rectangle: its columns are where the walk puts
+    // them, however far from even spacing (a boss overhanging a wall by a
+    // fraction of an element refines one rim; the other rim must follow).
+    const bool rectangle =
+        std::count_if(f->angles.begin(), f->angles.end(),
+                      [](double a) { return std::abs(a - 90.0) <= 10.0; }) == 4 &&
+        std::all_of(f->angles.begin(), f->angles.end(), [](double a) {
+          return std::abs(a - 90.0) <= 10.0 || std::abs(a - 180.0) <= 10.0;
+        });
     for (size_t k = 0; k < loop.size(); ++k) {
       const int id = loop[k].curve;
       if (!lattice.along.count(id)) continue;
@@ -306,7 +316,7 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
         // A knot far from even spacing (more than 1.5 intervals) means the
         // submap's columns are not where this walk puts them (a wall of
         // pyocc_face_recognition: 3 intervals off, and a hex inverted).
-        if (std::abs(at * n - static_cast<double>(k_v)) > 1.5) {
+        if (!rectangle && std::abs(at * n - static_cast<double>(k_v)) > 1.5) {
           consistent = false;
           continue;
         }

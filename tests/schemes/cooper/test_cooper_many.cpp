@@ -790,6 +790,33 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   EXPECT_NEAR(check_mesh(model, p.mesh).volume, exact, 0.005 * exact);
 }
 
+// A square boss overhanging the block's back wall by 0.82, with a through
+// hole swept along z (the plan => mesh campaign, seed 5 case 133). The
+// overhang's 0.82-wide underside refines the wall's top rim under it (20
+// intervals on 19.94), so the rim beside it gets few; the wall's bottom rim,
+// one curve, was spaced evenly, its columns ran up to 11 sideways, and hexes
+// by the hole folded. The wall is one lattice rectangle, so the bottom rim's
+// nodes are now put under the top rim's vertices however uneven that is.
+TEST(CooperMany, ABossOverhangingAWallKeepsTheWallsColumnsUpright) {
+  for (double size : {2.4, 5.02}) {
+    occ::Workbench wb;
+    wb.brick("block", {0, 0, 0}, {68.17, 33.42, 31.29});
+    wb.brick("boss", {38.88, 22.54, 31.29}, {19.94, 11.7, 8.9});
+    wb.cylinder("hole", {23.18, 25.48, -31.29}, {0, 0, 1}, 2.13, 93.87);
+    wb.fuse("body", {"block", "boss"});
+    wb.cut("part", {"body", "hole"});
+    const geom::Model model = wb.build_model();
+    const auto registry = builtin();
+    const auto r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
+    ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
+    const Summary s = check_mesh(model, r.mesh);
+    const double exact =
+        68.17 * 33.42 * 31.29 + 19.94 * 11.7 * 8.9 - M_PI * 2.13 * 2.13 * 31.29;
+    EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;
+    EXPECT_GE(s.min_sj, 0.25) << size;
+  }
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
