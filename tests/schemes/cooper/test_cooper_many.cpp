@@ -817,6 +817,29 @@ TEST(CooperMany, ABossOverhangingAWallKeepsTheWallsColumnsUpright) {
   }
 }
 
+// A square boss overhanging the block's front wall by 0.02, beside a round
+// boss, at size 3.605 (the plan => mesh campaign, seed 5 case 174). The
+// plan took the boss's top as uncut (the overhang is 0.2 % of its width,
+// under its 0.5 % tolerance) and had it meshed beforehand; imprinting the
+// overhang's edge then cut it, and the run failed. The plan now counts any
+// depth above sampling noise, so the sweep meshes the top itself.
+TEST(CooperMany, AHairlineOverhangCutsTheBossTopInThePlan) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {52.87, 56.68, 22.53});
+  wb.cylinder("round", {13.54, 42.67, 22.53}, {0, 0, 1}, 7.83, 13.95);
+  wb.brick("square", {24.58, -0.02, 22.53}, {17.42, 19.42, 17.02});
+  wb.fuse("part", {"block", "round", "square"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto r = pipeline::mesh_model(model, sized(3.605), *registry, selector::mesh_options());
+  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  const double exact =
+      52.87 * 56.68 * 22.53 + M_PI * 7.83 * 7.83 * 13.95 + 17.42 * 19.42 * 17.02;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.0);  // the 0.02 strip's hexes are thin, not inverted
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
