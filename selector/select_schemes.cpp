@@ -377,8 +377,7 @@ class Selector {
       }
       waits_for_ = std::move(waits);
       for (const auto& [surface, role] : roles) {
-        if (role != scheme::kMeshedByVolume && takes.count(surface) == 0)
-          imposed_.insert(surface);
+        if (role != scheme::kMeshedByVolume && takes.count(surface) == 0) imposed_.insert(surface);
         auto it = roles_.find(surface);
         if (it != roles_.end() &&
             (role == scheme::kMeshedByVolume) != (it->second.scheme == scheme::kMeshedByVolume)) {

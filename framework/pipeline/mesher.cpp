@@ -273,8 +273,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
         if (dim == 3 && entry.any_quad_mesh) {
           scheme::Settings own = params;
           own.allow_quad_fallback = true;
-          return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &own, entry.data.get()},
-                         own);
+          return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &own, entry.data.get()}, own);
         }
         return s->mesh(scheme::SurfaceView{model, id, &result.mesh, &params, entry.data.get()},
                        params);

@@ -62,7 +62,7 @@ const scheme::SurfaceScheme* pinned_cap_scheme(const scheme::Registry& registry,
 
 std::string cap_scheme(const geom::Model& model, const scheme::Registry& registry, int surface,
                        std::string& why, Elements elements, const scheme::Settings* settings) {
-  const scheme::Role role = elements == Elements::Mixed  ? scheme::Role::MixedCap
+  const scheme::Role role = elements == Elements::Mixed   ? scheme::Role::MixedCap
                             : elements == Elements::Wedge ? scheme::Role::TriCap
                                                           : scheme::Role::QuadCap;
   if (const scheme::SurfaceScheme* pinned = pinned_cap_scheme(registry, surface, role, settings))
@@ -72,8 +72,8 @@ std::string cap_scheme(const geom::Model& model, const scheme::Registry& registr
   // Jacobian each can reach, so a corner map/submap would squash goes to
   // pave); ties keep the registration order map, submap, pave, plug-ins.
   // Wedge mode: the best triangle scheme (tri).
-  const scheme::RoleChoice c =
-      scheme::best_surface_scheme(registry, role, scheme::SurfaceView{model, surface, nullptr, settings});
+  const scheme::RoleChoice c = scheme::best_surface_scheme(
+      registry, role, scheme::SurfaceView{model, surface, nullptr, settings});
   if (c.scheme) return std::string(c.scheme->name());
   why = no_scheme(surface, elements == Elements::Wedge ? "triangle" : "quad", c.reasons);
   return {};

@@ -276,8 +276,7 @@ std::vector<size_t> loop_picks(const std::vector<Eigen::Vector2d>& P, const std:
 }
 
 std::vector<size_t> preferred_picks(const std::vector<Eigen::Vector2d>& P,
-                                    const std::vector<int>& L, int odd_rank,
-                                    double corner_angle) {
+                                    const std::vector<int>& L, int odd_rank, double corner_angle) {
   const size_t n = L.size();
   std::vector<size_t> picks;
   if (n % 2 == 0) {

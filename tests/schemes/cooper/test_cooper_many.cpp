@@ -763,8 +763,8 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   const auto r = pipeline::mesh_model(model, sized(1.887), *registry, selector::mesh_options());
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const Summary s = check_mesh(model, r.mesh);
-  const double exact = 76.17 * 45.81 * 14.11 - 14.62 * 14.0 * (14.11 - 6.09) -
-                       28.16 * 11.26 * (14.11 - 8.24);
+  const double exact =
+      76.17 * 45.81 * 14.11 - 14.62 * 14.0 * (14.11 - 6.09) - 28.16 * 11.26 * (14.11 - 8.24);
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GE(s.min_sj, 0.3);
   int top = 0;  // the cap at z = 14.11 holding both pockets' mouths
@@ -773,7 +773,8 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   ASSERT_GT(top, 0);
   bool warned = false;
   for (const auto& w : r.warnings)
-    warned |= w.entity.id == top && w.message.find("pave's all-quad mesh instead") != std::string::npos;
+    warned |=
+        w.entity.id == top && w.message.find("pave's all-quad mesh instead") != std::string::npos;
   EXPECT_TRUE(warned) << "surface " << top << " was not said to be paved instead";
 
   // A scheme the journal pins on such a cap is the one it gets (it serves
@@ -810,8 +811,7 @@ TEST(CooperMany, ABossOverhangingAWallKeepsTheWallsColumnsUpright) {
     const auto r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
     ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
     const Summary s = check_mesh(model, r.mesh);
-    const double exact =
-        68.17 * 33.42 * 31.29 + 19.94 * 11.7 * 8.9 - M_PI * 2.13 * 2.13 * 31.29;
+    const double exact = 68.17 * 33.42 * 31.29 + 19.94 * 11.7 * 8.9 - M_PI * 2.13 * 2.13 * 31.29;
     EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;
     EXPECT_GE(s.min_sj, 0.25) << size;
   }
@@ -834,8 +834,7 @@ TEST(CooperMany, AHairlineOverhangCutsTheBossTopInThePlan) {
   const auto r = pipeline::mesh_model(model, sized(3.605), *registry, selector::mesh_options());
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const Summary s = check_mesh(model, r.mesh);
-  const double exact =
-      52.87 * 56.68 * 22.53 + M_PI * 7.83 * 7.83 * 13.95 + 17.42 * 19.42 * 17.02;
+  const double exact = 52.87 * 56.68 * 22.53 + M_PI * 7.83 * 7.83 * 13.95 + 17.42 * 19.42 * 17.02;
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GT(s.min_sj, 0.0);  // the 0.02 strip's hexes are thin, not inverted
 }

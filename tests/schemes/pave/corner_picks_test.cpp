@@ -128,8 +128,10 @@ bool coarse_polygon_crosses(const std::vector<V2>& P, const std::vector<int>& L,
   for (size_t i = 0; i < m; ++i)
     for (size_t k = i + 2; k < m; ++k) {
       if ((k + 1) % m == i) continue;
-      const bool apart_k = (side(at(i), at(i + 1), at(k)) > 0) != (side(at(i), at(i + 1), at(k + 1)) > 0);
-      const bool apart_i = (side(at(k), at(k + 1), at(i)) > 0) != (side(at(k), at(k + 1), at(i + 1)) > 0);
+      const bool apart_k =
+          (side(at(i), at(i + 1), at(k)) > 0) != (side(at(i), at(i + 1), at(k + 1)) > 0);
+      const bool apart_i =
+          (side(at(k), at(k + 1), at(i)) > 0) != (side(at(k), at(k + 1), at(i + 1)) > 0);
       if (apart_k && apart_i) return true;
     }
   return false;
@@ -142,13 +144,30 @@ bool coarse_polygon_crosses(const std::vector<V2>& P, const std::vector<int>& L,
 // 1; the chord 0 -> 2 then passes beyond the sliver's other side (nodes 19
 // to 22) and the triangulation failed ("loop edges intersect").
 TEST(PaveCornerPicks, ACoarseLoopThatWouldCrossItselfTakesTheOtherNodes) {
-  const std::vector<V2> P = {
-      {0, 0},           {0.164981, 0},    {0.321134, 0.0530454}, {0.451654, 0.153848},
-      {0.542398, 0.291499}, {0.58359, 0.45114},  {0.570775, 0.615518}, {0.505319, 0.766865},
-      {0.394299, 0.888782}, {0.249714, 0.968092}, {0.0872188, 0.996189}, {0.0857594, 0.756413},
-      {0.0846734, 0.565159}, {0.121011, 0.554793}, {0.149024, 0.522206}, {0.151681, 0.475026},
-      {0.127502, 0.439498}, {0.0925531, 0.425116}, {0.113259, 0.250749}, {0.127689, 0.129656},
-      {0.136067, 0.0596069}, {0.140935, 0.0190919}, {0.111802, 0.0155072}, {0.0674366, 0.00972009}};
+  const std::vector<V2> P = {{0, 0},
+                             {0.164981, 0},
+                             {0.321134, 0.0530454},
+                             {0.451654, 0.153848},
+                             {0.542398, 0.291499},
+                             {0.58359, 0.45114},
+                             {0.570775, 0.615518},
+                             {0.505319, 0.766865},
+                             {0.394299, 0.888782},
+                             {0.249714, 0.968092},
+                             {0.0872188, 0.996189},
+                             {0.0857594, 0.756413},
+                             {0.0846734, 0.565159},
+                             {0.121011, 0.554793},
+                             {0.149024, 0.522206},
+                             {0.151681, 0.475026},
+                             {0.127502, 0.439498},
+                             {0.0925531, 0.425116},
+                             {0.113259, 0.250749},
+                             {0.127689, 0.129656},
+                             {0.136067, 0.0596069},
+                             {0.140935, 0.0190919},
+                             {0.111802, 0.0155072},
+                             {0.0674366, 0.00972009}};
   const std::vector<int> L = iota_loop(P.size());
   ASSERT_TRUE(coarse_polygon_crosses(P, L, preferred_picks(P, L, 0, kCorner)))
       << "the case no longer arises: the test shows nothing";
