@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "framework/core/error.h"
+#include "framework/mesh/loop_nodes.h"
 #include "schemes/cooper/level_spacing.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/cooper/tangent_grading.h"
@@ -102,6 +103,31 @@ void space_alike(const std::vector<std::pair<int, int>>& pairs,
   }
 }
 
+// A sliver cap the sweep meshes itself: a face of one loop of fewer than 4
+// curves, thinner (twice its area over its perimeter) than 5 % of its
+// perimeter -- a lens between an arc and a chord under a boss overhanging
+// its block by 0.35. With 4 nodes it is one flat quad, with 2 none; it needs
+// 6 (two quads). Half-disks (12 % of their perimeter) mesh as one quad and
+// keep their intervals.
+void fewest_sliver_cap_intervals(const geom::Model& model, const VolumePlan& plan,
+                                 intervals::IntervalProblem& problem) {
+  if (plan.elements == Elements::Wedge) return;
+  for (int cap : plan.roles.by_volume) {
+    const geom::Surface& s = model.surface(cap);
+    if (s.loops.size() != 1 || s.loops.front().uses.size() >= 4) continue;
+    std::vector<int> ids;
+    double perimeter = 0;
+    for (const auto& use : s.loops.front().uses) {
+      ids.push_back(use.curve);
+      perimeter += model.curve(use.curve).length;
+    }
+    if (ids.empty() || 2.0 * s.area >= 0.05 * perimeter * perimeter) continue;
+    problem.add_at_least(ids, 6,
+                         "surface " + std::to_string(cap) + " (a sliver cap cooper meshes): curves " +
+                             mesh::loop_curve_list(s.loops.front()) + " >= 6");
+  }
+}
+
 }  // namespace
 
 void CooperScheme::constrain(const scheme::VolumeView& view,
@@ -109,6 +135,7 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
   const auto p = plan(view);
   if (!p->plan.ok) return;
   add_rows(p->plan.rows, problem);
+  fewest_sliver_cap_intervals(view.model, p->plan, problem);
   space_alike(p->plan.along_pairs, problem);
   grade_tangent_ribs(p->plan.facts, p->plan.lattice, problem);
 }

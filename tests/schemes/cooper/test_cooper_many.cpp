@@ -839,6 +839,32 @@ TEST(CooperMany, AHairlineOverhangCutsTheBossTopInThePlan) {
   EXPECT_GT(s.min_sj, 0.0);  // the 0.02 strip's hexes are thin, not inverted
 }
 
+// A round boss overhanging the block's front wall by 0.35, beside a through
+// hole that breaks the back wall, at size 3.534 (the plan => mesh campaign,
+// seed 5 case 88). The overhang's underside is a lens between a 4.95 chord
+// and an arc, a cap the sweep meshes; it got 1 + 1 intervals and the
+// virtual cap beside it was no simple loop. A sliver cap of fewer than 4
+// curves now gets at least 6.
+TEST(CooperMany, ALensUnderAnOverhangGetsIntervalsForTwoQuads) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {76.29, 49.56, 24.44});
+  wb.cylinder("boss", {29.57, 8.56, 24.44}, {0, 0, 1}, 8.91, 9.46);
+  wb.cylinder("hole", {23.07, 40.66, -24.44}, {0, 0, 1}, 12.05, 73.32);
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "hole"});
+  const geom::Model model = wb.build_model();
+  const auto registry = builtin();
+  const auto r = pipeline::mesh_model(model, sized(3.534), *registry, selector::mesh_options());
+  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  const Summary s = check_mesh(model, r.mesh);
+  // The hole's disk less the segment beyond the back wall (8.9 from its centre).
+  const double R = 12.05, d = 49.56 - 40.66;
+  const double disk = M_PI * R * R - (R * R * std::acos(d / R) - d * std::sqrt(R * R - d * d));
+  const double exact = 76.29 * 49.56 * 24.44 - disk * 24.44 + M_PI * 8.91 * 8.91 * 9.46;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);
+  EXPECT_GT(s.min_sj, 0.0);  // thin hexes over the lens, none inverted
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
