@@ -123,7 +123,8 @@ void fewest_sliver_cap_intervals(const geom::Model& model, const VolumePlan& pla
     }
     if (ids.empty() || 2.0 * s.area >= 0.05 * perimeter * perimeter) continue;
     problem.add_at_least(ids, 6,
-                         "surface " + std::to_string(cap) + " (a sliver cap cooper meshes): curves " +
+                         "surface " + std::to_string(cap) +
+                             " (a sliver cap cooper meshes): curves " +
                              mesh::loop_curve_list(s.loops.front()) + " >= 6");
   }
 }
