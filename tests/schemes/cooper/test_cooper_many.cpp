@@ -747,6 +747,21 @@ TEST(CooperMany, LugWithAShallowConeUnderItSweepsTheConeAsACap) {
                               "lug over a 31-degree cone");
 }
 
+/// The run of the built-in schemes on `model` at `size`, with the mesh
+/// checked (check_mesh); cooper must mesh the volume.
+struct SweptPart {
+  pipeline::MeshResult run;
+  Summary summary;
+};
+
+SweptPart sweep_part(const geom::Model& model, double size) {
+  const auto registry = builtin();
+  SweptPart out{pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options()), {}};
+  EXPECT_EQ(out.run.plan.volumes.at(1).scheme, "cooper") << size;
+  out.summary = check_mesh(model, out.run.mesh);
+  return out;
+}
+
 // Two pockets 0.4 apart in x and offset by 0.16 in y, at size 1.887 (the
 // plan => mesh campaign, fuzz/parity_campaign.py --seed 5 case 30). The top
 // is an uncut source cap, which submap fits best; with the intervals the
@@ -759,10 +774,9 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   wb.brick("f1", {4.3, 29.89, 8.24}, {28.16, 11.26, 19.98});
   wb.cut("part", {"block", "f0", "f1"});
   const geom::Model model = wb.build_model();
-  const auto registry = builtin();
-  const auto r = pipeline::mesh_model(model, sized(1.887), *registry, selector::mesh_options());
-  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const SweptPart swept = sweep_part(model, 1.887);
+  const pipeline::MeshResult& r = swept.run;
+  const Summary& s = swept.summary;
   const double exact =
       76.17 * 45.81 * 14.11 - 14.62 * 14.0 * (14.11 - 6.09) - 28.16 * 11.26 * (14.11 - 8.24);
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
@@ -784,7 +798,7 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   pave.id = top;
   pave.scheme = "pave";
   pinned.surfaces.push_back(pave);
-  const auto p = pipeline::mesh_model(model, pinned, *registry, selector::mesh_options());
+  const auto p = pipeline::mesh_model(model, pinned, *builtin(), selector::mesh_options());
   ASSERT_EQ(p.plan.volumes.at(1).scheme, "cooper");
   EXPECT_EQ(p.plan.surfaces.at(top).scheme, "pave");
   EXPECT_TRUE(p.warnings.empty());
@@ -806,11 +820,7 @@ TEST(CooperMany, ABossOverhangingAWallKeepsTheWallsColumnsUpright) {
     wb.cylinder("hole", {23.18, 25.48, -31.29}, {0, 0, 1}, 2.13, 93.87);
     wb.fuse("body", {"block", "boss"});
     wb.cut("part", {"body", "hole"});
-    const geom::Model model = wb.build_model();
-    const auto registry = builtin();
-    const auto r = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
-    ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
-    const Summary s = check_mesh(model, r.mesh);
+    const Summary s = sweep_part(wb.build_model(), size).summary;
     const double exact = 68.17 * 33.42 * 31.29 + 19.94 * 11.7 * 8.9 - M_PI * 2.13 * 2.13 * 31.29;
     EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;
     EXPECT_GE(s.min_sj, 0.25) << size;
@@ -829,11 +839,7 @@ TEST(CooperMany, AHairlineOverhangCutsTheBossTopInThePlan) {
   wb.cylinder("round", {13.54, 42.67, 22.53}, {0, 0, 1}, 7.83, 13.95);
   wb.brick("square", {24.58, -0.02, 22.53}, {17.42, 19.42, 17.02});
   wb.fuse("part", {"block", "round", "square"});
-  const geom::Model model = wb.build_model();
-  const auto registry = builtin();
-  const auto r = pipeline::mesh_model(model, sized(3.605), *registry, selector::mesh_options());
-  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = sweep_part(wb.build_model(), 3.605).summary;
   const double exact = 52.87 * 56.68 * 22.53 + M_PI * 7.83 * 7.83 * 13.95 + 17.42 * 19.42 * 17.02;
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GT(s.min_sj, 0.0);  // the 0.02 strip's hexes are thin, not inverted
@@ -852,11 +858,7 @@ TEST(CooperMany, ALensUnderAnOverhangGetsIntervalsForTwoQuads) {
   wb.cylinder("hole", {23.07, 40.66, -24.44}, {0, 0, 1}, 12.05, 73.32);
   wb.fuse("body", {"block", "boss"});
   wb.cut("part", {"body", "hole"});
-  const geom::Model model = wb.build_model();
-  const auto registry = builtin();
-  const auto r = pipeline::mesh_model(model, sized(3.534), *registry, selector::mesh_options());
-  ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = sweep_part(wb.build_model(), 3.534).summary;
   // The hole's disk less the segment beyond the back wall (8.9 from its centre).
   const double R = 12.05, d = 49.56 - 40.66;
   const double disk = M_PI * R * R - (R * R * std::acos(d / R) - d * std::sqrt(R * R - d * d));
