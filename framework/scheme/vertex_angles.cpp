@@ -95,7 +95,7 @@ double predicted_corner_quality(double degrees, VertexType type) {
 }
 
 std::optional<VertexType> classify_angle(double degrees) {
-  if (degrees < 45.0) return std::nullopt;
+  if (degrees < kMinEndAngle) return std::nullopt;
   if (degrees < 130.0) return VertexType::End;
   if (degrees < 225.0) return VertexType::Side;
   if (degrees < 315.0) return VertexType::Corner;

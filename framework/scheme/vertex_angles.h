@@ -25,8 +25,14 @@ double ideal_angle_degrees(VertexType type);
 /// map, submap and pave compare on one scale.
 double predicted_corner_quality(double degrees, VertexType type);
 
-/// Classification by angle: END [45, 130), SIDE [130, 225), CORNER
-/// [225, 315), REVERSAL >= 315 degrees (MeshKit's thresholds); none below 45.
+/// The sharpest corner that is still an END. MeshKit stops at 45; an END
+/// of 30 degrees still gives its quad a scaled Jacobian of sin 30 = 0.5,
+/// and real parts have 40-degree corners (an angled clamp's flanks).
+inline constexpr double kMinEndAngle = 30.0;
+
+/// Classification by angle: END [30, 130), SIDE [130, 225), CORNER
+/// [225, 315), REVERSAL >= 315 degrees (MeshKit's thresholds above END);
+/// none below kMinEndAngle.
 std::optional<VertexType> classify_angle(double degrees);
 
 /// A junction of a loop: between uses[k-1] (incoming) and uses[k] (outgoing).

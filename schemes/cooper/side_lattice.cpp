@@ -112,7 +112,8 @@ std::vector<int> loop_directions(const FaceFact& f, std::string& why) {
     if (!type || *type == VertexType::Reversal) {
       why = "surface " + std::to_string(f.id) + " has a corner of " + text(f.angles[k]) +
             " degrees before curve " + std::to_string(f.loops.front()[k].curve) +
-            (type ? " (a REVERSAL)" : " (no vertex type below 45 degrees)");
+            (type ? " (a REVERSAL)"
+                  : " (no vertex type below " + text(scheme::kMinEndAngle) + " degrees)");
       return {};
     }
     turn[k] = static_cast<int>(*type);

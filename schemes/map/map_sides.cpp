@@ -49,7 +49,8 @@ MapSides analyse_map_surface(const geom::Model& model, int surface_id) {
   for (const auto& c : corners) {
     if (!c.type) {
       out.why = name + ": vertex " + std::to_string(c.vertex) + " at " + degrees(c.angle) +
-                " degrees is too sharp to classify (below 45); map needs END and SIDE vertices";
+                " degrees is too sharp to classify (below " + degrees(scheme::kMinEndAngle) +
+                "); map needs END and SIDE vertices";
       return out;
     }
     if (*c.type == scheme::VertexType::Corner || *c.type == scheme::VertexType::Reversal) {

@@ -36,7 +36,7 @@ struct LoopTypes {
   int target_sum = 4;             ///< 4 for the outer loop, -4 for a hole
   int changed = 0;                ///< corners whose type differs from raw
   double cost = 0.0;              ///< sum w_i |t_i - t_i0| of the repair
-  int bad_corner = -1;            ///< corner whose angle has no type (< 45 degrees), or -1
+  int bad_corner = -1;            ///< corner whose angle has no type (< kMinEndAngle), or -1
   std::string why;                ///< reason for !ok ("loop sum 3, needs 4"), no entity prefix
 };
 

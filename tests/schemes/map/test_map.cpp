@@ -158,6 +158,47 @@ TEST(SurfaceMapMesh, Rectangle4x6) {
   }
 }
 
+// A quadrilateral with corners of 40, 110, 100 and 110 degrees (the
+// flanks of an angled clamp have 40-degree corners): the sharp corner is
+// an END (scheme::kMinEndAngle), so the face maps, and no quad is worse
+// than the corner allows (sin 40 = 0.64). Below kMinEndAngle a corner has
+// no type and map refuses, naming it.
+TEST(SurfaceMapMesh, FortyDegreeCornerIsAnEnd) {
+  testing::ModelBuilder m;
+  const int v1 = m.vertex({0, 0, 0}), v2 = m.vertex({10, 0, 0});
+  const int v3 = m.vertex({10.874, 2.402, 0}), v4 = m.vertex({6.128, 5.142, 0});
+  m.planar({v1, v2, v3, v4});
+  const geom::Model model = m.finish();
+  const auto corners = scheme::loop_corners(model, 1, 0);
+  ASSERT_EQ(corners.size(), 4u);
+  EXPECT_NEAR(corners[0].angle, 40.0, 0.1);
+  const auto a = map::make_surface_map()->applicable({model, 1, nullptr});
+  ASSERT_TRUE(a.ok) << a.why;
+  mesh::MeshDB db;
+  mesh_curves(model, db, 1.0, {{1, 10}, {2, 4}, {3, 10}, {4, 4}});
+  commit_surface(db, 1, map::make_surface_map()->mesh({model, 1, &db}, {}));
+  EXPECT_EQ(db.surface(1).quads.size(), 40u);
+  double area = 0.0, worst = 1.0;
+  for (const auto& q : db.surface(1).quads) {
+    worst = std::min(worst, testing::quad_scaled_jacobian(db, q, Vec3::UnitZ()));
+    area += 0.5 * (db.node(q[2]) - db.node(q[0])).cross(db.node(q[3]) - db.node(q[1])).z();
+  }
+  EXPECT_GT(worst, 0.5);
+  EXPECT_LE(worst, std::sin(40.0 * 3.14159265358979323846 / 180.0) + 1e-6);
+  // The shoelace area of the four corners.
+  const double exact = 0.5 * ((10 * 2.402 - 10.874 * 0) + (10.874 * 5.142 - 6.128 * 2.402));
+  EXPECT_NEAR(area, exact, 1e-9 * exact);
+
+  testing::ModelBuilder sharp;
+  const int w1 = sharp.vertex({0, 0, 0}), w2 = sharp.vertex({10, 0, 0});
+  const int w3 = sharp.vertex({10, 2, 0}), w4 = sharp.vertex({2 / std::tan(0.436332), 2, 0});
+  sharp.planar({w1, w2, w3, w4});
+  const geom::Model sharp_model = sharp.finish();
+  const auto b = map::make_surface_map()->applicable({sharp_model, 1, nullptr});
+  EXPECT_FALSE(b.ok);
+  EXPECT_NE(b.why.find("too sharp to classify (below 30)"), std::string::npos) << b.why;
+}
+
 TEST(SurfaceMapMesh, UnequalSidesThrow) {
   const geom::Model model = testing::rectangle_model(4, 6);
   mesh::MeshDB db;

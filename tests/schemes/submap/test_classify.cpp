@@ -89,10 +89,10 @@ TEST(SubmapClassify, PinnedTypeIsKept) {
 }
 
 TEST(SubmapClassify, SharpAndUnrepairableLoopsAreRejectedWithAReason) {
-  const LoopTypes sharp = classify_loop(corners({30, 75, 75}), 4);
+  const LoopTypes sharp = classify_loop(corners({25, 80, 75}), 4);
   EXPECT_FALSE(sharp.ok);
   EXPECT_EQ(sharp.bad_corner, 0);
-  EXPECT_NE(sharp.why.find("30 degrees cannot be END/SIDE/CORNER/REVERSAL"), std::string::npos);
+  EXPECT_NE(sharp.why.find("25 degrees cannot be END/SIDE/CORNER/REVERSAL"), std::string::npos);
 
   const LoopTypes disk = classify_loop(corners({180}), 4);
   EXPECT_FALSE(disk.ok);
