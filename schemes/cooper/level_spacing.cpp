@@ -253,7 +253,22 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       if (lattice.along.count(loop[k].curve)) first = k;
     }
     if (first == loop.size()) continue;
-    std::map<int, long> column;  // vertex -> i
+    // A side closed round the sweep (a boss's cylinder, its seam a curve
+    // across the rims) has periodic columns: a rim that is one closed curve
+    // of n intervals meets its own vertex again n columns on.
+    long period = 0;
+    for (const UseFact& u : loop) {
+      const CurveFact& c = facts.curves.at(u.curve);
+      if (c.start != c.end || !lattice.along.count(u.curve) || !counts.count(u.curve)) continue;
+      const long n = counts.at(u.curve);
+      period = period == 0 || period == n ? n : -1;
+    }
+    if (period < 0) continue;
+    const auto same_column = [period](long a, long b) {
+      return period > 0 ? (a - b) % period == 0 : a == b;
+    };
+    std::map<int, long> column;                      // vertex -> i
+    std::map<int, std::pair<long, long>> start_col;  // along curve -> (i at its start, step)
     bool ok = true;
     long i = 0;
     int dir = 0;  // 0: +i, 1: +j, 2: -i, 3: -j
@@ -270,8 +285,13 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       ok = ok && counts.count(u.curve) && is_along == (dir % 2 == 0);
       if (!ok) break;
       const auto [it, added] = column.emplace(from, i);
-      ok = ok && (added || it->second == i);
-      if (is_along) i += (dir == 0 ? 1 : -1) * counts.at(u.curve);
+      ok = ok && (added || same_column(it->second, i));
+      if (is_along) {
+        const long sign = dir == 0 ? 1 : -1, n = counts.at(u.curve);
+        start_col[u.curve] =
+            u.forward ? std::make_pair(i, sign) : std::make_pair(i + sign * n, -sign);
+        i += sign * n;
+      }
     }
     if (!ok || i != 0) continue;
     // Columns run along the sweep only where the curves between the rings
@@ -300,16 +320,15 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       if (!lattice.along.count(id)) continue;
       const CurveFact& c = facts.curves.at(id);
       const int n = counts.at(id);
-      if (n < 2 || c.start == c.end) continue;
+      if (n < 2 || (c.start == c.end && period == 0)) continue;
       const Profile prof = profile_of(c, d);
       // Columns of the curve's own ends (every vertex of the loop has one).
-      const long ia = column.at(c.start), ib = column.at(c.end);
-      if (std::abs(ib - ia) != n) continue;
-      const long step = ib > ia ? 1 : -1;
+      const auto [ia, step] = start_col.at(id);
       std::map<int, double> knots{{0, 0.0}, {n, 1.0}};
       bool consistent = true;
       for (const auto& [v, iv] : column) {
-        const long k_v = (iv - ia) * step;
+        long k_v = (iv - ia) * step;
+        if (period > 0) k_v = (k_v % period + period) % period;
         if (v == c.start || v == c.end || k_v <= 0 || k_v >= n) continue;
         const auto [at, dist] = nearest_on(prof, flat(facts.vertices.at(v)));
         if (dist > tol + 1.5 * prof.sagitta) continue;  // a slanted column: no knot
