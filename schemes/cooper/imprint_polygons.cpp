@@ -146,22 +146,28 @@ bool absorb_touching_hole(Loop& outer, const Loop& hole) {
       merged.push_back(hole[k]);
     merged.insert(merged.end(), outer.begin() + static_cast<long>(i) + 1, outer.end());
     // Edges the two loops shared beyond the first come back as spikes p, q, p.
-    for (bool again = true; again && merged.size() > 2;) {
-      again = false;
-      const size_t m = merged.size();
-      for (size_t k = 0; k < m; ++k) {
-        if (merged[k] != merged[(k + 2) % m]) continue;
-        const size_t a = (k + 1) % m, b = (k + 2) % m;
-        merged.erase(merged.begin() + static_cast<long>(std::max(a, b)));
-        merged.erase(merged.begin() + static_cast<long>(std::min(a, b)));
-        again = true;
-        break;
-      }
-    }
+    remove_spikes(merged);
     outer = std::move(merged);
     return true;
   }
   return false;
+}
+
+bool remove_spikes(Loop& loop) {
+  bool removed = false;
+  for (bool again = true; again && loop.size() > 2;) {
+    again = false;
+    const size_t m = loop.size();
+    for (size_t k = 0; k < m; ++k) {
+      if (loop[k] != loop[(k + 2) % m]) continue;
+      const size_t a = (k + 1) % m, b = (k + 2) % m;
+      loop.erase(loop.begin() + static_cast<long>(std::max(a, b)));
+      loop.erase(loop.begin() + static_cast<long>(std::min(a, b)));
+      again = removed = true;
+      break;
+    }
+  }
+  return removed;
 }
 
 Vec2 hole_owner_probe(const Loop& hole, const std::map<int, Vec2>& xy,

@@ -72,6 +72,10 @@ bool flat_quad(const Loop& loop, const std::map<int, Vec2>& xy);
 /// region touches it): the hole joins the outer loop, which then runs around
 /// it; false when they share no edge.
 bool absorb_touching_hole(Loop& outer, const Loop& hole);
+
+/// Removes spikes p, q, p from a loop (an edge walked there and back, which
+/// bounds nothing); true when one was removed.
+bool remove_spikes(Loop& loop);
 /// A point just on the material side of one of the hole's edges that is on
 /// none of `outers`: it lies in the region owning the hole even when the
 /// hole's nodes lie on the regions' boundaries.

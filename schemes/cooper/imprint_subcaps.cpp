@@ -39,6 +39,13 @@ Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : opti
 
 ImprintResult Imprinter::run() {
   for (int step = 0; step < options_.max_steps; ++step) {
+    // A loop beside a combined crossing (sec. 5.3) may now walk to it and
+    // back: a pocket's edge over a round hole's lens, both ends of it.
+    for (int e = 0; e < 2; ++e) {
+      for (Subcap& c : caps(e)) {
+        for (Loop& l : c.loops) version_ += remove_spikes(l) ? 1 : 0;
+      }
+    }
     if (all_matched()) {
       finish();
       return r_;

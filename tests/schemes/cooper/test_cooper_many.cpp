@@ -868,6 +868,29 @@ TEST(CooperMany, ARoundBossOverhangingAWallKeepsItsRibsUpright) {
   }
 }
 
+// A pocket from the top whose edge passes 0.39 inside the rim of a blind
+// hole from the bottom, with two more blind holes, at size 2.314 (the plan
+// => mesh campaign, seed 3 case 118). The hole's lens over the pocket is
+// imprinted at both ends (sec. 5.3); combining the crossings onto node
+// pairs left the loop around both walking the lens's tip there and back
+// (a spike), so no step matched it to its partner ("no imprinting step
+// applies"). Spikes are now removed before every step.
+TEST(CooperMany, APocketEdgeOverARoundHolesRimImprints) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {69.43, 51.38, 11.82});
+  wb.brick("pocket", {3.77, 12.08, 6.14}, {14.4, 11.64, 17.5});
+  wb.cylinder("under", {10.73, 28.98, -11.82}, {0, 0, 1}, 5.65, 15.12);
+  wb.cylinder("top", {32.57, 20.21, 8.6}, {0, 0, 1}, 3.71, 15.04);
+  wb.cylinder("wide", {30.87, 40.36, -11.82}, {0, 0, 1}, 8.52, 18.23);
+  wb.cut("part", {"block", "pocket", "under", "top", "wide"});
+  const Summary s = sweep_part(wb.build_model(), 2.314).summary;
+  const double exact = 69.43 * 51.38 * 11.82 - 14.4 * 11.64 * (11.82 - 6.14) -
+                       M_PI * 5.65 * 5.65 * 3.3 - M_PI * 3.71 * 3.71 * (11.82 - 8.6) -
+                       M_PI * 8.52 * 8.52 * 6.41;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GE(s.min_sj, 0.3);
+}
+
 // A square boss overhanging the block's front wall by 0.02, beside a round
 // boss, at size 3.605 (the plan => mesh campaign, seed 5 case 174). The
 // plan took the boss's top as uncut (the overhang is 0.2 % of its width,

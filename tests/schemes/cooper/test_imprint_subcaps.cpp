@@ -496,6 +496,19 @@ TEST(ImprintPolygons, SplitAtRepeatTakesTheFirstRepeatedNode) {
   EXPECT_FALSE(detail::split_at_repeat({1, 2, 3, 4}, a, b));
 }
 
+TEST(ImprintPolygons, RemoveSpikesDropsEdgesWalkedThereAndBack) {
+  // The loop of seed 3 case 118 in small: ... 904, 704, 706 and back to
+  // 704, where it started; the spike wraps round the loop's end.
+  std::vector<int> loop = {704, 702, 708, 922, 904, 704, 706};
+  EXPECT_TRUE(detail::remove_spikes(loop));
+  EXPECT_EQ(loop, (std::vector<int>{702, 708, 922, 904, 704}));  // the cycle 704 ... 904
+  // Spikes inside spikes go too; a simple loop is left as it is.
+  std::vector<int> nested = {1, 2, 3, 4, 5, 4, 3, 6};
+  EXPECT_TRUE(detail::remove_spikes(nested));
+  EXPECT_EQ(nested, (std::vector<int>{1, 2, 3, 6}));
+  EXPECT_FALSE(detail::remove_spikes(nested));
+}
+
 TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
   // 20,000 nodes: two long lobes crossing once in the middle.
   std::map<int, Vec2> xy;
