@@ -192,7 +192,7 @@ void CooperScheme::space_curves(const scheme::VolumeView& view, const std::map<i
   if (!p.ok || p.one_barrel() || !p.down) return;
   for (auto& [curve, f] : level_spacing(p.facts, p.lattice, p.order, *p.down, counts))
     sizes[curve] = std::move(f);
-  for (auto& [curve, f] : column_spacing(p.facts, p.lattice, *p.down, counts))
+  for (auto& [curve, f] : column_spacing(p.facts, p.lattice, *p.down, counts, &sizes))
     sizes[curve] = std::move(f);
 }
 

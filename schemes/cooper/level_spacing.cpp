@@ -229,12 +229,23 @@ std::pair<double, double> nearest_on(const Profile& p, const geom::Vec3& y) {
   return {at, best};
 }
 
+// The profile's point at arc-length fraction t.
+geom::Vec3 point_at(const Profile& p, double t) {
+  for (size_t k = 1; k < p.x.size(); ++k) {
+    if (t > p.s[k] && k + 1 < p.x.size()) continue;
+    const double w = p.s[k] > p.s[k - 1] ? (t - p.s[k - 1]) / (p.s[k] - p.s[k - 1]) : 0.0;
+    return p.x[k - 1] + std::clamp(w, 0.0, 1.0) * (p.x[k] - p.x[k - 1]);
+  }
+  return p.x.front();
+}
+
 }  // namespace
 
 // cite: Blacker 1996, sec. 4 (ribs progress straight down a barrel's side).
 std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
                                                  const SideLattice& lattice, const geom::Vec3& down,
-                                                 const std::map<int, int>& counts) {
+                                                 const std::map<int, int>& counts,
+                                                 const std::map<int, mesh::SizeFunction>* sizes) {
   std::map<int, mesh::SizeFunction> out;
   std::set<int> conflicting;
   const geom::Vec3 d = down.normalized();
@@ -315,7 +326,14 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
         std::all_of(f->angles.begin(), f->angles.end(), [](double a) {
           return std::abs(a - 90.0) <= 10.0 || std::abs(a - 180.0) <= 10.0;
         });
-    for (size_t k = 0; k < loop.size(); ++k) {
+    // Open curves first: a closed rim follows the nodes they get.
+    std::vector<size_t> order(loop.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_partition(order.begin(), order.end(), [&](size_t k) {
+      const CurveFact& c = facts.curves.at(loop[k].curve);
+      return c.start != c.end;
+    });
+    for (size_t k : order) {
       const int id = loop[k].curve;
       if (!lattice.along.count(id)) continue;
       const CurveFact& c = facts.curves.at(id);
@@ -341,6 +359,38 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
         }
         const auto [it, added] = knots.emplace(static_cast<int>(k_v), at);
         consistent = consistent && (added || std::abs(it->second - at) <= 1e-3);
+      }
+      // A closed rim follows every node of the other rim, not only its
+      // vertices: that rim may be graded (a foot overhanging a wall: its
+      // overhang arc refined towards a nearby edge), and ribs leaning between
+      // the knots distort the chart the overhang's chord is imprinted in.
+      if (c.start == c.end && sizes) {
+        for (const UseFact& o : loop) {
+          const CurveFact& oc = facts.curves.at(o.curve);
+          if (o.curve == id || oc.start == oc.end || !lattice.along.count(o.curve)) continue;
+          const int no = counts.at(o.curve);
+          const auto [io, ostep] = start_col.at(o.curve);
+          mesh::CurveSpacing spacing;
+          const auto mine = out.find(o.curve);
+          const auto given = sizes->find(o.curve);
+          if (mine != out.end()) {
+            spacing.kind = mesh::CurveSpacing::Kind::Sized;
+            spacing.sizes = mine->second;
+          } else if (given != sizes->end() && !given->second.empty()) {
+            spacing.kind = mesh::CurveSpacing::Kind::Sized;
+            spacing.sizes = given->second;
+          }
+          const std::vector<double> fo = mesh::spacing_fractions(no, oc.length, spacing);
+          const Profile oprof = profile_of(oc, d);
+          for (int j = 1; j < no; ++j) {
+            long k_v = (io + ostep * j - ia) * step;
+            k_v = (k_v % period + period) % period;
+            if (k_v <= 0 || k_v >= n || knots.count(static_cast<int>(k_v))) continue;
+            const auto [at, dist] = nearest_on(prof, point_at(oprof, fo[static_cast<size_t>(j)]));
+            if (dist > tol + 1.5 * std::max(prof.sagitta, oprof.sagitta)) continue;
+            knots.emplace(static_cast<int>(k_v), at);
+          }
+        }
       }
       if (!consistent || knots.size() == 2) continue;
       // Between the knots, even arc lengths.

@@ -44,8 +44,10 @@ std::map<int, mesh::SizeFunction> level_spacing(const VolumeFacts& facts,
 /// node the lattice puts there (the intervals of the rings between the
 /// curve's start and the vertex); curves of two faces that disagree are left
 /// out. \param[in] down the straight sweep direction
-std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
-                                                 const SideLattice& lattice, const geom::Vec3& down,
-                                                 const std::map<int, int>& counts);
+/// `sizes` (null: none): the curves' sizes so far; a closed rim follows the
+/// nodes they give the other rim's curves.
+std::map<int, mesh::SizeFunction> column_spacing(
+    const VolumeFacts& facts, const SideLattice& lattice, const geom::Vec3& down,
+    const std::map<int, int>& counts, const std::map<int, mesh::SizeFunction>* sizes = nullptr);
 
 }  // namespace cooperage::cooper

@@ -849,8 +849,8 @@ TEST(CooperMany, ARoundBossOverhangingAWallKeepsItsRibsUpright) {
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GT(s.min_sj, 0.0);  // thin hexes over the 0.51 overhang, none inverted
   // Every node of the boss's top rim stands over a node of its foot rim
-  // (within the size functions' ramps; before, the ribs beside the overhang
-  // leaned by about 1, 5.5 degrees of arc).
+  // (within 0.03, the curves' sampled profiles; before, the ribs beside the
+  // overhang leaned by about 1, 5.5 degrees of arc).
   const auto on_rim = [&](const geom::Vec3& p, double z) {
     return std::abs(p.z() - z) < 1e-6 && std::abs(std::hypot(p.x() - cx, p.y() - cy) - r) < 1e-3;
   };
@@ -864,7 +864,44 @@ TEST(CooperMany, ARoundBossOverhangingAWallKeepsItsRibsUpright) {
     double nearest = std::numeric_limits<double>::infinity();
     for (const geom::Vec3& f : foot)
       nearest = std::min(nearest, std::hypot(t.x() - f.x(), t.y() - f.y()));
-    EXPECT_LT(nearest, 0.01) << "a rib leans under (" << t.x() << ", " << t.y() << ")";
+    EXPECT_LT(nearest, 0.05) << "a rib leans under (" << t.x() << ", " << t.y() << ")";
+  }
+}
+
+// A round foot overhanging the block's back wall by 2.09 under a square
+// boss, at size 6.156 (the plan => mesh campaign, seed 4 case 79). The
+// foot's top rim is split at the wall, and its overhang arc is graded
+// towards the block's nearby side; the foot's bottom rim, one closed curve,
+// followed only the split vertices, so the ribs between them leaned by up
+// to 0.9, the chart of the barrel's ends was distorted, and the lens under
+// the overhang did not imprint. The closed rim now follows every node of
+// the other rim.
+TEST(CooperMany, AFootOverhangingAWallFollowsItsGradedRimNodeForNode) {
+  const double r = 8.03, cx = 24.02, cy = 29.86, h = 16.18;
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {32.75, 35.8, 28.13});
+  wb.brick("boss", {7.98, 9.9, 28.13}, {11.64, 9.68, 23.61});
+  wb.cylinder("foot", {cx, cy, -h}, {0, 0, 1}, r, h);
+  wb.fuse("part", {"block", "boss", "foot"});
+  const SweptPart swept = sweep_part(wb.build_model(), 6.156);
+  const Summary& s = swept.summary;
+  const double exact = 32.75 * 35.8 * 28.13 + 11.64 * 9.68 * 23.61 + M_PI * r * r * h;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.15);  // 0.20 at the lens's thin end
+  const auto on_rim = [&](const geom::Vec3& p, double z) {
+    return std::abs(p.z() - z) < 1e-6 && std::abs(std::hypot(p.x() - cx, p.y() - cy) - r) < 1e-3;
+  };
+  std::vector<geom::Vec3> top, bottom;
+  for (const geom::Vec3& p : swept.run.mesh.coords()) {
+    if (on_rim(p, 0.0)) top.push_back(p);
+    if (on_rim(p, -h)) bottom.push_back(p);
+  }
+  ASSERT_GE(bottom.size(), 6u);
+  for (const geom::Vec3& b : bottom) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const geom::Vec3& t : top)
+      nearest = std::min(nearest, std::hypot(t.x() - b.x(), t.y() - b.y()));
+    EXPECT_LT(nearest, 0.05) << "a rib leans over (" << b.x() << ", " << b.y() << ")";
   }
 }
 
