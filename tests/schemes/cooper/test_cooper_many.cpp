@@ -829,6 +829,29 @@ TEST(CooperMany, ABossOverhangingAWallKeepsTheWallsColumnsUpright) {
   }
 }
 
+// Every mesh node on the circle of radius r about the vertical axis
+// through `centre` at height `from` lies within `tol` (seen along z) of a
+// node on that circle at height `to`: the ribs of a vertical cylinder stand
+// upright.
+void expect_ribs_upright(const mesh::MeshDB& mesh, const Eigen::Vector2d& centre, double r,
+                         double from, double to, double tol) {
+  const auto on_rim = [&](const geom::Vec3& p, double z) {
+    return std::abs(p.z() - z) < 1e-6 &&
+           std::abs(std::hypot(p.x() - centre.x(), p.y() - centre.y()) - r) < 1e-3;
+  };
+  std::vector<geom::Vec3> a, b;
+  for (const geom::Vec3& p : mesh.coords()) {
+    if (on_rim(p, from)) a.push_back(p);
+    if (on_rim(p, to)) b.push_back(p);
+  }
+  ASSERT_GE(a.size(), 6u);
+  for (const geom::Vec3& p : a) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const geom::Vec3& q : b) nearest = std::min(nearest, std::hypot(p.x() - q.x(), p.y() - q.y()));
+    EXPECT_LT(nearest, tol) << "a rib leans at (" << p.x() << ", " << p.y() << ", " << from << ")";
+  }
+}
+
 // A round boss overhanging the block's right wall by 0.51, at size 2.196
 // (the plan => mesh campaign, seed 3 case 104). The boss's foot circle is
 // split where it crosses the wall, and the two intervals on the short arc
@@ -851,21 +874,7 @@ TEST(CooperMany, ARoundBossOverhangingAWallKeepsItsRibsUpright) {
   // Every node of the boss's top rim stands over a node of its foot rim
   // (within 0.03, the curves' sampled profiles; before, the ribs beside the
   // overhang leaned by about 1, 5.5 degrees of arc).
-  const auto on_rim = [&](const geom::Vec3& p, double z) {
-    return std::abs(p.z() - z) < 1e-6 && std::abs(std::hypot(p.x() - cx, p.y() - cy) - r) < 1e-3;
-  };
-  std::vector<geom::Vec3> top, foot;
-  for (const geom::Vec3& p : swept.run.mesh.coords()) {
-    if (on_rim(p, z0 + h)) top.push_back(p);
-    if (on_rim(p, z0)) foot.push_back(p);
-  }
-  ASSERT_GE(top.size(), 6u);
-  for (const geom::Vec3& t : top) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const geom::Vec3& f : foot)
-      nearest = std::min(nearest, std::hypot(t.x() - f.x(), t.y() - f.y()));
-    EXPECT_LT(nearest, 0.05) << "a rib leans under (" << t.x() << ", " << t.y() << ")";
-  }
+  expect_ribs_upright(swept.run.mesh, {cx, cy}, r, z0 + h, z0, 0.05);
 }
 
 // A round foot overhanging the block's back wall by 2.09 under a square
@@ -888,21 +897,8 @@ TEST(CooperMany, AFootOverhangingAWallFollowsItsGradedRimNodeForNode) {
   const double exact = 32.75 * 35.8 * 28.13 + 11.64 * 9.68 * 23.61 + M_PI * r * r * h;
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GT(s.min_sj, 0.15);  // 0.20 at the lens's thin end
-  const auto on_rim = [&](const geom::Vec3& p, double z) {
-    return std::abs(p.z() - z) < 1e-6 && std::abs(std::hypot(p.x() - cx, p.y() - cy) - r) < 1e-3;
-  };
-  std::vector<geom::Vec3> top, bottom;
-  for (const geom::Vec3& p : swept.run.mesh.coords()) {
-    if (on_rim(p, 0.0)) top.push_back(p);
-    if (on_rim(p, -h)) bottom.push_back(p);
-  }
-  ASSERT_GE(bottom.size(), 6u);
-  for (const geom::Vec3& b : bottom) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const geom::Vec3& t : top)
-      nearest = std::min(nearest, std::hypot(t.x() - b.x(), t.y() - b.y()));
-    EXPECT_LT(nearest, 0.05) << "a rib leans over (" << b.x() << ", " << b.y() << ")";
-  }
+  // Every node of the foot's bottom rim lies under a node of its top rim.
+  expect_ribs_upright(swept.run.mesh, {cx, cy}, r, -h, 0.0, 0.05);
 }
 
 // A pocket from the top whose edge passes 0.39 inside the rim of a blind
