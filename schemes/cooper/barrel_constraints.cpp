@@ -120,6 +120,37 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
         intervals::Sense::GreaterEqual, 1,
         name + " (sides " + std::to_string(node.sides.front()) + ", ...) has a layer");
   }
+  // A class no barrel ends on (the rim where a boss's cone meets its
+  // cylinder) lies between the cap levels around it: its chains tie it to
+  // their other ends only, and a cone of one interval put its top rim in
+  // the middle of the barrel below the levels it passes (a blind hole's
+  // floor and another's ceiling), so the barrels there found no side mesh.
+  std::set<int> levels;
+  for (const BarrelNode& node : tree.barrels) {
+    levels.insert(node.upper_classes.begin(), node.upper_classes.end());
+    levels.insert(node.lower_classes.begin(), node.lower_classes.end());
+  }
+  std::map<int, std::vector<int>> vertices_of;  // class -> its vertices
+  for (const auto& [v, cls] : lattice.vertex_class) vertices_of[cls].push_back(v);
+  for (size_t c = 0; c < lambda.size(); ++c) {
+    if (levels.count(static_cast<int>(c))) continue;
+    const double h = order.height[c];
+    int above = -1, below = -1;
+    for (int l : levels) {
+      const double hl = order.height[static_cast<size_t>(l)];
+      if (hl >= h && (above < 0 || hl < order.height[static_cast<size_t>(above)])) above = l;
+      if (hl <= h && (below < 0 || hl > order.height[static_cast<size_t>(below)])) below = l;
+    }
+    const std::string name = "the ring of vertices " + ids(vertices_of[static_cast<int>(c)]);
+    if (above >= 0) {
+      add(combine(lambda[static_cast<size_t>(above)], 1, lambda[c], -1),
+          intervals::Sense::GreaterEqual, 0, name + " lies below the cap level above it");
+    }
+    if (below >= 0) {
+      add(combine(lambda[c], 1, lambda[static_cast<size_t>(below)], -1),
+          intervals::Sense::GreaterEqual, 0, name + " lies above the cap level below it");
+    }
+  }
   for (int cap : even_caps) {
     {
       const auto& loops = facts.face(cap)->loops;

@@ -901,6 +901,37 @@ TEST(CooperMany, AFootOverhangingAWallFollowsItsGradedRimNodeForNode) {
   expect_ribs_upright(swept.run.mesh, {cx, cy}, r, -h, 0.0, 0.05);
 }
 
+// A round boss overhanging the block's side wall, its underside a cone,
+// with a blind hole from the bottom ending at z 17.67 and one from the top
+// ending at 17.04, at sizes 4 and 3.25 (the plan => mesh campaign, seed 4
+// case 34). The cone's top rim (z 17.7) ends no barrel: the interval rows
+// tied it to the cone's bottom rim by its one interval and to nothing else,
+// so its layer fell between the two hole levels below it, and the ribs up
+// the cone reached its top a barrel early ("rib formation failed: ... 0
+// unused side neighbours"). A ring no barrel ends on now lies between the
+// cap levels around it.
+TEST(CooperMany, AConeUnderAnOverhangingBossSpansTheLevelsItPasses) {
+  const double bx = 29.94, by = 34.78, bz = 37.79;
+  const double r = 7.09, tip_r = 2.14, tip_z = 13.51, cone_top = 17.7;
+  for (const double size : {4.0, 3.25}) {
+    occ::Workbench wb;
+    wb.brick("block", {0, 0, 0}, {bx, by, bz});
+    wb.cylinder("under", {21.47, 25.57, -bz}, {0, 0, 1}, 6.16, bz + 17.67);
+    wb.cylinder("boss", {bx, 11.1, cone_top}, {0, 0, 1}, r, bz - cone_top);
+    wb.cone("cone", {bx, 11.1, tip_z}, {0, 0, 1}, tip_r, r, cone_top - tip_z);
+    wb.cylinder("top", {8.57, 25.73, 17.04}, {0, 0, 1}, 6.14, 30);
+    wb.fuse("body", {"block", "boss", "cone"});
+    wb.cut("part", {"body", "under", "top"});
+    const Summary s = sweep_part(wb.build_model(), size).summary;
+    const double h = cone_top - tip_z;
+    const double exact = bx * by * bz + 0.5 * M_PI * r * r * (bz - cone_top) +
+                         0.5 * M_PI * h / 3 * (tip_r * tip_r + tip_r * r + r * r) -
+                         M_PI * 6.16 * 6.16 * 17.67 - M_PI * 6.14 * 6.14 * (bz - 17.04);
+    EXPECT_NEAR(s.volume, exact, 0.005 * exact) << size;
+    EXPECT_GT(s.min_sj, 0.05) << size;  // 0.08-0.16: the cone's thin tip over the wall
+  }
+}
+
 // A pocket from the top whose edge passes 0.39 inside the rim of a blind
 // hole from the bottom, with two more blind holes, at size 2.314 (the plan
 // => mesh campaign, seed 3 case 118). The hole's lens over the pocket is
