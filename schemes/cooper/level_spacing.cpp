@@ -185,6 +185,14 @@ std::map<int, mesh::SizeFunction> level_spacing(const VolumeFacts& facts,
 
 namespace {
 
+// A notched wall's rim follows knots far from even spacing only where the
+// even columns would lean more than kMinShear of their height (22 degrees:
+// the fill folds; below it the even fill is sound and the knots only
+// squeeze the rim), and only if no interval falls below kMinSqueeze of
+// even spacing (column_spacing).
+constexpr double kMinShear = 0.4;
+constexpr double kMinSqueeze = 0.3;
+
 // A curve's samples seen along the sweep (the axis component removed), and
 // their arc-length fractions.
 struct Profile {
@@ -326,6 +334,20 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
         std::all_of(f->angles.begin(), f->angles.end(), [](double a) {
           return std::abs(a - 90.0) <= 10.0 || std::abs(a - 180.0) <= 10.0;
         });
+    // A wall notched by a bay or a step (square corners, 270 degrees
+    // included) has its columns where the walk puts them too: a pocket 0.35
+    // from the wall refined its top rim, and the bottom rim, evenly spaced,
+    // sheared the columns past the notch until the fill inverted. Its other
+    // rim follows where the even columns would lean steeply (kMinShear),
+    // unless that squeezes an interval below kMinSqueeze of even spacing:
+    // such slivers on a cap's rim were swept through the barrels into
+    // inverted hexes (two bays 0.3 apart); an L-shaped wall whose even
+    // columns lean by 0.16 of their height (pyocc_face_recognition) fills
+    // soundly as it is, and with the knots its barrel's hexes inverted.
+    const bool square = std::all_of(f->angles.begin(), f->angles.end(), [](double a) {
+      return std::abs(a - 90.0) <= 10.0 || std::abs(a - 180.0) <= 10.0 ||
+             std::abs(a - 270.0) <= 10.0;
+    });
     // Open curves first: a closed rim follows the nodes they get.
     std::vector<size_t> order(loop.size());
     std::iota(order.begin(), order.end(), size_t{0});
@@ -344,6 +366,8 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       const auto [ia, step] = start_col.at(id);
       std::map<int, double> knots{{0, 0.0}, {n, 1.0}};
       bool consistent = true;
+      bool far = false;    // a knot more than 1.5 intervals from even spacing
+      double shear = 0.0;  // the steepest column such a knot straightens
       for (const auto& [v, iv] : column) {
         long k_v = (iv - ia) * step;
         if (period > 0) k_v = (k_v % period + period) % period;
@@ -354,8 +378,14 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
         // submap's columns are not where this walk puts them (a wall of
         // pyocc_face_recognition: 3 intervals off, and a hex inverted).
         if (!rectangle && std::abs(at * n - static_cast<double>(k_v)) > 1.5) {
-          consistent = false;
-          continue;
+          // How far the column through the vertex leans at even spacing,
+          // per unit of its height above (or below) the curve.
+          const double lean = std::abs(at - static_cast<double>(k_v) / n) * c.length;
+          const double height = std::abs((facts.vertices.at(v) - c.samples.front()).dot(d));
+          shear = std::max(shear, height > tol ? lean / height : kMinShear);
+          far = true;
+          consistent = consistent && square;
+          if (!square) continue;
         }
         const auto [it, added] = knots.emplace(static_cast<int>(k_v), at);
         consistent = consistent && (added || std::abs(it->second - at) <= 1e-3);
@@ -405,6 +435,9 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       bool increasing = true;
       for (size_t m = 1; m < t.size(); ++m) increasing = increasing && t[m] > t[m - 1] + 1e-6;
       if (!increasing) continue;
+      double squeeze = 1.0;
+      for (size_t m = 1; m < t.size(); ++m) squeeze = std::min(squeeze, (t[m] - t[m - 1]) * n);
+      if (far && !rectangle && (squeeze < kMinSqueeze || shear < kMinShear)) continue;
       // 3D arc length along a curve that runs along a level is its profile's.
       mesh::SizeFunction sf = steps_through(t, c.length);
       if (out.count(id)) conflicting.insert(id);

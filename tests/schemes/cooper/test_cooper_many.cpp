@@ -932,6 +932,66 @@ TEST(CooperMany, AConeUnderAnOverhangingBossSpansTheLevelsItPasses) {
   }
 }
 
+// A half-round bay on the block's side wall from z 12.48 to the top, a
+// pocket from the top 0.35 from that wall, a round boss and a through hole,
+// at size 4.318 (the plan => mesh campaign, seed 3 case 33). The pocket's
+// nearness refined the wall's top rim beside the bay's notch; the bottom
+// rim, evenly spaced, had its columns 3 and 5 intervals away from the
+// notch's corners, and the wall's lattice fill inverted ("the interval
+// counts do not fit the face's shape"). Knots that far from even spacing
+// were kept for rectangles only; a wall whose corners are all square
+// follows them too where its even columns would lean by more than 0.4 of
+// their height (0.84 here; the pyocc part's L-shaped wall, 0.16, keeps its
+// even rim).
+TEST(CooperMany, ANotchedWallsBottomRimFollowsItsRefinedTop) {
+  const double bx = 23.66, by = 30.49, bz = 37.53;
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("boss", {16.16, 6.39, bz}, {0, 0, 1}, 5.86, 30.66);
+  wb.cylinder("hole", {8.8, 17.85, -bz}, {0, 0, 1}, 2.42, 3 * bz);
+  wb.cylinder("bay", {bx, 16.43, 12.48}, {0, 0, 1}, 4.17, bz - 12.48);
+  wb.brick("pocket", {16.41, 21.23, 19.65}, {6.9, 8.6, 55.41});
+  wb.fuse("body", {"block", "boss", "bay"});
+  wb.cut("part", {"body", "hole", "pocket"});
+  const Summary s = sweep_part(wb.build_model(), 4.318).summary;
+  const double exact = bx * by * bz + M_PI * 5.86 * 5.86 * 30.66 +
+                       0.5 * M_PI * 4.17 * 4.17 * (bz - 12.48) - M_PI * 2.42 * 2.42 * bz -
+                       6.9 * 8.6 * (bz - 19.65);
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.1);  // 0.14
+}
+
+// Two overlapping half-round bays on the side wall whose edges on it lie
+// 0.3 apart, and two through holes, at size 4.421 (the plan => mesh
+// campaign, seed 5 case 69: it meshed before the test above's change). Its
+// bottom rim following the top's columns would put two intervals into those
+// 0.3 (a tenth of even spacing); swept through the barrels, those slivers
+// inverted a hex. A notched wall's rim does not follow knots that squeeze an
+// interval below 0.3 of even spacing.
+TEST(CooperMany, TwoBaysAFractionApartKeepTheWallsBottomRimEven) {
+  const double bx = 22.81, by = 31.92, bz = 35.14;
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("hole1", {16.83, 14.21, -bz}, {0, 0, 1}, 5.64, 3 * bz);
+  wb.cylinder("bay1", {bx, 22.25, 12.84}, {0, 0, 1}, 8.1, bz - 12.84);
+  wb.cylinder("hole2", {3.5, 20.48, -bz}, {0, 0, 1}, 4.49, 3 * bz);
+  wb.cylinder("bay2", {bx, 19.45, 10.2}, {0, 0, 1}, 5.0, bz - 10.2);
+  wb.fuse("body", {"block", "bay1", "bay2"});
+  wb.cut("part", {"body", "hole1", "hole2"});
+  const Summary s = sweep_part(wb.build_model(), 4.421).summary;
+  // The smaller bay lies inside the larger one's circle, so outside the wall
+  // the two add the larger half-cylinder and the smaller one's extra 2.64
+  // below it; the second hole breaks the wall x = 0 (a segment 3.5 from its
+  // centre lies outside).
+  const double r2 = 4.49, d2 = 3.5;
+  const double segment = r2 * r2 * std::acos(d2 / r2) - d2 * std::sqrt(r2 * r2 - d2 * d2);
+  const double exact = bx * by * bz + 0.5 * M_PI * 8.1 * 8.1 * (bz - 12.84) +
+                       0.5 * M_PI * 5.0 * 5.0 * (12.84 - 10.2) - M_PI * 5.64 * 5.64 * bz -
+                       (M_PI * r2 * r2 - segment) * bz;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.05);
+}
+
 // A pocket from the top whose edge passes 0.39 inside the rim of a blind
 // hole from the bottom, with two more blind holes, at size 2.314 (the plan
 // => mesh campaign, seed 3 case 118). The hole's lens over the pocket is
