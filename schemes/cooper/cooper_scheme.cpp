@@ -5,6 +5,7 @@
 
 #include "framework/core/error.h"
 #include "framework/mesh/loop_nodes.h"
+#include "schemes/cooper/column_spacing.h"
 #include "schemes/cooper/level_spacing.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/cooper/tangent_grading.h"

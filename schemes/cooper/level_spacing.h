@@ -33,21 +33,9 @@ std::map<int, mesh::SizeFunction> level_spacing(const VolumeFacts& facts,
                                                 const geom::Vec3& down,
                                                 const std::map<int, int>& counts);
 
-/// Size functions for the curves running along the caps (rings of ribs) of
-/// the side faces that put a ring's nodes over the vertices of the face's
-/// other rings, seen along the sweep: a lug whose wall ends on two levels
-/// (its foot partly on a flange, partly past it) has its top rim in one
-/// curve and its bottom rim in two; evenly spaced, the top rim's nodes did
-/// not lie over the bottom rims' and the ribs ran 5 mm sideways along the
-/// wall, which the cap stacks projected through the barrels then folded. A
-/// knot is put where another ring's vertex lies over the curve, at the
-/// node the lattice puts there (the intervals of the rings between the
-/// curve's start and the vertex); curves of two faces that disagree are left
-/// out. \param[in] down the straight sweep direction
-/// `sizes` (null: none): the curves' sizes so far; a closed rim follows the
-/// nodes they give the other rim's curves.
-std::map<int, mesh::SizeFunction> column_spacing(
-    const VolumeFacts& facts, const SideLattice& lattice, const geom::Vec3& down,
-    const std::map<int, int>& counts, const std::map<int, mesh::SizeFunction>* sizes = nullptr);
+/// Piecewise-constant sizes (steps kept piecewise linear by short ramps)
+/// under which t.size() - 1 intervals equidistribute onto the node
+/// fractions t (0 first, 1 last) of a curve of the given length.
+mesh::SizeFunction steps_through(const std::vector<double>& t, double length);
 
 }  // namespace cooperage::cooper
