@@ -63,7 +63,8 @@ bool SurfaceProjector::in_box(Vec2& uv) const {
   return true;
 }
 
-std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p) const {
+std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p,
+                                                  std::optional<Vec2>* outside) const {
   if (kind_ == Kind::Other) return std::nullopt;
   const GeomAdaptor_Surface a(surface_);
   double u = 0.0, v = 0.0;
@@ -100,8 +101,19 @@ std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p) const {
     case Kind::Other: return std::nullopt;
   }
   Vec2 uv(u, v);
-  if (!std::isfinite(u) || !std::isfinite(v) || !in_box(uv)) return std::nullopt;
-  return uv;
+  if (!std::isfinite(u) || !std::isfinite(v)) return std::nullopt;
+  if (in_box(uv)) return uv;
+  // A foot a hair outside the face's box (a B-spline rim node within its
+  // fitting error of an analytic face) is the box's nearest point. Further
+  // out, the box point nearest the foot is a candidate the caller weighs
+  // against the bounded global search, which misses a minimum on the box's
+  // edge and can return the farthest stationary point instead (the
+  // antipode on a sphere).
+  const gp_Pnt foot = surface_->Value(u, v);
+  Vec2 clamped(std::clamp(uv.x(), u0_, u1_), std::clamp(uv.y(), v0_, v1_));
+  if (surface_->Value(clamped.x(), clamped.y()).Distance(foot) <= 1e-6 * scale_) return clamped;
+  if (outside) *outside = clamped;
+  return std::nullopt;
 }
 
 std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) const {
@@ -251,9 +263,14 @@ std::optional<Vec2> SurfaceProjector::seeded(const gp_Pnt& p) const {
 }
 
 Vec2 SurfaceProjector::closest(const gp_Pnt& p) const {
-  if (auto uv = closed_form(p)) return *uv;
+  std::optional<Vec2> outside;
+  if (auto uv = closed_form(p, &outside)) return *uv;
   if (auto uv = seeded(p)) return *uv;
-  return global(p);
+  const Vec2 g = global(p);
+  if (outside && surface_->Value(outside->x(), outside->y()).SquareDistance(p) <
+                     surface_->Value(g.x(), g.y()).SquareDistance(p))
+    return *outside;
+  return g;
 }
 
 }  // namespace cooperage::occ::detail

@@ -37,12 +37,16 @@ class SurfaceProjector {
 
   /// Parameters of the closest point to p in the box: the closed form when
   /// the surface is elementary and its answer lies in the box, else the
-  /// global projector (a clamped ShapeAnalysis inversion if that fails).
+  /// global projector (a clamped ShapeAnalysis inversion if that fails), or
+  /// on an elementary surface the box point nearest its foot when closer.
   geom::Vec2 closest(const gp_Pnt& p) const;
 
   /// Exact parameters on an elementary surface, shifted into the box by
   /// whole periods; nullopt for other surfaces or when outside the box.
-  std::optional<geom::Vec2> closed_form(const gp_Pnt& p) const;
+  /// `outside`, when given, receives the box point nearest the foot when the
+  /// foot lies outside the face's box (a candidate for the closest point).
+  std::optional<geom::Vec2> closed_form(const gp_Pnt& p,
+                                        std::optional<geom::Vec2>* outside = nullptr) const;
 
   /// Local minimum of |S(u,v) - p| reached by Newton iterations from `hint`
   /// (clamped into the box). nullopt when the iteration does not converge,

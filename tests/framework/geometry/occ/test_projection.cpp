@@ -131,6 +131,36 @@ TEST(OccProjection, SeededSearchFindsTheClosestPointFarFromTheFace) {
   EXPECT_EQ(checked, 2 * 4);
 }
 
+// A node of a B-spline rim lies within its fitting error of an analytic
+// face, a hair outside the face's parameter box (occt_Pump_TopCover's inner
+// sphere, 1e-7 below its lowest latitude): its projection is the rim point
+// beside it, never the far side of the sphere (the bounded global search
+// gave the antipode, and a submap lattice through it inverted).
+TEST(OccProjection, AFootJustOutsideAnAnalyticFaceIsTheRimBesideIt) {
+  Workbench wb;
+  wb.sphere("ball", Vec3(0, 0, 0), 1.5);
+  wb.webcut("ball", Vec3(0, 0, 0), Vec3(0, 0, 1));
+  const Model m = wb.build_model();
+  int checked = 0;
+  for (const auto& s : m.surfaces()) {
+    if (s.geometry->type() != geom::SurfaceType::Sphere) continue;
+    const auto [u, v] = s.geometry->uv_bounds();
+    // > 0: the upper hemisphere.
+    const double side = s.geometry->point(Vec2(0.5 * (u.x() + u.y()), 0.5 * (v.x() + v.y()))).z();
+    for (double a : {0.3, 1.7, 2.9, 4.4, 5.8}) {
+      for (double off : {1e-9, 1e-7, 1e-5}) {
+        const double z = side > 0 ? -off : off;  // just beyond the rim (the equator)
+        const Vec3 p(1.5 * std::cos(a), 1.5 * std::sin(a), z);
+        const auto proj = s.geometry->project(p);
+        EXPECT_LT(proj.distance, 2 * off) << "surface " << s.id << " at " << p.transpose();
+        EXPECT_LE(proj.distance, brute_distance(*s.geometry, p) + 1e-9);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 2 * 5 * 3);
+}
+
 TEST(OccProjection, SameAnswerOnEveryThread) {
   const Model m = bspline_solid();
   const geom::Surface* bs = nullptr;
