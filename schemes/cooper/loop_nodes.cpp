@@ -17,27 +17,86 @@ namespace {
 
 }  // namespace
 
+std::vector<int> seam_curves(const geom::Loop& loop) {
+  std::map<int, int> uses;
+  for (const auto& use : loop.uses) ++uses[use.curve];
+  std::vector<int> seams;
+  for (const auto& [curve, n] : uses) {
+    if (n == 2) seams.push_back(curve);
+  }
+  return seams;
+}
+
+int single_seam(const geom::Surface& surface) {
+  std::vector<int> seams;
+  for (const auto& loop : surface.loops) {
+    for (int c : seam_curves(loop)) seams.push_back(c);
+  }
+  return seams.size() == 1 ? seams.front() : 0;
+}
+
 std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
                                          int volume_id, int surface_id) {
   std::vector<std::vector<int>> loops;
   for (const auto& loop : model.surface(surface_id).loops) {
-    std::vector<int> nodes;
+    // A seam (a curve used both ways in one loop, on a periodic face) is no
+    // boundary: the runs between its uses are the loops (an annulus on a
+    // cone or sphere has one CAD loop and two node loops).
+    const std::vector<int> seams = seam_curves(loop);
+    auto is_seam = [&](int curve) { return std::binary_search(seams.begin(), seams.end(), curve); };
+    std::vector<std::vector<const geom::CurveUse*>> runs(1);
     for (const auto& use : loop.uses) {
-      if (!db.curve_meshed(use.curve)) {
-        fail(volume_id, "curve " + std::to_string(use.curve) + " of surface " +
-                            std::to_string(surface_id) + " is not meshed");
+      if (is_seam(use.curve)) {
+        if (!runs.back().empty()) runs.emplace_back();
+        continue;
       }
-      std::vector<int> chain = db.curve_nodes(use.curve);
-      if (use.sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
-      if (!nodes.empty() && chain.front() != nodes.back()) {
-        fail(volume_id, "the loop of surface " + std::to_string(surface_id) +
-                            " is not closed at curve " + std::to_string(use.curve));
-      }
-      if (!nodes.empty()) nodes.pop_back();
-      nodes.insert(nodes.end(), chain.begin(), chain.end());
+      runs.back().push_back(&use);
     }
-    if (nodes.size() > 1 && nodes.front() == nodes.back()) nodes.pop_back();
-    loops.push_back(std::move(nodes));
+    if (runs.size() > 1 && !runs.back().empty() && !is_seam(loop.uses.front().curve)) {
+      // The loop started inside a run: the last run continues into the first.
+      runs.front().insert(runs.front().begin(), runs.back().begin(), runs.back().end());
+      runs.pop_back();
+    }
+    std::vector<std::vector<int>> split;
+    for (const auto& run : runs) {
+      if (run.empty()) continue;
+      std::vector<int> nodes;
+      for (const geom::CurveUse* use : run) {
+        if (!db.curve_meshed(use->curve)) {
+          fail(volume_id, "curve " + std::to_string(use->curve) + " of surface " +
+                              std::to_string(surface_id) + " is not meshed");
+        }
+        std::vector<int> chain = db.curve_nodes(use->curve);
+        if (use->sense == geom::Sense::Reversed) std::reverse(chain.begin(), chain.end());
+        if (!nodes.empty() && chain.front() != nodes.back()) {
+          fail(volume_id, "the loop of surface " + std::to_string(surface_id) +
+                              " is not closed at curve " + std::to_string(use->curve));
+        }
+        if (!nodes.empty()) nodes.pop_back();
+        nodes.insert(nodes.end(), chain.begin(), chain.end());
+      }
+      if (nodes.size() > 1 && nodes.front() == nodes.back()) {
+        nodes.pop_back();
+      } else if (runs.size() > 1) {
+        fail(volume_id, "the loop of surface " + std::to_string(surface_id) +
+                            " does not close between the uses of its seam");
+      }
+      split.push_back(std::move(nodes));
+    }
+    if (split.size() > 1) {
+      // The widest loop first: it bounds the others (the outer loop).
+      auto extent = [&](const std::vector<int>& l) {
+        geom::Vec3 lo = db.node(l.front()), hi = lo;
+        for (int n : l) {
+          lo = lo.cwiseMin(db.node(n));
+          hi = hi.cwiseMax(db.node(n));
+        }
+        return (hi - lo).norm();
+      };
+      std::stable_sort(split.begin(), split.end(),
+                       [&](const auto& a, const auto& b) { return extent(a) > extent(b); });
+    }
+    loops.insert(loops.end(), split.begin(), split.end());
   }
   return loops;
 }

@@ -16,6 +16,12 @@ namespace cooperage::cooper {
 std::vector<std::vector<int>> loop_nodes(const geom::Model& model, const mesh::MeshDB& db,
                                          int volume_id, int surface_id);
 
+/// The seams of a loop: curves it uses twice (a periodic face), ascending.
+std::vector<int> seam_curves(const geom::Loop& loop);
+
+/// The seam of a surface when its loops hold exactly one, else 0.
+int single_seam(const geom::Surface& surface);
+
 /// Boundary loops of a consistently oriented quad set (an upper cap made of
 /// a real cap and the virtual caps beside it, sec. 4 Fig. 8d): the edges used
 /// by one quad, chained in quad order, each loop starting at its smallest

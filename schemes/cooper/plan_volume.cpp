@@ -4,10 +4,12 @@
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_scheme.h"
 #include "schemes/cooper/coincident_curves.h"
+#include "schemes/cooper/loop_nodes.h"
 
 #include <algorithm>
 #include <iterator>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -173,6 +175,51 @@ std::string side_on_both_sides_of_an_end(const SideLattice& lattice, const Barre
   return {};
 }
 
+// Diagonal of the box of a face's boundary curves.
+double rim_extent(const VolumeFacts& facts, int face) {
+  geom::Vec3 lo = geom::Vec3::Constant(1e300), hi = geom::Vec3::Constant(-1e300);
+  for (const auto& loop : facts.face(face)->loops) {
+    for (const UseFact& u : loop) {
+      for (const geom::Vec3& x : facts.curves.at(u.curve).samples) {
+        lo = lo.cwiseMin(x);
+        hi = hi.cwiseMax(x);
+      }
+    }
+  }
+  return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
+}
+
+// A seamed cap the sweep meshes (a band on a periodic face) gets its nodes
+// from the least-squares projection of its source, and then must meet its
+// seam curve's nodes (weld_seams.cpp). From a source of a very different
+// size (a dome swept along its meridian, from a cone ring round the flange
+// to the apex hole: 8 times smaller) the projection places them too poorly
+// for that: refused at plan time (the decomposition then cuts further).
+std::string seamed_target_from_far_source(const geom::Model& model, const VolumePlan& p) {
+  if (!p.one_barrel()) return {};
+  constexpr double kMaxRatio = 3.0;
+  for (int cap : p.roles.by_volume) {
+    const auto& loops = model.surface(cap).loops;
+    if (std::all_of(loops.begin(), loops.end(),
+                    [](const geom::Loop& l) { return seam_curves(l).empty(); }))
+      continue;
+    for (const EndPiece& e : p.tree.barrels.front().upper) {
+      if (!e.cap || e.cap == cap) continue;
+      const double a = rim_extent(p.facts, e.cap), b = rim_extent(p.facts, cap);
+      if (a > kMaxRatio * b || b > kMaxRatio * a) {
+        char ratio[32];
+        std::snprintf(ratio, sizeof ratio, "%.1f", std::max(a, b) / std::min(a, b));
+        return "surface " + std::to_string(cap) +
+               ", a band on a periodic face the sweep would mesh, differs in size from its "
+               "source surface " +
+               std::to_string(e.cap) + " by a factor of " + ratio +
+               " (more than 3): the projection cannot place its nodes on its seam";
+      }
+    }
+  }
+  return {};
+}
+
 // Runs the steps for one sorting of the faces.
 VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                     const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
@@ -209,6 +256,8 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   p.roles =
       cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
+  if (const std::string why = seamed_target_from_far_source(model, p); !why.empty())
+    return fail(5, why);
   if (p.down) {
     if (const std::string why = shared_edge_stretch(facts, p.order, *p.down); !why.empty())
       return fail(5, why);
@@ -240,6 +289,19 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
     }
     for (const EndPiece& e : p.tree.barrels.front().lower) {
       if (!p.target && e.cap) p.target = e.cap;
+    }
+  }
+  if (p.one_barrel() && p.source && p.target &&
+      std::binary_search(p.roles.by_volume.begin(), p.roles.by_volume.end(), p.target)) {
+    // The swept target's seam takes the swept nodes (weld_seams.cpp): as
+    // many intervals as the source's seam, whose nodes project onto it.
+    const int a = single_seam(model.surface(p.source)), b = single_seam(model.surface(p.target));
+    if (a && b && a != b) {
+      IntervalRow r;
+      r.terms = {{a, 1}, {b, -1}};
+      r.label = volume_name(p.volume) + " (cooper): the seams of its caps, curves " +
+                std::to_string(a) + " and " + std::to_string(b) + ", project onto each other";
+      p.rows.push_back(std::move(r));
     }
   }
   const double worst = worst_side_score(p);

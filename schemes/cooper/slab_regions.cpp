@@ -26,6 +26,67 @@ struct DisjointSets {
   }
 };
 
+/// Extent of a cycle's rims: the diagonal of the box of its contact curves.
+double rim_extent(const VolumeFacts& facts, const SideLattice& lattice, const Cycle& cycle) {
+  geom::Vec3 lo = geom::Vec3::Constant(1e300), hi = geom::Vec3::Constant(-1e300);
+  for (const CapContact& k : lattice.contacts) {
+    if (!std::binary_search(cycle.faces.begin(), cycle.faces.end(), k.face)) continue;
+    for (const geom::Vec3& p : facts.curves.at(k.curve).samples) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
+}
+
+/// A cap whose one loop runs along two cycles through a seam (an annulus on
+/// a sphere or cone, periodic in CAD) makes both of them "outer" by the
+/// contact rule. The cycle whose rims span the widest box encloses the
+/// others; those become holes. Returns the outer count left (1, or more on
+/// a tie within 1 %, which stays refused).
+int keep_widest_outer(const VolumeFacts& facts, const SideLattice& lattice,
+                      const std::vector<int>& list, std::vector<Cycle>& cycles) {
+  // Only through a seamed cap: elsewhere two outer cycles in one region are
+  // a real contradiction (a boss flush with a wall), refused as before.
+  auto cycle_of = [&](int face) {
+    for (int c : list) {
+      const auto& f = cycles[static_cast<size_t>(c)].faces;
+      if (cycles[static_cast<size_t>(c)].outer && std::binary_search(f.begin(), f.end(), face))
+        return c;
+    }
+    return -1;
+  };
+  bool seamed = false;
+  for (int cap : lattice.caps) {
+    std::map<int, int> uses;
+    for (const UseFact& u : facts.face(cap)->loops.front()) ++uses[u.curve];
+    if (std::none_of(uses.begin(), uses.end(), [](const auto& kv) { return kv.second == 2; }))
+      continue;
+    std::set<int> joined;
+    for (const CapContact& k : lattice.contacts) {
+      if (k.cap == cap && k.cap_loop == 0 && cycle_of(k.face) >= 0) joined.insert(cycle_of(k.face));
+    }
+    seamed = seamed || joined.size() >= 2;
+  }
+  if (!seamed) return 2;
+  int widest = -1;
+  double best = -1, second = -1;
+  for (int c : list) {
+    if (!cycles[static_cast<size_t>(c)].outer) continue;
+    const double e = rim_extent(facts, lattice, cycles[static_cast<size_t>(c)]);
+    if (e > best) {
+      second = best;
+      best = e;
+      widest = c;
+    } else {
+      second = std::max(second, e);
+    }
+  }
+  if (second >= 0.99 * best) return 2;
+  for (int c : list) cycles[static_cast<size_t>(c)].outer = c == widest;
+  return 1;
+}
+
 }  // namespace
 
 int region_of_cycle(const Slab& slab, int c) {
@@ -227,6 +288,7 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
     for (auto& [root, list] : classes) {
       int outers = 0;
       for (int c : list) outers += slab.cycles[static_cast<size_t>(c)].outer ? 1 : 0;
+      if (outers > 1) outers = keep_widest_outer(facts, lattice, list, slab.cycles);
       if (outers > 1) {
         out.why = "two outer cycles of side faces (" +
                   std::to_string(slab.cycles[static_cast<size_t>(list.front())].faces.front()) +

@@ -168,6 +168,7 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
       quads.insert(quads.end(), pu.quads.begin(), pu.quads.end());
       tris.insert(tris.end(), pu.tris.begin(), pu.tris.end());
     }
+    weld_seam_images(s, b, below);
     // Cap nodes: the exterior rib starts in rib order, then the rest.
     SweepInput in;
     in.layers = st.layers;

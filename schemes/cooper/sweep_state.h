@@ -111,5 +111,10 @@ void imprint_barrels(SweepState& s);
 void mesh_stacks(SweepState& s);
 void smooth_ends(SweepState& s);
 void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports);
+/// Before barrel b is swept: the images of its source cap's seam become the
+/// nodes of its swept target's seam (weld_seams.cpp).
+void weld_seam_images(SweepState& s, size_t b, const std::map<int, int>& below);
+/// After: no seam of a swept cap is left with unused nodes.
+void check_seams_welded(SweepState& s);
 
 }  // namespace cooperage::cooper::detail

@@ -20,6 +20,7 @@ scheme::EntityMesh sweep_volume(const scheme::VolumeView& view, const VolumePlan
   detail::mesh_stacks(s);
   detail::smooth_ends(s);
   detail::sweep_barrels(s, reports);
+  detail::check_seams_welded(s);
   return std::move(s.out);
 }
 
