@@ -169,14 +169,20 @@ void write_decomposition(const decompose::Report& cuts, JsonWriter& j) {
     for (const auto& c : v.cuts) {
       j.begin_object();
       j.key("kind");
-      j.value(c.surface.kind == occ::CutSurface::Kind::Plane ? "plane" : "cylinder");
+      j.value(c.surface.kind == occ::CutSurface::Kind::Plane      ? "plane"
+              : c.surface.kind == occ::CutSurface::Kind::Cylinder ? "cylinder"
+                                                                  : "cone");
       j.key("origin");
       vec(c.surface.origin);
       j.key("direction");
       vec(c.surface.direction);
-      if (c.surface.kind == occ::CutSurface::Kind::Cylinder) {
+      if (c.surface.kind != occ::CutSurface::Kind::Plane) {
         j.key("radius");
         j.value(c.surface.radius);
+      }
+      if (c.surface.kind == occ::CutSurface::Kind::Cone) {
+        j.key("half_angle_degrees");
+        j.value(c.surface.half_angle * 180.0 / M_PI);
       }
       j.key("description");
       j.value(decompose::describe(c.surface));

@@ -1,5 +1,6 @@
 #include "framework/decompose/cut_candidates.h"
 
+#include "framework/decompose/cone_candidates.h"
 #include "framework/decompose/surface_fit.h"
 #include "framework/decompose/volume_samples.h"
 
@@ -124,6 +125,7 @@ std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
                  tol);
     }
   }
+  for (CutCandidate& c : cone_candidates(model, volume)) add_unique(out, std::move(c), tol);
   return out;
 }
 

@@ -1,7 +1,8 @@
 // Candidate cuts of a volume (issue 17): the planes of its own planar faces
-// (extended), the cylinders of its cylindrical faces, and planes through its
+// (extended), the cylinders of its cylindrical faces, planes through its
 // straight feature edges along the candidate sweep axes (the normals of its
-// planar faces and the axes of its cylinders). Blacker 1996, sec. 3: the
+// planar faces and the axes of its cylinders), and cones through pairs of
+// its tangent circular edges (cone_candidates.h). Blacker 1996, sec. 3: the
 // user's hand decomposition of Fig. 3a is such a cut, through the plane of a
 // boss's side face, so that each piece projects along one axis.
 #pragma once
@@ -33,7 +34,8 @@ struct CandidateOptions {
 
 /// Candidates in a deterministic order that depends only on the topology
 /// (ids), not on the placement of the part: face planes (surface order),
-/// then cylinders, then planes through edges (axis order, curve order).
+/// then cylinders, then planes through edges (axis order, curve order),
+/// then cones (curve order).
 /// Duplicates (the same surface from several faces or edges) appear once,
 /// under their first source.
 std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,

@@ -36,7 +36,10 @@ double signed_distance(const CutSurface& cut, const geom::Vec3& p) {
   const geom::Vec3 d = cut.direction.normalized();
   const geom::Vec3 r = p - cut.origin;
   if (cut.kind == CutSurface::Kind::Plane) return d.dot(r);
-  return (r - r.dot(d) * d).norm() - cut.radius;
+  const double radial = (r - r.dot(d) * d).norm();
+  if (cut.kind == CutSurface::Kind::Cylinder) return radial - cut.radius;
+  // Cone: the radial gap to the cone at p's height, measured normal to it.
+  return (radial - cut.radius - r.dot(d) * std::tan(cut.half_angle)) * std::cos(cut.half_angle);
 }
 
 Span span(const CutSurface& cut, const std::vector<geom::Vec3>& points) {
@@ -55,7 +58,13 @@ bool same_surface(const CutSurface& a, const CutSurface& b, double tol) {
   if (std::abs(da.dot(db)) < 1.0 - 1e-9) return false;
   if (a.kind == CutSurface::Kind::Plane) return std::abs(da.dot(b.origin - a.origin)) <= tol;
   const geom::Vec3 r = b.origin - a.origin;
-  return (r - r.dot(da) * da).norm() <= tol && std::abs(a.radius - b.radius) <= tol;
+  if (a.kind == CutSurface::Kind::Cylinder)
+    return (r - r.dot(da) * da).norm() <= tol && std::abs(a.radius - b.radius) <= tol;
+  // Cones: the same axis, opening the same way at the same angle, and b's
+  // origin circle on a.
+  return (r - r.dot(da) * da).norm() <= tol && da.dot(db) > 0 &&
+         std::abs(a.half_angle - b.half_angle) <= 1e-9 &&
+         std::abs(b.radius - a.radius - r.dot(da) * std::tan(a.half_angle)) <= tol;
 }
 
 std::string describe(const CutSurface& cut) {
@@ -67,6 +76,11 @@ std::string describe(const CutSurface& cut) {
       return "plane " + axis.substr(axis.size() - 1) + " = " + num(cut.origin[k]);
     }
     return "plane through " + vec(cut.origin) + " normal " + vec(d);
+  }
+  if (cut.kind == CutSurface::Kind::Cone) {
+    return "cone of half angle " + num(cut.half_angle * 180.0 / M_PI) +
+           " degrees, r = " + num(cut.radius) + " at " + vec(cut.origin) + ", widening along " +
+           (axis.empty() ? vec(d) : axis);
   }
   return "cylinder r = " + num(cut.radius) + " about the axis through " + vec(cut.origin) +
          " along " + (axis.empty() ? vec(d) : axis);

@@ -12,7 +12,7 @@ namespace cooperage::decompose {
 using occ::CutSurface;
 
 /// Signed distance of p from the cut (plane: positive on the normal's side;
-/// cylinder: positive outside).
+/// cylinder and cone: positive outside).
 double signed_distance(const CutSurface& cut, const geom::Vec3& p);
 
 /// Smallest and largest signed distance of the points from the cut.

@@ -1,5 +1,5 @@
-// SolidPieces: the solids of a workbench, cut one at a time by planes or
-// cylinders (BRepAlgoAPI_Splitter, as the journal's webcut) and numbered into
+// SolidPieces: the solids of a workbench, cut one at a time by planes,
+// cylinders or cones (BRepAlgoAPI_Splitter, as the journal's webcut) and numbered into
 // a model by the same steps as Workbench::build_model.
 #include "framework/geometry/occ/solid_pieces.h"
 
@@ -12,6 +12,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <gp_Ax3.hxx>
+#include <gp_Cone.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
 
@@ -77,8 +78,33 @@ TopoDS_Face tool_face(const TopoDS_Shape& shape, const CutSurface& cut) {
     return BRepBuilderAPI_MakeFace(gp_Pln(frame), -half, half, -half, half).Face();
   }
   if (!(cut.radius > 0.0) || !std::isfinite(cut.radius))
-    throw MeshingError(ErrorCode::InvalidInput, "a cylindrical cut needs a positive radius");
-  return BRepBuilderAPI_MakeFace(gp_Cylinder(frame, cut.radius), 0.0, 2.0 * M_PI, -half, half)
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "a cylindrical or conical cut needs a positive radius");
+  const Vec3 seam = cut.seam - dir * dir.dot(cut.seam);
+  if (cut.kind == CutSurface::Kind::Cylinder) {
+    const gp_Ax3 seamed =
+        seam.norm() > 1e-9
+            ? gp_Ax3(detail::to_pnt(foot), detail::checked_dir("cut", dir, "cut direction"),
+                     detail::checked_dir("cut", seam.normalized(), "cut seam"))
+            : frame;
+    return BRepBuilderAPI_MakeFace(gp_Cylinder(seamed, cut.radius), 0.0, 2.0 * M_PI, -half, half)
+        .Face();
+  }
+  if (!(cut.half_angle > 1e-6 && cut.half_angle < 0.5 * M_PI - 1e-6))
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "a conical cut needs a half angle in (0, 90) degrees");
+  // The cone's own frame at `origin` (its radius is given there); v runs
+  // along the generatrix, the apex at v = -radius / sin(half_angle).
+  const gp_Ax3 cone_frame =
+      seam.norm() > 1e-9
+          ? gp_Ax3(detail::to_pnt(cut.origin), detail::checked_dir("cut", dir, "cut direction"),
+                   detail::checked_dir("cut", seam.normalized(), "cut seam"))
+          : gp_Ax3(detail::to_pnt(cut.origin), detail::checked_dir("cut", dir, "cut direction"));
+  const double apex = -cut.radius / std::sin(cut.half_angle);
+  const double reach = 2.0 * ((hi - lo).norm() + (centre - cut.origin).norm()) + 1.0;
+  const double v0 = std::max(-reach, apex * (1.0 - 1e-6));
+  return BRepBuilderAPI_MakeFace(gp_Cone(cone_frame, cut.half_angle, cut.radius), 0.0, 2.0 * M_PI,
+                                 v0, reach)
       .Face();
 }
 
@@ -110,6 +136,7 @@ SolidPieces SolidPieces::split(int index, const CutSurface& cut) const {
     splitter.SetArguments(args);
     splitter.SetTools(tools);
     splitter.SetRunParallel(Standard_False);
+    if (cut.fuzzy > 0.0) splitter.SetFuzzyValue(cut.fuzzy);
     splitter.Build();
     if (!splitter.IsDone() || splitter.HasErrors())
       throw MeshingError(ErrorCode::GeometryError,

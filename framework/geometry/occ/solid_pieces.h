@@ -14,13 +14,25 @@ namespace cooperage::occ {
 
 /// An unbounded cutting surface. Plane: through `origin` with unit normal
 /// `direction`. Cylinder: axis through `origin` along unit `direction`,
-/// radius `radius` (> 0).
+/// radius `radius` (> 0). Cone: axis through `origin` along unit
+/// `direction`, radius `radius` (> 0) at `origin`, growing along
+/// `direction` at `half_angle` (radians, in (0, pi/2)); it stops short of
+/// its apex.
 struct CutSurface {
-  enum class Kind { Plane, Cylinder };
+  enum class Kind { Plane, Cylinder, Cone };
   Kind kind = Kind::Plane;
   Vec3 origin = Vec3::Zero();
   Vec3 direction = Vec3::UnitZ();
   double radius = 0.0;
+  double half_angle = 0.0;
+  /// Cylinder and cone: where their seam lies (a direction off the axis;
+  /// zero: any). A seam through the vertices of the curves the cut runs
+  /// along keeps the cut face a plain annulus.
+  Vec3 seam = Vec3::Zero();
+  /// Distance within which the kernel takes the cut to run along existing
+  /// edges (0: exact): a cone through two B-spline circles of a CAD model
+  /// passes them only within their fitting error.
+  double fuzzy = 0.0;
 };
 
 /// Solids (and free faces) in model volume order: piece i is volume i + 1 of
