@@ -1,7 +1,7 @@
 // Automatic decomposition (issue 17; Blacker 1996, sec. 3 calls lifting the
 // hand decomposition of Fig. 3 "a natural next step"): every volume that no
-// volume scheme applies to is cut, by planes and cylinders taken from its
-// own faces and edges, into pieces that a scheme applies to, the best cut
+// volume scheme applies to is cut, by planes, cylinders and cones taken from
+// its own faces and edges, into pieces that a scheme applies to, the best cut
 // first, recursively and within bounds. The pieces are then imprinted and
 // merged with everything else, so the mesh is conformal by construction.
 #pragma once

@@ -1,5 +1,5 @@
-// The solids of a workbench as separate pieces that can be cut by a plane or
-// a cylinder and turned back into a model: what the automatic decomposition
+// The solids of a workbench as separate pieces that can be cut by a plane, a
+// cylinder or a cone and turned back into a model: what the automatic decomposition
 // (framework/decompose/) works on. No OCCT type appears here.
 #pragma once
 
