@@ -14,17 +14,7 @@ constexpr double kMinSkinAngleDeg = 30.0;
 
 // Whether the two faces of the volume at curve c meet within `deg` of flat.
 bool tangent_at(const geom::Model& model, int volume, int c, double deg) {
-  const geom::Curve& curve = model.curve(c);
-  const auto [t0, t1] = curve.geometry->range();
-  const Vec3 mid = curve.geometry->point(0.5 * (t0 + t1));
-  std::vector<Vec3> normals;
-  for (int s : curve.surfaces) {
-    const auto& vols = model.surface(s).volumes;
-    if (std::find(vols.begin(), vols.end(), volume) == vols.end()) return false;
-    normals.push_back(geom::sign(model.sense_in(s, volume)) *
-                      model.surface(s).geometry->project(mid).normal);
-  }
-  // A seam has one face; a tangent edge two whose outward normals agree.
+  const std::vector<Vec3> normals = outward_normals_at(model, volume, c);
   return normals.size() == 2 && normals[0].dot(normals[1]) > std::cos(deg * M_PI / 180.0);
 }
 

@@ -35,16 +35,7 @@ std::string axis_text(const geom::Vec3& a) {
 // Whether the straight curve c is a feature edge of the volume: the outward
 // normals of its faces there differ by more than the angle.
 bool is_feature(const geom::Model& model, int volume, int c, double angle_deg) {
-  const geom::Curve& curve = model.curve(c);
-  const auto [t0, t1] = curve.geometry->range();
-  const geom::Vec3 mid = curve.geometry->point(0.5 * (t0 + t1));
-  std::vector<geom::Vec3> normals;
-  for (int s : curve.surfaces) {
-    const auto& vols = model.surface(s).volumes;
-    if (std::find(vols.begin(), vols.end(), volume) == vols.end()) continue;
-    const geom::SurfaceProjection p = model.surface(s).geometry->project(mid);
-    normals.push_back(geom::sign(model.sense_in(s, volume)) * p.normal);
-  }
+  const std::vector<geom::Vec3> normals = outward_normals_at(model, volume, c);
   if (normals.size() != 2) return true;  // a seam or non-manifold: keep it
   return normals[0].dot(normals[1]) < std::cos(angle_deg * M_PI / 180.0);
 }

@@ -1,5 +1,6 @@
 #include "framework/decompose/volume_samples.h"
 
+#include <algorithm>
 #include <set>
 
 namespace cooperage::decompose {
@@ -12,6 +13,20 @@ std::vector<int> curves_of(const geom::Model& model, int volume) {
     }
   }
   return {curves.begin(), curves.end()};
+}
+
+std::vector<geom::Vec3> outward_normals_at(const geom::Model& model, int volume, int c) {
+  const geom::Curve& curve = model.curve(c);
+  const auto [t0, t1] = curve.geometry->range();
+  const geom::Vec3 mid = curve.geometry->point(0.5 * (t0 + t1));
+  std::vector<geom::Vec3> normals;
+  for (int s : curve.surfaces) {
+    const auto& vols = model.surface(s).volumes;
+    if (std::find(vols.begin(), vols.end(), volume) == vols.end()) continue;
+    normals.push_back(geom::sign(model.sense_in(s, volume)) *
+                      model.surface(s).geometry->project(mid).normal.normalized());
+  }
+  return normals;
 }
 
 std::vector<geom::Vec3> volume_samples(const geom::Model& model, int volume, int per_curve) {

@@ -177,16 +177,11 @@ std::string side_on_both_sides_of_an_end(const SideLattice& lattice, const Barre
 
 // Diagonal of the box of a face's boundary curves.
 double rim_extent(const VolumeFacts& facts, int face) {
-  geom::Vec3 lo = geom::Vec3::Constant(1e300), hi = geom::Vec3::Constant(-1e300);
+  std::vector<int> rims;
   for (const auto& loop : facts.face(face)->loops) {
-    for (const UseFact& u : loop) {
-      for (const geom::Vec3& x : facts.curves.at(u.curve).samples) {
-        lo = lo.cwiseMin(x);
-        hi = hi.cwiseMax(x);
-      }
-    }
+    for (const UseFact& u : loop) rims.push_back(u.curve);
   }
-  return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
+  return facts.extent(rims);
 }
 
 // A seamed cap the sweep meshes (a band on a periodic face) gets its nodes

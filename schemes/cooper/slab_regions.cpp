@@ -28,15 +28,11 @@ struct DisjointSets {
 
 /// Extent of a cycle's rims: the diagonal of the box of its contact curves.
 double rim_extent(const VolumeFacts& facts, const SideLattice& lattice, const Cycle& cycle) {
-  geom::Vec3 lo = geom::Vec3::Constant(1e300), hi = geom::Vec3::Constant(-1e300);
+  std::vector<int> rims;
   for (const CapContact& k : lattice.contacts) {
-    if (!std::binary_search(cycle.faces.begin(), cycle.faces.end(), k.face)) continue;
-    for (const geom::Vec3& p : facts.curves.at(k.curve).samples) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
+    if (std::binary_search(cycle.faces.begin(), cycle.faces.end(), k.face)) rims.push_back(k.curve);
   }
-  return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
+  return facts.extent(rims);
 }
 
 /// A cap whose one loop runs along two cycles through a seam (an annulus on

@@ -27,6 +27,17 @@ std::vector<int> VolumeFacts::faces_of_curve(int curve) const {
   return out;
 }
 
+double VolumeFacts::extent(const std::vector<int>& curve_ids) const {
+  geom::Vec3 lo = geom::Vec3::Constant(1e300), hi = geom::Vec3::Constant(-1e300);
+  for (int id : curve_ids) {
+    for (const geom::Vec3& p : curves.at(id).samples) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
+}
+
 double VolumeFacts::size() const {
   if (vertices.empty()) return 1.0;
   geom::Vec3 lo = vertices.begin()->second, hi = lo;

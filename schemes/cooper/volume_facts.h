@@ -69,6 +69,8 @@ struct VolumeFacts {
   std::vector<int> faces_of_curve(int curve) const;
   /// Diagonal of the box of all vertices (a length scale for tolerances).
   double size() const;
+  /// Diagonal of the box of the given curves' samples (0 for none).
+  double extent(const std::vector<int>& curve_ids) const;
 };
 
 /// Gathers the facts of `volume_id`; the submap verdicts come from the
