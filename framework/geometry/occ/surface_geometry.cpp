@@ -83,8 +83,20 @@ class FaceSurface final : public geom::SurfaceGeometry {
   geom::SurfaceProjection at(const Vec3& p, const Vec2& uv) const {
     geom::SurfaceProjection out;
     out.uv = uv;
-    out.point = point(uv);
-    out.normal = normal(uv);
+    // Point and normal from one first-derivative evaluation (a second one,
+    // and GeomLProp's, cost as much as the projection on a B-spline face);
+    // where the tangents are parallel (apex, pole) normal() steps aside.
+    gp_Pnt s;
+    gp_Vec su, sv;
+    projector_->d1(uv.x(), uv.y(), s, su, sv);
+    out.point = to_vec3(s);
+    const gp_Vec n = su.Crossed(sv);
+    if (n.Magnitude() > 1e-12 * su.Magnitude() * sv.Magnitude() && n.Magnitude() > 0.0) {
+      const Vec3 unit = to_vec3(n) / n.Magnitude();
+      out.normal = flip_ ? Vec3(-unit) : unit;
+    } else {
+      out.normal = normal(uv);
+    }
     out.distance = (p - out.point).norm();
     return out;
   }

@@ -119,12 +119,16 @@ std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p,
 std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) const {
   if (!std::isfinite(hint.x()) || !std::isfinite(hint.y())) return std::nullopt;
   double u = std::clamp(hint.x(), u0_, u1_), v = std::clamp(hint.y(), v0_, v1_);
-  const double tol = 1e-12 * scale_;
+  // A full Newton step of length d leaves an error of order d^2 / scale:
+  // after one of 1e-8 the point is exact to rounding, and the step that
+  // would prove it (another D2, the cost of a projection) is not taken.
+  const double converged = 1e-8 * scale_;
   gp_Pnt s;
   gp_Vec su, sv, suu, svv, suv;
   try {
+    const GeomAdaptor_Surface& adaptor = evaluator();
     for (int it = 0; it < 30; ++it) {
-      surface_->D2(u, v, s, su, sv, suu, svv, suv);
+      adaptor.D2(u, v, s, su, sv, suu, svv, suv);
       const gp_Vec r(p, s);  // S - p
       const double g0 = r.Dot(su), g1 = r.Dot(sv);
       // Hessian of |S - p|^2 / 2; Gauss-Newton's J^T J when it is not
@@ -132,7 +136,8 @@ std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) 
       double h00 = su.Dot(su) + r.Dot(suu), h01 = su.Dot(sv) + r.Dot(suv),
              h11 = sv.Dot(sv) + r.Dot(svv);
       double det = h00 * h11 - h01 * h01;
-      if (!(h00 > 0.0 && det > 1e-14 * h00 * h11)) {
+      const bool full = h00 > 0.0 && det > 1e-14 * h00 * h11;
+      if (!full) {
         h00 = su.Dot(su);
         h01 = su.Dot(sv);
         h11 = sv.Dot(sv);
@@ -143,24 +148,25 @@ std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) 
       const double dv = -(h00 * g1 - h01 * g0) / det;
       const double un = std::clamp(u + du, u0_, u1_), vn = std::clamp(v + dv, v0_, v1_);
       const double moved = (su * (un - u) + sv * (vn - v)).Magnitude();
+      if (!std::isfinite(moved)) return std::nullopt;
+      const bool clamped = un != u + du || vn != v + dv;
       u = un;
       v = vn;
-      if (!std::isfinite(moved)) return std::nullopt;
-      if (moved <= tol) {
-        // Converged: a minimum strictly inside the box (a point on its edge
-        // is a constrained minimum, which the global search decides).
-        surface_->D2(u, v, s, su, sv, suu, svv, suv);
-        const gp_Vec rr(p, s);
-        const double a00 = su.Dot(su) + rr.Dot(suu), a01 = su.Dot(sv) + rr.Dot(suv),
-                     a11 = sv.Dot(sv) + rr.Dot(svv);
-        if (!(a00 > 0.0 && a00 * a11 - a01 * a01 > 0.0)) return std::nullopt;
-        const double gl = std::hypot(rr.Dot(su), rr.Dot(sv));
+      // Accepted: a full step inside the box of at most `converged`, or a
+      // step that stalled on the box's edge. Either way a minimum: the
+      // Hessian just used is positive definite (Gauss-Newton's is not
+      // proof) and the gradient vanishes to the step's accuracy. A point
+      // on the edge of a non-periodic direction is a constrained minimum,
+      // which the global search decides, unless it lies on the surface.
+      const bool stalled = moved <= 1e-12 * scale_;
+      if ((full && !clamped && moved <= converged) || stalled) {
+        if (!full) return std::nullopt;
         const double ref =
-            std::max(rr.Magnitude(), scale_) * std::max(su.Magnitude(), sv.Magnitude());
-        if (gl > 1e-8 * ref) return std::nullopt;
+            std::max(r.Magnitude(), scale_) * std::max(su.Magnitude(), sv.Magnitude());
+        if (std::hypot(g0, g1) > (stalled ? 1e-8 : 1e-6) * ref) return std::nullopt;
         const bool edge_u = (u <= u0_ || u >= u1_) && !u_periodic_;
         const bool edge_v = (v <= v0_ || v >= v1_) && !v_periodic_;
-        if ((edge_u || edge_v) && rr.Magnitude() > 1e-9 * scale_) return std::nullopt;
+        if ((edge_u || edge_v) && r.Magnitude() > 1e-9 * scale_) return std::nullopt;
         return Vec2(u, v);
       }
     }
@@ -168,6 +174,16 @@ std::optional<Vec2> SurfaceProjector::newton(const gp_Pnt& p, const Vec2& hint) 
     return std::nullopt;
   }
   return std::nullopt;
+}
+
+const GeomAdaptor_Surface& SurfaceProjector::evaluator() const {
+  auto& a = adaptors_.local();
+  if (!a) a = std::make_unique<GeomAdaptor_Surface>(surface_, u0_, u1_, v0_, v1_);
+  return *a;
+}
+
+void SurfaceProjector::d1(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv) const {
+  evaluator().D1(u, v, p, su, sv);
 }
 
 Vec2 SurfaceProjector::global(const gp_Pnt& p) const {

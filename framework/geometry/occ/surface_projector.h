@@ -17,8 +17,10 @@
 #include "framework/geometry/types.h"
 
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Surface.hxx>
 #include <Geom_Surface.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
 
 #include <tbb/enumerable_thread_specific.h>
 
@@ -59,10 +61,19 @@ class SurfaceProjector {
   /// otherwise (and for elementary surfaces, which have closed forms).
   std::optional<geom::Vec2> seeded(const gp_Pnt& p) const;
 
+  /// Point and first derivatives at (u, v), through this thread's adaptor
+  /// (see evaluator()).
+  void d1(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv) const;
+
  private:
   enum class Kind { Plane, Cylinder, Cone, Sphere, Torus, Other };
 
   geom::Vec2 global(const gp_Pnt& p) const;
+  /// This thread's adaptor of the surface. On a B-spline it keeps the
+  /// polynomial of the last span evaluated (BSplSLib_Cache), so a run of
+  /// evaluations in one span costs a Horner scheme each instead of the
+  /// poles' recursion (a degree-13 loft spent half its run there, issue 20).
+  const GeomAdaptor_Surface& evaluator() const;
   bool in_box(geom::Vec2& uv) const;  // shifts periodic parameters; true when inside
 
   Handle(Geom_Surface) surface_;
@@ -72,6 +83,7 @@ class SurfaceProjector {
   bool u_periodic_ = false, v_periodic_ = false;
   double u_period_ = 0.0, v_period_ = 0.0;
   mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAPI_ProjectPointOnSurf>> per_thread_;
+  mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAdaptor_Surface>> adaptors_;
   struct Sample {
     double x, y, z, u, v;
   };
