@@ -34,16 +34,17 @@ double surface_scaled_jacobian(const std::vector<Vec3>& points, const int* corne
   return count == 3 ? s * 2.0 / std::sqrt(3.0) : s;
 }
 
-SurfaceMeshQuality surface_mesh_quality(const std::vector<Vec3>& points,
-                                        const std::vector<Quad>& quads,
-                                        const std::vector<Tri>& tris,
-                                        const std::function<Vec3(const Vec3&)>& normal_at,
-                                        double floor) {
+SurfaceMeshQuality surface_mesh_quality(
+    const std::vector<Vec3>& points, const std::vector<Quad>& quads, const std::vector<Tri>& tris,
+    const std::function<Vec3(const Vec3& centroid, double size)>& normal_at, double floor) {
   SurfaceMeshQuality q;
   auto score = [&](const int* corners, int count) {
     Vec3 c = Vec3::Zero();
     for (int k = 0; k < count; ++k) c += at(points, corners[k]);
-    const double s = surface_scaled_jacobian(points, corners, count, normal_at(c / count));
+    c /= count;
+    double size = 0;
+    for (int k = 0; k < count; ++k) size = std::max(size, (at(points, corners[k]) - c).norm());
+    const double s = surface_scaled_jacobian(points, corners, count, normal_at(c, size));
     q.min = std::min(q.min, s);
     if (!(s > 0)) ++q.inverted;
     if (s < floor) ++q.below;

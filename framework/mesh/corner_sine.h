@@ -32,11 +32,12 @@ struct SurfaceMeshQuality {
 };
 
 /// Scores every quad and triangle with surface_scaled_jacobian() against
-/// normal_at(its centroid) (e.g. the surface normal at the closest point).
-SurfaceMeshQuality surface_mesh_quality(const std::vector<Vec3>& points,
-                                        const std::vector<Quad>& quads,
-                                        const std::vector<Tri>& tris,
-                                        const std::function<Vec3(const Vec3&)>& normal_at,
-                                        double floor = 0.0);
+/// normal_at(its centroid, its size) (e.g. the surface normal at the closest
+/// point; the size, the largest distance of a corner from the centroid,
+/// bounds how far that point can be: geom::ProjectionWalk's reach).
+/// Elements are scored in order, quads first.
+SurfaceMeshQuality surface_mesh_quality(
+    const std::vector<Vec3>& points, const std::vector<Quad>& quads, const std::vector<Tri>& tris,
+    const std::function<Vec3(const Vec3& centroid, double size)>& normal_at, double floor = 0.0);
 
 }  // namespace cooperage::mesh

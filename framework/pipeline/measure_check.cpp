@@ -1,5 +1,7 @@
 #include "framework/pipeline/measure_check.h"
 
+#include "framework/geometry/projection_walk.h"
+
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
@@ -35,23 +37,31 @@ std::array<Vec3, N> gather(const std::array<int, N>& e, const mesh::MeshDB& db) 
   return p;
 }
 
-/// Sum of term(0..count-1) over fixed chunks, each summed in order, the
-/// chunk sums then added in order: parallel, and the same bits for any
-/// thread count (the chunks do not depend on the scheduling).
-template <class Term>
-double chunked_sum(std::size_t count, Term term) {
+/// Sum of term(state, 0..count-1) over fixed chunks, each summed in order
+/// with its own state from make_state(), the chunk sums then added in
+/// order: parallel, and the same bits for any thread count (the chunks do
+/// not depend on the scheduling).
+template <class MakeState, class Term>
+double chunked_sum_with(std::size_t count, MakeState make_state, Term term) {
   constexpr std::size_t kChunk = 8192;
   const std::size_t chunks = (count + kChunk - 1) / kChunk;
   std::vector<double> partial(chunks, 0.0);
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    auto state = make_state();
     double sum = 0;
     const std::size_t end = std::min(count, (c + 1) * kChunk);
-    for (std::size_t e = c * kChunk; e < end; ++e) sum += term(e);
+    for (std::size_t e = c * kChunk; e < end; ++e) sum += term(state, e);
     partial[c] = sum;
   });
   double total = 0;
   for (double p : partial) total += p;
   return total;
+}
+
+template <class Term>
+double chunked_sum(std::size_t count, Term term) {
+  return chunked_sum_with(
+      count, [] { return 0; }, [&](int, std::size_t e) { return term(e); });
 }
 
 /// Area of a bilinear quad (2 x 2 Gauss points of |x_u x x_v|).
@@ -72,7 +82,7 @@ double quad_area(const std::array<Vec3, 4>& p) {
 /// Volume between a facet and its surface, positive where the surface lies
 /// outside (the facet cuts the volume short).
 template <std::size_t N>
-double facet_sliver(const std::array<Vec3, N>& p, const geom::SurfaceGeometry& surface,
+double facet_sliver(const std::array<Vec3, N>& p, geom::ProjectionWalk& surface,
                     double outward_sign) {
   Vec3 c = Vec3::Zero();
   for (const Vec3& q : p) c += q;
@@ -85,7 +95,7 @@ double facet_sliver(const std::array<Vec3, N>& p, const geom::SurfaceGeometry& s
     area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
     size = std::max({(p[1] - p[0]).norm(), (p[2] - p[1]).norm(), (p[0] - p[2]).norm()});
   }
-  const geom::SurfaceProjection proj = surface.project(c);
+  const geom::SurfaceProjection proj = surface.project(c, size);
   if (!proj.point.allFinite() || !proj.normal.allFinite()) return 0;
   const double gap = capped((proj.point - c).dot(outward_sign * proj.normal), size);
   return area * gap * (N == 4 ? 2.0 / 3.0 : 3.0 / 4.0);
@@ -106,11 +116,12 @@ MeasureCheck check_volume(const geom::Model& model, const mesh::MeshDB& db, int 
       if (!db.surface_meshed(s.id) || s.geometry->type() == geom::SurfaceType::Plane) continue;
       const mesh::SurfaceMeshData& sm = db.surface(s.id);
       const double out = geom::sign(use.sense);
-      m.faceting += chunked_sum(sm.quads.size(), [&](std::size_t e) {
-        return facet_sliver(gather(sm.quads[e], db), *s.geometry, out);
+      auto walk = [&] { return geom::ProjectionWalk(*s.geometry); };
+      m.faceting += chunked_sum_with(sm.quads.size(), walk, [&](auto& w, std::size_t e) {
+        return facet_sliver(gather(sm.quads[e], db), w, out);
       });
-      m.faceting += chunked_sum(sm.tris.size(), [&](std::size_t e) {
-        return facet_sliver(gather(sm.tris[e], db), *s.geometry, out);
+      m.faceting += chunked_sum_with(sm.tris.size(), walk, [&](auto& w, std::size_t e) {
+        return facet_sliver(gather(sm.tris[e], db), w, out);
       });
     }
   }
@@ -172,6 +183,7 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
   for (const mesh::Tri& t : sm.tris) count(t.data(), 3);
   std::unordered_map<std::uint64_t, EdgeGap> gaps;
   gaps.reserve(uses.size());
+  geom::ProjectionWalk walk(*s.geometry);  // the facets in order, one after another
   auto gap_of = [&](int a, int b) -> const EdgeGap& {
     const std::uint64_t key = edge_key(a, b);
     auto it = gaps.find(key);
@@ -186,7 +198,7 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
         if (q.allFinite()) g.gap = q - mid;
       }
     } else if (!planar) {
-      const geom::SurfaceProjection p = s.geometry->project(mid);
+      const geom::SurfaceProjection p = walk.project(mid, (db.node(b) - db.node(a)).norm());
       if (p.point.allFinite()) g.gap = p.point - mid;
     }
     return gaps.emplace(key, g).first->second;
@@ -197,11 +209,11 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
   // only facets whose corners do are credited, so a mesh off its surface
   // is never excused as faceting.
   std::unordered_map<int, double> off_surface;
-  auto distance_off = [&](int node) {
+  auto distance_off = [&](int node, double reach) {
     auto it = off_surface.find(node);
     if (it != off_surface.end()) return it->second;
     const Vec3& x = db.node(node);
-    const geom::SurfaceProjection q = s.geometry->project(x);
+    const geom::SurfaceProjection q = walk.project(x, reach);
     const double d = q.point.allFinite() ? (q.point - x).norm() : 0.0;
     return off_surface.emplace(node, d).first->second;
   };
@@ -232,13 +244,13 @@ MeasureCheck check_surface(const geom::Model& model, const mesh::MeshDB& db, int
       mid[i] = 0.5 * (a + b) + capped_gap(gap_of(n[i], n[(i + 1) % k]).gap, length);
     }
     for (int i = 0; i < k; ++i) {
-      if (distance_off(n[i]) > 0.02 * size) return;  // not on its surface: no credit
+      if (distance_off(n[i], size) > 0.02 * size) return;  // not on its surface: no credit
     }
     double refined = 0;
     if (k == 4) {
       Vec3 c = centre;
       if (!planar) {
-        const geom::SurfaceProjection q = s.geometry->project(centre);
+        const geom::SurfaceProjection q = walk.project(centre, size);
         if (q.point.allFinite()) c += capped_gap(q.point - centre, size);
       }
       refined = quad_area({p[0], mid[0], c, mid[3]}) + quad_area({mid[0], p[1], mid[1], c}) +

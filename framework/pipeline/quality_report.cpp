@@ -1,8 +1,10 @@
 #include "framework/pipeline/quality_report.h"
 
 #include "framework/core/error.h"
+#include "framework/geometry/projection_walk.h"
 #include "framework/quality/evaluate.h"
 
+#include <algorithm>
 #include <array>
 
 namespace cooperage::pipeline {
@@ -33,10 +35,14 @@ std::vector<Eigen::Vector3d> centroid_normals(const mesh::MeshDB& db, const geom
                                               const std::vector<std::array<int, N>>& elements) {
   std::vector<Eigen::Vector3d> normals;
   normals.reserve(elements.size());
+  geom::ProjectionWalk walk(*s.geometry);
   for (const auto& e : elements) {
     geom::Vec3 c = geom::Vec3::Zero();
     for (int n : e) c += db.node(n);
-    normals.push_back(s.geometry->project(c / static_cast<double>(N)).normal);
+    c /= static_cast<double>(N);
+    double reach = 0;  // a centroid lies within its element's size of the surface
+    for (int n : e) reach = std::max(reach, (db.node(n) - c).norm());
+    normals.push_back(walk.project(c, reach).normal);
   }
   return normals;
 }

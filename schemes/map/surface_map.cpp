@@ -135,6 +135,19 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
   auto at = [&](int i, int j) -> int& {
     return local[static_cast<size_t>(i) * (static_cast<size_t>(m) + 1) + static_cast<size_t>(j)];
   };
+  // Interior points go onto the surface by a local search from the
+  // parameters of the previous point in the row (the row's first from the
+  // previous row's first): a neighbour, a fraction of an element away.
+  geom::Vec2 previous_uv, row_start_uv;
+  auto project_interior = [&](int i, int j) {
+    const Vec3 p = grid(i, j);
+    const geom::SurfaceProjection pr = j > 1   ? geometry.project_near(p, previous_uv)
+                                       : i > 1 ? geometry.project_near(p, row_start_uv)
+                                               : geometry.project(p);
+    previous_uv = pr.uv;
+    if (j == 1) row_start_uv = pr.uv;
+    return pr.point;
+  };
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j <= m; ++j) {
       const size_t ui = static_cast<size_t>(i), uj = static_cast<size_t>(j);
@@ -147,7 +160,7 @@ scheme::EntityMesh SurfaceMap::mesh(const scheme::SurfaceView& view,
       else if (i == n)
         at(i, j) = boundary_local(right[uj]);
       else
-        at(i, j) = out.add(geometry.project(grid(i, j)).point);
+        at(i, j) = out.add(project_interior(i, j));
     }
   }
   out.quads.reserve(static_cast<size_t>(n) * static_cast<size_t>(m));

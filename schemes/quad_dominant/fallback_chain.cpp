@@ -2,6 +2,7 @@
 
 #include "framework/core/error.h"
 #include "framework/geometry/evaluators.h"
+#include "framework/geometry/projection_walk.h"
 #include "framework/mesh/corner_sine.h"
 #include "framework/mesh/improve_split_nodes.h"
 #include "framework/scheme/vertex_angles.h"
@@ -64,7 +65,10 @@ scheme::EntityMesh FallbackChain::primary_or_quads(const scheme::SurfaceView& vi
       std::rethrow_exception(primary_error);
     }
     if (const geom::SurfaceGeometry* surface = view.surface().geometry.get()) {
-      const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };
+      geom::ProjectionWalk walk(*surface);
+      const auto normal_at = [&walk](const Vec3& x, double reach) {
+        return walk.project(x, reach).normal;
+      };
       if (mesh::surface_mesh_quality(quads.coords, quads.quads, quads.tris, normal_at).inverted > 0)
         std::rethrow_exception(primary_error);
     }
@@ -83,7 +87,11 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
   }
   const geom::SurfaceGeometry* surface = view.surface().geometry.get();
   if (surface == nullptr) return primary_->mesh(view, params);
-  const auto normal_at = [surface](const Vec3& x) { return surface->project(x).normal; };
+  // One walk for the whole chain: its meshes are scored one after another.
+  geom::ProjectionWalk walk(*surface);
+  const auto normal_at = [&walk](const Vec3& x, double reach) {
+    return walk.project(x, reach).normal;
+  };
   const std::string floor = number(min_quality_);
   // What the face allows: below it the chain looks further, at or above it
   // the first mesh is kept (a 3-degree corner is no reason to give up quads).

@@ -67,7 +67,7 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
       std::vector<double> before;
       for (int q : incident[v]) before.push_back(quality(q));
       const Vec3 old_x = x[v], old_n = normals[v];
-      const geom::SurfaceProjection pr = project(acc / wsum);
+      const geom::SurfaceProjection pr = project(acc / wsum, v);
       x[v] = pr.point;
       normals[v] = pr.normal;
       bool accept = true;

@@ -22,7 +22,9 @@ struct SmoothOptions {
 };
 
 /// Projection of a point onto the surface (closest point and unit normal).
-using Projector = std::function<geom::SurfaceProjection(const Vec3&)>;
+/// `node` is the node being moved, so the caller can start a local search
+/// from where that node was (geom::SurfaceGeometry::project_near).
+using Projector = std::function<geom::SurfaceProjection(const Vec3& point, size_t node)>;
 
 /// Scaled Jacobian of a quad against a normal: the minimum over its corners
 /// of the sine of the corner angle between unit edges, signed by `normals`

@@ -246,6 +246,7 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
   // interior points go onto the surface.
   scheme::EntityMesh out;
   std::vector<Vec3> normals;
+  std::vector<Vec2> node_uv;  // where each node's projections start (a B-spline's Newton)
   std::vector<bool> fixed;
   std::unordered_map<int, int> local_of_global;
   std::vector<int> local_of_point(fill.ij.size(), -1);
@@ -260,12 +261,16 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
       const int local = out.add(db.node(g), g);
       local_of_global.emplace(g, local);
       local_of_point[p] = local;
-      normals.push_back(geometry.project(db.node(g)).normal);
+      const geom::SurfaceProjection pr = geometry.project_near(db.node(g), fill.uv[p]);
+      normals.push_back(pr.normal);
+      node_uv.push_back(pr.uv);
       fixed.push_back(true);
     } else {
-      const geom::SurfaceProjection pr = geometry.project(geometry.point(fill.uv[p]));
+      const geom::SurfaceProjection pr =
+          geometry.project_near(geometry.point(fill.uv[p]), fill.uv[p]);
       local_of_point[p] = out.add(pr.point);
       normals.push_back(pr.normal);
+      node_uv.push_back(pr.uv);
       fixed.push_back(false);
     }
   }
@@ -298,7 +303,12 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
                           : volume_placed && has_graded_curve(db, plan, 1.5);
   if (!keep) {
     smooth_quads(
-        out.coords, normals, fixed, out.quads, [&](const Vec3& x) { return geometry.project(x); },
+        out.coords, normals, fixed, out.quads,
+        [&](const Vec3& x, size_t node) {
+          const geom::SurfaceProjection pr = geometry.project_near(x, node_uv[node]);
+          node_uv[node] = pr.uv;
+          return pr;
+        },
         options_.smooth);
   }
   for (size_t q = 0; q < out.quads.size(); ++q) {

@@ -135,7 +135,7 @@ TEST(SubmapSmooth, SmoothingNeverInvertsAndKeepsTopology) {
       quads.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
   }
   std::vector<Vec3> normals(x.size(), Vec3(0, 0, 1));
-  const auto plane = [](const Vec3& p) {
+  const auto plane = [](const Vec3& p, size_t) {
     return geom::SurfaceProjection{Vec3(p.x(), p.y(), 0), Vec3(0, 0, 1), Vec2(p.x(), p.y()),
                                    std::abs(p.z())};
   };
