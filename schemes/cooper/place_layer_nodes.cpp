@@ -165,6 +165,11 @@ bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& wh
   // per layer; a failing layer is reported by its index (the lowest one), so
   // the message does not depend on scheduling either.
   std::vector<char> failed(J + 1, 0);
+  // Column 3 j + d: coordinate d of layer j's blended boundary residuals,
+  // for the layers whose rings no map explains (`corrected`).
+  std::vector<char> corrected(J + 1, 0);
+  Eigen::MatrixXd residual_columns(static_cast<Eigen::Index>(B),
+                                   3 * static_cast<Eigen::Index>(J + 1));
   tbb::parallel_for(std::size_t{1}, J, [&](std::size_t j) {
     const Vec3* layer = &ring[j * B];
     const AffineMap from_upper = least_squares_map(upper, layer, B, in.loop_starts);
@@ -189,10 +194,43 @@ bool blend_with(const SweepInput& in, std::vector<Vec3>& points, std::string& wh
     Vec3* out = &points[j * n];
     for (std::size_t i = B; i < n; ++i) out[i] = Au * in.source[i] + Al * target[i] + c;
     if (cu || cl) {
-      for (std::size_t k = 0; k < B; ++k) ru[k] = (1.0 - sj) * ru[k] + sj * rl[k];
-      std::vector<Vec3> r;
-      field.get().apply(ru, r);
-      for (std::size_t i = B; i < n; ++i) out[i] += r[i];
+      corrected[j] = 1;
+      for (std::size_t k = 0; k < B; ++k) {
+        residual_columns.block<1, 3>(static_cast<Eigen::Index>(k),
+                                     3 * static_cast<Eigen::Index>(j)) =
+            ((1.0 - sj) * ru[k] + sj * rl[k]).transpose();
+      }
+    }
+  });
+  // The residuals carried inside, several layers per pass over the weights.
+  // The groups follow the layer order (not the scheduling), so the values
+  // are the same for any thread count.
+  std::vector<std::size_t> to_correct;
+  for (std::size_t j = 1; j < J; ++j) {
+    if (corrected[j] && !failed[j]) to_correct.push_back(j);
+  }
+  constexpr std::size_t kLayersPerPass = 16;
+  const std::size_t passes = (to_correct.size() + kLayersPerPass - 1) / kLayersPerPass;
+  // Built here, outside the loop: its rows are built in parallel, and a
+  // thread waiting for them may take another pass of the loop, which must
+  // not wait for the field it is building.
+  if (passes > 0) field.get();
+  tbb::parallel_for(std::size_t{0}, passes, [&](std::size_t pass) {
+    const std::size_t first = pass * kLayersPerPass;
+    const std::size_t count = std::min(kLayersPerPass, to_correct.size() - first);
+    Eigen::MatrixXd r(static_cast<Eigen::Index>(B), 3 * static_cast<Eigen::Index>(count));
+    for (std::size_t t = 0; t < count; ++t) {
+      r.middleCols<3>(3 * static_cast<Eigen::Index>(t)) =
+          residual_columns.middleCols<3>(3 * static_cast<Eigen::Index>(to_correct[first + t]));
+    }
+    const Eigen::MatrixXd inside = field.get().interior(r);
+    for (std::size_t t = 0; t < count; ++t) {
+      Vec3* out = &points[to_correct[first + t] * n];
+      const Eigen::Index c = 3 * static_cast<Eigen::Index>(t);
+      for (std::size_t i = B; i < n; ++i) {
+        const Eigen::Index row = static_cast<Eigen::Index>(i - B);
+        out[i] += Vec3(inside(row, c), inside(row, c + 1), inside(row, c + 2));
+      }
     }
   });
   for (std::size_t j = 1; j < J; ++j) {

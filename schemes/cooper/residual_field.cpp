@@ -1,5 +1,8 @@
 #include "schemes/cooper/residual_field.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -22,12 +25,17 @@ ResidualField::ResidualField(const std::vector<Vec3>& points, std::size_t bounda
   const std::size_t n = points_.size();
   if (n <= boundary_ || boundary_ == 0 || (n - boundary_) * boundary_ > kMaxKeptWeights) return;
   weights_.resize((n - boundary_) * boundary_);
-  for (std::size_t i = boundary_; i < n; ++i) {
-    double* row = &weights_[(i - boundary_) * boundary_];
-    double sum = 0;
-    for (std::size_t k = 0; k < boundary_; ++k) sum += weight(points_[i], points_[k]);
-    for (std::size_t k = 0; k < boundary_; ++k) row[k] = weight(points_[i], points_[k]) / sum;
-  }
+  // Rows are independent: each is the same for any thread count.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(boundary_, n, 256),
+                    [&](const tbb::blocked_range<std::size_t>& rows) {
+                      for (std::size_t i = rows.begin(); i != rows.end(); ++i) {
+                        double* row = &weights_[(i - boundary_) * boundary_];
+                        double sum = 0;
+                        for (std::size_t k = 0; k < boundary_; ++k)
+                          sum += row[k] = weight(points_[i], points_[k]);
+                        for (std::size_t k = 0; k < boundary_; ++k) row[k] /= sum;
+                      }
+                    });
 }
 
 double residual_tolerance(const Vec3* points, std::size_t count) {
@@ -61,6 +69,26 @@ void ResidualField::apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) co
     }
     out[i] = sum;
   }
+}
+
+Eigen::MatrixXd ResidualField::interior(const Eigen::MatrixXd& r) const {
+  const std::size_t n = points_.size();
+  const Eigen::Index inner = static_cast<Eigen::Index>(n - std::min(n, boundary_));
+  const Eigen::Index b = static_cast<Eigen::Index>(boundary_);
+  if (b == 0) return Eigen::MatrixXd::Zero(inner, r.cols());
+  if (!weights_.empty()) {
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const RowMajor> w(weights_.data(), inner, b);
+    return w * r;
+  }
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(inner, r.cols());
+  Eigen::VectorXd w(b);
+  for (Eigen::Index i = 0; i < inner; ++i) {
+    const Vec3& x = points_[boundary_ + static_cast<std::size_t>(i)];
+    for (Eigen::Index k = 0; k < b; ++k) w(k) = weight(x, points_[static_cast<std::size_t>(k)]);
+    out.row(i) = (w.transpose() * r) / w.sum();
+  }
+  return out;
 }
 
 // cite: Blacker 1996, sec. 6.1 (least-squares weighted residuals).

@@ -10,6 +10,8 @@
 
 #include "schemes/cooper/least_squares_map.h"
 
+#include <Eigen/Core>
+
 #include <cstddef>
 #include <vector>
 
@@ -28,6 +30,15 @@ class ResidualField {
   /// Residuals of every node from those of the boundary nodes: out[k] = r[k]
   /// for k < boundary, the weighted mean of r at the interior nodes.
   void apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) const;
+
+  /// apply() for several fields at once: column c of `r` (boundary x m) is
+  /// one coordinate of one field's boundary residuals; returns the
+  /// (n - boundary) x m interior values. One pass over the weights serves
+  /// all m columns (a matrix product): a large cap's weights do not stay in
+  /// cache, and reading them once per layer was most of a curved barrel's
+  /// sweep (issue 20). Each output depends on `r` and its column count
+  /// only, not on the thread count.
+  Eigen::MatrixXd interior(const Eigen::MatrixXd& r) const;
 
   std::size_t boundary() const { return boundary_; }
 

@@ -94,5 +94,33 @@ TEST(ResidualField, AMapThatExplainsTheBoundaryMovesNothing) {
   for (std::size_t i = 0; i < placed.size(); ++i) EXPECT_EQ(placed[i], mapped[i]) << i;
 }
 
+// Several fields in one pass over the weights (the layers of a barrel,
+// issue 20) give what one field at a time gives, column by column.
+TEST(ResidualField, SeveralFieldsAtOnceEqualOneAtATime) {
+  const Grid g;
+  const ResidualField field(g.points, g.boundary);
+  const Eigen::Index b = static_cast<Eigen::Index>(g.boundary);
+  Eigen::MatrixXd r(b, 6);
+  for (Eigen::Index k = 0; k < b; ++k) {
+    const Vec3& x = g.points[static_cast<std::size_t>(k)];
+    r.row(k) << x.x() * x.y(), std::sin(x.x()), 0.3, x.y() * x.y(), -x.x(), std::cos(x.y());
+  }
+  const Eigen::MatrixXd inside = field.interior(r);
+  ASSERT_EQ(inside.rows(), static_cast<Eigen::Index>(g.points.size() - g.boundary));
+  ASSERT_EQ(inside.cols(), 6);
+  for (int f = 0; f < 2; ++f) {
+    std::vector<Vec3> boundary_r(g.boundary), out;
+    for (Eigen::Index k = 0; k < b; ++k)
+      boundary_r[static_cast<std::size_t>(k)] = r.block<1, 3>(k, 3 * f).transpose();
+    field.apply(boundary_r, out);
+    for (std::size_t i = g.boundary; i < g.points.size(); ++i) {
+      const Eigen::Index row = static_cast<Eigen::Index>(i - g.boundary);
+      for (int d = 0; d < 3; ++d) EXPECT_NEAR(inside(row, 3 * f + d), out[i][d], 1e-14) << i;
+    }
+  }
+  // A constant residual is carried unchanged (the weights sum to one).
+  for (Eigen::Index row = 0; row < inside.rows(); ++row) EXPECT_NEAR(inside(row, 2), 0.3, 1e-14);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
