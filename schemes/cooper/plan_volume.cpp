@@ -222,11 +222,15 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   p.volume = facts.volume;
   p.elements = in.elements;
   p.candidate = cand.label;
-  p.facts = facts;
+  // Most sortings are refused, many by their first step: a refusal moves
+  // the plan out instead of copying it, and the facts (the volume's maps of
+  // faces and curves, most of a plan's size) are copied in only once the
+  // sorting has its barrels and cap roles (a search of decompositions
+  // evaluates thousands of sortings, issue 17).
   auto fail = [&](int stage, const std::string& why) {
     p.why = cand.label + ": " + why;
     p.stage = stage;
-    return p;
+    return std::move(p);
   };
   p.lattice = side_lattice(facts, cand.caps);
   if (!p.lattice.ok) return fail(1, p.lattice.why);
@@ -251,6 +255,7 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   p.roles =
       cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
+  p.facts = facts;
   if (const std::string why = seamed_target_from_far_source(model, p); !why.empty())
     return fail(5, why);
   if (p.down) {
