@@ -150,6 +150,17 @@ std::string knife_edge_text(const VolumeFacts& facts, int curve) {
 
 }  // namespace
 
+void type_corners(FaceFact& f) {
+  f.directions.clear();
+  f.directions_why.clear();
+  f.ambiguous_corners = false;
+  if (f.loops.size() != 1) return;
+  f.directions = loop_directions(f, f.directions_why);
+  // Corners between two types wait for the neighbours (side_corner_types.h).
+  f.ambiguous_corners = has_ambiguous_corner(f.angles) &&
+                        f.angles.size() == f.loops.front().size() && can_turn_four(f.angles);
+}
+
 // cite: Blacker 1996, sec. 3 (side faces jointly submappable, Fig. 4/5).
 SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   SideLattice out;
@@ -176,17 +187,13 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
       out.why = "surface " + std::to_string(f.id) + " cannot be a side (" + f.submap_why + ")";
       return out;
     }
-    std::string why;
-    auto d = loop_directions(f, why);
-    // Corners between two types wait for the neighbours (side_corner_types.h).
-    if (has_ambiguous_corner(f.angles) && f.angles.size() == f.loops.front().size() &&
-        can_turn_four(f.angles)) {
+    if (f.ambiguous_corners) {
       ambiguous.insert(f.id);
-    } else if (d.empty()) {
-      out.why = why;
+    } else if (f.directions.empty()) {
+      out.why = f.directions_why;
       return out;
     }
-    dirs[f.id] = std::move(d);
+    dirs[f.id] = f.directions;
     out.sides.push_back(f.id);
   }
   // Roles: parity of the lattice direction that runs along, per face.

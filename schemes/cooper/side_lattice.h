@@ -112,6 +112,12 @@ std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
 /// sin(angle) (0.17 at 10 degrees).
 inline constexpr double kMinSideDihedral = 10.0;
 
+/// Fills f.directions, f.directions_why and f.ambiguous_corners from
+/// f.angles (t = END 1, SIDE 0, CORNER -1 per corner, d_0 = 0, d_k = d_{k-1}
+/// + t_k mod 4; none when a corner has no type, is a REVERSAL, or the turns
+/// do not close). gather_facts() calls it for every single-loop face.
+void type_corners(FaceFact& f);
+
 /// Roles, chains, contacts and level classes for `caps` (every other face
 /// of the volume is a side). Not ok when a side has several loops, is not
 /// submappable, has a corner without a type or a REVERSAL, its roles cannot

@@ -97,6 +97,7 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     } else {
       f.submap_why = "it has " + std::to_string(s.loops.size()) + " loops; a side face needs one";
     }
+    type_corners(f);
     out.faces.push_back(std::move(f));
   }
   for (const auto& [curve, faces] : curve_faces) {

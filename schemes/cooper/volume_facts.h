@@ -40,6 +40,14 @@ struct FaceFact {
   /// Other volumes it bounds (an interface of an assembly): its mesh is
   /// shared, so it must come from a surface scheme, never from this sweep.
   int other_volumes = 0;
+  /// Single-loop faces, from `angles` (type_corners() in side_lattice.h):
+  /// the lattice direction of each use from the corners' own types (empty,
+  /// with `directions_why`, when they give none), and whether a corner fits
+  /// two types so that the neighbours decide. Kept here because every
+  /// sorting of the faces into caps and sides asks again.
+  std::vector<int> directions;
+  std::string directions_why;
+  bool ambiguous_corners = false;
 };
 
 struct CurveFact {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "framework/scheme/vertex_angles.h"
+#include "schemes/cooper/side_lattice.h"
 #include "schemes/cooper/volume_facts.h"
 
 #include <Eigen/Geometry>
@@ -99,6 +100,7 @@ inline VolumeFacts polyhedron_facts(const std::vector<PolyFace>& faces) {
     } else {
       ff.submap_why = "it has several loops";
     }
+    type_corners(ff);
     out.faces.push_back(ff);
   }
   // Dihedral angles: the angle inside the volume at each curve of two faces.

@@ -4,6 +4,7 @@
 // curves (gmsh_as1-tu-203, volume 6). The two polylines of one circle
 // differ by their chords' sagittas; that is not a cut, so the underside is
 // meshed by its surface scheme and the volume beside it can take it.
+#include "schemes/cooper/side_lattice.h"
 #include "schemes/cooper/cap_roles.h"
 
 #include <gtest/gtest.h>
@@ -64,6 +65,7 @@ struct FactsBuilder {
     f.loops = std::move(loops);
     f.planar = true;
     f.normal = normal;
+    type_corners(f);
     facts.faces.push_back(f);
   }
 };
