@@ -166,20 +166,17 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   SideLattice out;
   std::vector<std::pair<CapContact, double>> tangent;  // contacts at ~180 degrees, and the angle
   out.caps.assign(caps.begin(), caps.end());
-  // Cap curves: (curve -> (cap, loop index)).
-  std::map<int, std::vector<std::pair<int, int>>> cap_curves;
   for (int c : caps) {
-    const FaceFact* f = facts.face(c);
-    if (!f) {
+    if (!facts.face(c)) {
       out.why =
           "surface " + std::to_string(c) + " does not bound volume " + std::to_string(facts.volume);
       return out;
     }
-    for (size_t l = 0; l < f->loops.size(); ++l) {
-      for (const UseFact& u : f->loops[l]) cap_curves[u.curve].push_back({c, static_cast<int>(l)});
-    }
   }
-  std::map<int, std::vector<int>> dirs;  // side face -> lattice direction per use
+  // Side face -> lattice direction per use: the face's own (FaceFact), or
+  // its typing with the neighbours (`retyped`).
+  std::map<int, const std::vector<int>*> dirs;
+  std::map<int, std::vector<int>> retyped;
   std::set<int> ambiguous;               // sides typed once their neighbours are
   for (const FaceFact& f : facts.faces) {
     if (caps.count(f.id)) continue;
@@ -193,8 +190,17 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
       out.why = f.directions_why;
       return out;
     }
-    dirs[f.id] = f.directions;
+    dirs[f.id] = &f.directions;
     out.sides.push_back(f.id);
+  }
+  // Cap curves: (curve -> (cap, loop index)); after the sides, which refuse
+  // most sortings (a face of several loops that is not a cap).
+  std::map<int, std::vector<std::pair<int, int>>> cap_curves;
+  for (int c : caps) {
+    const FaceFact* f = facts.face(c);
+    for (size_t l = 0; l < f->loops.size(); ++l) {
+      for (const UseFact& u : f->loops[l]) cap_curves[u.curve].push_back({c, static_cast<int>(l)});
+    }
   }
   // Roles: parity of the lattice direction that runs along, per face.
   std::map<int, int> along_parity;  // face -> 0 or 1
@@ -220,7 +226,7 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
         int parity = -1;
         if (ambiguous.count(s)) {
           if (const auto t = type_side_corners(facts.face(s)->angles, decided)) {
-            dirs[s] = t->directions;
+            dirs[s] = &(retyped[s] = t->directions);
             parity = t->parity;
             for (size_t k = 0; k < loop.size(); ++k) {
               const auto own = scheme::classify_angle(facts.face(s)->angles[k]);
@@ -229,7 +235,7 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
             }
           }
         }
-        const auto& d = dirs.at(s);
+        const std::vector<int>& d = *dirs.at(s);
         if (parity < 0) {
           if (d.empty()) {
             out.why = "the corners of side surface " + std::to_string(s) +
@@ -301,7 +307,7 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   // Chains, contacts, stacked curves.
   for (int s : out.sides) {
     const auto& loop = facts.face(s)->loops.front();
-    const auto& d = dirs.at(s);
+    const std::vector<int>& d = *dirs.at(s);
     const int parity = along_parity.at(s);
     const size_t n = loop.size();
     auto along_at = [&](size_t k) { return d[k % n] % 2 == parity; };
