@@ -52,23 +52,14 @@ double residual_tolerance(const Vec3* points, std::size_t count) {
 void ResidualField::apply(const std::vector<Vec3>& r, std::vector<Vec3>& out) const {
   const std::size_t n = points_.size();
   out.assign(n, Vec3::Zero());
-  for (std::size_t k = 0; k < boundary_ && k < r.size(); ++k) out[k] = r[k];
-  for (std::size_t i = boundary_; i < n; ++i) {
-    Vec3 sum = Vec3::Zero();
-    if (!weights_.empty()) {
-      const double* row = &weights_[(i - boundary_) * boundary_];
-      for (std::size_t k = 0; k < boundary_; ++k) sum += row[k] * r[k];
-    } else {
-      double wsum = 0;
-      for (std::size_t k = 0; k < boundary_; ++k) {
-        const double w = weight(points_[i], points_[k]);
-        sum += w * r[k];
-        wsum += w;
-      }
-      sum /= wsum;
-    }
-    out[i] = sum;
+  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(boundary_), 3);
+  for (std::size_t k = 0; k < boundary_ && k < r.size(); ++k) {
+    out[k] = r[k];
+    columns.row(static_cast<Eigen::Index>(k)) = r[k].transpose();
   }
+  const Eigen::MatrixXd inside = interior(columns);
+  for (std::size_t i = boundary_; i < n; ++i)
+    out[i] = inside.row(static_cast<Eigen::Index>(i - boundary_)).transpose();
 }
 
 Eigen::MatrixXd ResidualField::interior(const Eigen::MatrixXd& r) const {

@@ -91,7 +91,7 @@ class FaceSurface final : public geom::SurfaceGeometry {
     projector_->d1(uv.x(), uv.y(), s, su, sv);
     out.point = to_vec3(s);
     const gp_Vec n = su.Crossed(sv);
-    if (n.Magnitude() > 1e-12 * su.Magnitude() * sv.Magnitude() && n.Magnitude() > 0.0) {
+    if (n.Magnitude() > 1e-12 * su.Magnitude() * sv.Magnitude()) {
       const Vec3 unit = to_vec3(n) / n.Magnitude();
       out.normal = flip_ ? Vec3(-unit) : unit;
     } else {
