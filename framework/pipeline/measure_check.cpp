@@ -277,29 +277,16 @@ double MeasureCheck::deviation() const {
 }
 
 double hex_volume(const std::array<Vec3, 8>& p) {
-  // x(u,v,w) = p0 + b u + c v + d w + e uv + f uw + g vw + h uvw on the unit
-  // cube; x_u depends on (v,w) only, x_v on (u,w), x_w on (u,v), so each
-  // takes 4 values at the 2 x 2 x 2 Gauss points, built once (half the work
-  // of forming the three derivatives at every point; 8 % of a 1 M-hex run).
-  const Vec3 b = p[1] - p[0], c = p[3] - p[0], d = p[4] - p[0];
-  const Vec3 e = (p[2] - p[3]) - b;
-  const Vec3 f = (p[5] - p[4]) - b;
-  const Vec3 g = (p[7] - p[4]) - c;
-  const Vec3 h = (p[6] - p[7]) - (p[5] - p[4]) - (p[2] - p[3]) + b;
-  const double q[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-  Vec3 xu[2][2], xv[2][2], xw[2][2];
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) {
-      const double s = q[i], t = q[j], st = s * t;
-      xu[i][j] = b + s * e + t * f + st * h;  // at v = s, w = t
-      xv[i][j] = c + s * e + t * g + st * h;  // at u = s, w = t
-      xw[i][j] = d + s * f + t * g + st * h;  // at u = s, v = t
-    }
-  double v = 0;
-  for (int a = 0; a < 2; ++a)
-    for (int bb = 0; bb < 2; ++bb)
-      for (int cc = 0; cc < 2; ++cc) v += xu[bb][cc].dot(xv[a][cc].cross(xw[a][bb]));
-  return 0.125 * v;
+  // The integral of det J over the trilinear cube in closed form: three
+  // triple products on the long diagonal 0-6, as in LLNL's hydro codes
+  // (Grandy 1997; exact for bilinear faces). A third of the work of the
+  // 2 x 2 x 2 Gauss rule, which is exact too; checked against it in tests.
+  auto triple = [](const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)); };
+  const Vec3 d20 = p[2] - p[0], d50 = p[5] - p[0], d70 = p[7] - p[0];
+  return (triple((p[3] - p[1]) + (p[7] - p[2]), p[6] - p[3], d20) +
+          triple((p[4] - p[3]) + (p[5] - p[7]), p[6] - p[4], d70) +
+          triple((p[1] - p[4]) + (p[2] - p[5]), p[6] - p[1], d50)) /
+         12.0;
 }
 
 double wedge_volume(const std::array<Vec3, 6>& p) {

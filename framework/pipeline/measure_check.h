@@ -50,7 +50,7 @@ struct MeasureCheck {
 std::vector<MeasureCheck> compare_measures(const geom::Model& model, const mesh::MeshDB& db);
 
 /// Volume of a hexahedron (Exodus node order), exact for the trilinear map
-/// (2 x 2 x 2 Gauss points); negative when inverted.
+/// (closed form); negative when inverted.
 double hex_volume(const std::array<geom::Vec3, 8>& x);
 /// Volume of a wedge (Exodus node order), exact for its linear-by-linear map.
 double wedge_volume(const std::array<geom::Vec3, 6>& x);
