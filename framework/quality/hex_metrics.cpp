@@ -25,6 +25,11 @@ constexpr int kCorner[8][4] = {{0, 1, 3, 4}, {1, 2, 0, 5}, {2, 3, 1, 6}, {3, 0, 
 constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
+// Corner i's columns as edges of kEdges: a bottom corner (i < 4) reads one
+// of its three edges backwards, so its determinant is the negated one.
+constexpr int kCornerEdges[8][3] = {{0, 3, 8}, {1, 0, 9}, {2, 1, 10}, {3, 2, 11},
+                                    {7, 4, 8}, {4, 5, 9}, {5, 6, 10}, {6, 7, 11}};
+
 struct Triple {
   Vector3d a, b, c;
   double det() const { return a.dot(b.cross(c)); }
@@ -47,24 +52,38 @@ Triple cross_derivatives(const HexNodes& p) {
           (p[0] + p[1] + p[6] + p[7]) - (p[2] + p[3] + p[4] + p[5])};
 }
 
-// det with unit columns; nullopt-like flag through `ok`.
-double scaled_det(const Triple& t, bool& ok) {
+// det with unit columns, squared with its sign: det |det| / (l1 l2 l3), so
+// that the minimum over the nine frames costs one square root, not nine
+// (x -> x |x| keeps the order). A zero edge sets `degenerate`; no early
+// exit, so the nine frames' divisions overlap.
+double signed_square_scaled_det(const Triple& t, bool& degenerate) {
   const double l1 = t.a.squaredNorm(), l2 = t.b.squaredNorm(), l3 = t.c.squaredNorm();
-  if (l1 <= kTiny || l2 <= kTiny || l3 <= kTiny) {
-    ok = false;
-    return 0.0;
-  }
-  return t.det() / std::sqrt(l1 * l2 * l3);
+  degenerate |= (l1 <= kTiny) | (l2 <= kTiny) | (l3 <= kTiny);
+  const double det = t.det();
+  return det * std::abs(det) / (l1 * l2 * l3);
 }
 
 }  // namespace
 
 double hex_scaled_jacobian(const HexNodes& p) {
-  bool ok = true;
-  double best = scaled_det(principal_axes(p), ok);
-  for (int i = 0; i < 8 && ok; ++i) best = std::min(best, scaled_det(corner(p, i), ok));
-  if (!ok) return 0.0;  // deviation from Verdict (DBL_MAX), see header
-  return best;
+  // The corners' frames from the twelve edges, each edge and its squared
+  // length formed once (every edge is in two frames).
+  Vector3d edge[12];
+  double length2[12];
+  bool degenerate = false;
+  for (int e = 0; e < 12; ++e) {
+    edge[e] = p[kEdges[e][1]] - p[kEdges[e][0]];
+    length2[e] = edge[e].squaredNorm();
+    degenerate |= length2[e] <= kTiny;
+  }
+  double best = signed_square_scaled_det(principal_axes(p), degenerate);
+  for (int i = 0; i < 8; ++i) {
+    const int* k = kCornerEdges[i];
+    const double det = (i < 4 ? -1.0 : 1.0) * edge[k[0]].dot(edge[k[1]].cross(edge[k[2]]));
+    best = std::min(best, det * std::abs(det) / (length2[k[0]] * length2[k[1]] * length2[k[2]]));
+  }
+  if (degenerate) return 0.0;  // deviation from Verdict (DBL_MAX), see header
+  return std::copysign(std::sqrt(std::abs(best)), best);
 }
 
 double hex_jacobian(const HexNodes& p) {
