@@ -254,14 +254,26 @@ FaceFinder::FaceFinder(const mesh::VolumeMeshData& vol, const FaceTable& hex_fac
       }
     }
   });
-  for (const auto& chunk : found) {
-    for (const auto& [key, hit] : chunk) faces_.emplace(key, hit);  // keeps the first
-  }
+  // One sorted array instead of a tree: a stable sort keeps the chunks'
+  // order among equal keys, and the first of each run is the one kept.
+  size_t count = 0;
+  for (const auto& chunk : found) count += chunk.size();
+  faces_.reserve(count);
+  for (const auto& chunk : found) faces_.insert(faces_.end(), chunk.begin(), chunk.end());
+  auto by_key = [](const Candidate& a, const Candidate& b) { return a.first < b.first; };
+  std::stable_sort(faces_.begin(), faces_.end(), by_key);
+  faces_.erase(
+      std::unique(faces_.begin(), faces_.end(),
+                  [](const Candidate& a, const Candidate& b) { return a.first == b.first; }),
+      faces_.end());
 }
 
 FaceHit FaceFinder::find(const int* nodes, int n) const {
-  auto it = faces_.find(key_of(nodes, n));
-  return it == faces_.end() ? FaceHit{} : it->second;
+  const Key key = key_of(nodes, n);
+  auto it =
+      std::lower_bound(faces_.begin(), faces_.end(), key,
+                       [](const std::pair<Key, FaceHit>& a, const Key& k) { return a.first < k; });
+  return it == faces_.end() || it->first != key ? FaceHit{} : it->second;
 }
 
 const FaceTable& exodus_hex_sides() {
@@ -329,12 +341,35 @@ std::map<int, std::vector<FaceHit>> surface_faces(const mesh::MeshDB& db, const 
 }
 
 std::vector<int> surface_node_set(const mesh::SurfaceMeshData& s) {
+  // A bit per node between the smallest and largest, read out in order: a
+  // surface's nodes are a fraction of a big mesh's, and sorting every
+  // element corner (four per quad) cost more than the scan of the bits.
+  int lo = std::numeric_limits<int>::max(), hi = -1;
+  auto bounds = [&](const auto& elems) {
+    for (const auto& e : elems)
+      for (int n : e) lo = std::min(lo, n), hi = std::max(hi, n);
+  };
+  bounds(s.quads);
+  bounds(s.tris);
   std::vector<int> nodes;
-  nodes.reserve(s.quads.size() * 4 + s.tris.size() * 3);
-  for (const auto& q : s.quads) nodes.insert(nodes.end(), q.begin(), q.end());
-  for (const auto& t : s.tris) nodes.insert(nodes.end(), t.begin(), t.end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  if (hi < lo) return nodes;
+  std::vector<std::uint64_t> bits(static_cast<size_t>(hi - lo) / 64 + 1, 0);
+  size_t count = 0;
+  auto mark = [&](const auto& elems) {
+    for (const auto& e : elems)
+      for (int n : e) {
+        const auto i = static_cast<size_t>(n - lo);
+        const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+        count += (bits[i / 64] & bit) == 0;
+        bits[i / 64] |= bit;
+      }
+  };
+  mark(s.quads);
+  mark(s.tris);
+  nodes.reserve(count);
+  for (size_t w = 0; w < bits.size(); ++w)
+    for (std::uint64_t b = bits[w]; b != 0; b &= b - 1)
+      nodes.push_back(lo + static_cast<int>(w * 64 + static_cast<size_t>(__builtin_ctzll(b))));
   return nodes;
 }
 

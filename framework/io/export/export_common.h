@@ -11,6 +11,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cooperage::io::detail {
@@ -73,7 +74,7 @@ class FaceFinder {
  private:
   using Key = std::array<int, 4>;
   static Key key_of(const int* nodes, int n);
-  std::map<Key, FaceHit> faces_;
+  std::vector<std::pair<Key, FaceHit>> faces_;  ///< sorted by key, keys unique
 };
 
 /// Side tables of the formats (0-based local nodes).
