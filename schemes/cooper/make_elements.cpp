@@ -65,21 +65,24 @@ double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<me
   const Worst worst = tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, nh + wedges.size(), 4096), Worst{},
       [&](const tbb::blocked_range<std::size_t>& range, Worst w) {
-        for (std::size_t e = range.begin(); e != range.end(); ++e) {
-          double sj;
-          if (e < nh) {
-            quality::HexNodes h;
-            for (std::size_t c = 0; c < 8; ++c)
-              h[c] = points[static_cast<std::size_t>(hexes[e][c])];
-            sj = quality::hex_scaled_jacobian(h);
-          } else {
+        // Hexes go through the batched kernel, 512 at a time.
+        constexpr std::size_t kBatch = 512;
+        double sj[kBatch];
+        for (std::size_t first = range.begin(); first < range.end(); first += kBatch) {
+          const std::size_t last = std::min(range.end(), first + kBatch);
+          const std::size_t hex_end = std::clamp(nh, first, last);
+          if (hex_end > first)
+            quality::hex_scaled_jacobians(points.data(), hexes.data() + first, hex_end - first, sj);
+          for (std::size_t e = hex_end; e < last; ++e) {
             quality::WedgeNodes p;
             const auto& wedge = wedges[e - nh];
             for (std::size_t c = 0; c < 6; ++c) p[c] = points[static_cast<std::size_t>(wedge[c])];
-            sj = quality::wedge_scaled_jacobian(p);
+            sj[e - first] = quality::wedge_scaled_jacobian(p);
           }
-          if (values) (*values)[e] = sj;
-          w.add(sj, static_cast<long>(e), limit);
+          for (std::size_t e = first; e < last; ++e) {
+            if (values) (*values)[e] = sj[e - first];
+            w.add(sj[e - first], static_cast<long>(e), limit);
+          }
         }
         return w;
       },

@@ -151,6 +151,33 @@ TEST(HexMetrics, ScaledJacobianEqualsItsDefinitionOnDistortedHexes) {
   EXPECT_GT(inverted, 50);  // the sample reaches inverted corners
 }
 
+TEST(HexMetrics, BatchedScaledJacobiansEqualOneAtATime) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.6, 0.6);
+  std::vector<Vector3d> points;
+  std::vector<std::array<int, 8>> hexes;
+  for (int trial = 0; trial < 101; ++trial) {  // odd: the last hex has no partner
+    std::array<int, 8> h;
+    for (int c = 0; c < 8; ++c) {
+      h[static_cast<size_t>(c)] = static_cast<int>(points.size());
+      points.push_back(box(2, 1, 1)[static_cast<size_t>(c)] +
+                       Vector3d(jitter(rng), jitter(rng), jitter(rng)));
+    }
+    std::swap(h[0], h[trial % 8]);  // hexes in any node layout
+    hexes.push_back(h);
+  }
+  hexes.push_back({0, 0, 0, 0, 0, 0, 0, 0});  // collapsed: 0, as one at a time
+  std::vector<double> batch(hexes.size());
+  hex_scaled_jacobians(points.data(), hexes.data(), hexes.size(), batch.data());
+  for (size_t e = 0; e < hexes.size(); ++e) {
+    HexNodes p;
+    for (int c = 0; c < 8; ++c)
+      p[static_cast<size_t>(c)] = points[static_cast<size_t>(hexes[e][c])];
+    EXPECT_EQ(batch[e], hex_scaled_jacobian(p)) << "hex " << e;
+  }
+  EXPECT_EQ(batch.back(), 0.0);
+}
+
 TEST(HexMetrics, RotationAndScalingInvariance) {
   std::mt19937 rng(20240611);
   std::uniform_real_distribution<double> jitter(-0.15, 0.15);
