@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <set>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -44,7 +43,7 @@ double area_2d(const SweepState& s, size_t b, const std::array<int, N>& f) {
 // correspond one for one (one was projected from the other).
 template <size_t N>
 void correspond(const std::vector<std::array<int, N>>& up,
-                const std::vector<std::array<int, N>>& lo, std::map<int, int>& below, int vid) {
+                const std::vector<std::array<int, N>>& lo, NodeImage& below, int vid) {
   if (up.size() != lo.size()) fail(vid, "matched subcaps carry different meshes");
   for (size_t k = 0; k < up.size(); ++k) {
     for (size_t c = 0; c < N; ++c) {
@@ -61,7 +60,7 @@ void correspond(const std::vector<std::array<int, N>>& up,
 // elements are renumbered in place. Every slot is fixed before the parallel
 // loops run, so the mesh is the same for any thread count.
 void append_sweep(SweepState& s, const BarrelState& st, const std::vector<int>& cap,
-                  const std::map<int, int>& below, SweepResult& sweep) {
+                  const NodeImage& below, SweepResult& sweep) {
   const size_t n = cap.size();
   const size_t B = st.ribs.size();
   const size_t J = static_cast<size_t>(st.layers);
@@ -156,10 +155,16 @@ void append_sweep(SweepState& s, const BarrelState& st, const std::vector<int>& 
 void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
   for (size_t b = 0; b < s.barrels.size(); ++b) {
     BarrelState& st = s.barrels[b];
-    std::map<int, int> below;
-    for (const auto& [u, l] : st.rib_pairs) below[u] = l;
     std::vector<mesh::Quad> quads;
     std::vector<mesh::Tri> tris;
+    size_t corners = st.rib_pairs.size();
+    for (const auto& [u, l] : st.matches) {
+      const Piece& pu = s.pieces[static_cast<size_t>(u)];
+      corners += 4 * pu.quads.size() + 3 * pu.tris.size();
+    }
+    NodeImage below;
+    below.reserve(corners);
+    for (const auto& [u, l] : st.rib_pairs) below[u] = l;
     for (const auto& [u, l] : st.matches) {
       const Piece& pu = s.pieces[static_cast<size_t>(u)];
       const Piece& pl = s.pieces[static_cast<size_t>(l)];
@@ -175,14 +180,18 @@ void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports) {
     in.boundary = static_cast<int>(st.ribs.size());
     in.loop_starts = st.loop_starts;
     std::vector<int> cap;
-    std::map<int, int> index;
+    std::vector<int> rest;  // the faces' nodes, ascending
+    rest.reserve(4 * quads.size() + 3 * tris.size());
+    for (const auto& q : quads) rest.insert(rest.end(), q.begin(), q.end());
+    for (const auto& t : tris) rest.insert(rest.end(), t.begin(), t.end());
+    std::sort(rest.begin(), rest.end());
+    rest.erase(std::unique(rest.begin(), rest.end()), rest.end());
+    NodeImage index;
+    index.reserve(st.ribs.size() + rest.size());
     for (const auto& rib : st.ribs) {
       index.emplace(s.existing(rib.front()), static_cast<int>(cap.size()));
       cap.push_back(s.existing(rib.front()));
     }
-    std::set<int> rest;
-    for (const auto& q : quads) rest.insert(q.begin(), q.end());
-    for (const auto& t : tris) rest.insert(t.begin(), t.end());
     for (int n : rest) {
       if (index.emplace(n, static_cast<int>(cap.size())).second) cap.push_back(n);
     }

@@ -22,6 +22,10 @@
 
 namespace cooperage::cooper::detail {
 
+/// Node -> node of a barrel (the node below each upper-cap node; a cap
+/// node's local index): only looked up, never iterated, so hashed.
+using NodeImage = std::unordered_map<int, int>;
+
 [[noreturn]] inline void fail(int volume_id, const std::string& message) {
   throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(volume_id), message);
 }
@@ -113,7 +117,7 @@ void smooth_ends(SweepState& s);
 void sweep_barrels(SweepState& s, std::vector<BarrelReport>* reports);
 /// Before barrel b is swept: the images of its source cap's seam become the
 /// nodes of its swept target's seam (weld_seams.cpp).
-void weld_seam_images(SweepState& s, size_t b, const std::map<int, int>& below);
+void weld_seam_images(SweepState& s, size_t b, const NodeImage& below);
 /// After: no seam of a swept cap is left with unused nodes.
 void check_seams_welded(SweepState& s);
 

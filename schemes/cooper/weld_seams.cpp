@@ -13,7 +13,7 @@
 
 namespace cooperage::cooper::detail {
 
-void weld_seam_images(SweepState& s, size_t b, const std::map<int, int>& below) {
+void weld_seam_images(SweepState& s, size_t b, const NodeImage& below) {
   for (const auto& [u, l] : s.barrels[b].matches) {
     const Piece& pu = s.pieces[static_cast<size_t>(u)];
     const Piece& pl = s.pieces[static_cast<size_t>(l)];
