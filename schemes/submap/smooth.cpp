@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <set>
+#include <vector>
 
 namespace cooperage::submap {
 namespace {
@@ -27,15 +27,21 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
                   const std::vector<mesh::Quad>& quads, const Projector& project,
                   const SmoothOptions& options) {
   const size_t n = x.size();
-  std::vector<std::set<int>> neighbours(n);
+  // Edge neighbours ascending (the Laplacian sums them in that order) and
+  // the quads at each node.
+  std::vector<std::vector<int>> neighbours(n);
   std::vector<std::vector<int>> incident(n);
   for (size_t q = 0; q < quads.size(); ++q) {
     for (size_t k = 0; k < 4; ++k) {
       const int a = quads[q][k], b = quads[q][(k + 1) % 4];
-      neighbours[static_cast<size_t>(a)].insert(b);
-      neighbours[static_cast<size_t>(b)].insert(a);
+      neighbours[static_cast<size_t>(a)].push_back(b);
+      neighbours[static_cast<size_t>(b)].push_back(a);
       incident[static_cast<size_t>(a)].push_back(static_cast<int>(q));
     }
+  }
+  for (auto& row : neighbours) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
   }
   auto quality = [&](int q) {
     std::array<Vec3, 4> p, nn;
@@ -45,6 +51,11 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
     }
     return quad_scaled_jacobian(p, nn);
   };
+  // Every quad's quality, kept current as nodes move: a node's "before" is
+  // read, not computed again.
+  std::vector<double> current(quads.size());
+  for (size_t q = 0; q < quads.size(); ++q) current[q] = quality(static_cast<int>(q));
+  std::vector<double> after;
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     bool moved = false;
     for (size_t v = 0; v < n; ++v) {
@@ -64,20 +75,25 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
       const double mean_edge = wsum / static_cast<double>(neighbours[v].size());
       if ((acc / wsum - x[v]).norm() <= 1e-12 * mean_edge) continue;
       moved = true;
-      std::vector<double> before;
-      for (int q : incident[v]) before.push_back(quality(q));
       const Vec3 old_x = x[v], old_n = normals[v];
       const geom::SurfaceProjection pr = project(acc / wsum, v);
       x[v] = pr.point;
       normals[v] = pr.normal;
       bool accept = true;
+      after.clear();
       for (size_t k = 0; k < incident[v].size() && accept; ++k) {
-        const double after = quality(incident[v][k]);
+        const int q = incident[v][k];
+        after.push_back(quality(q));
         // A move that leaves a bad quad as it was (within noise) is taken,
         // so a rigid transform of the model cannot flip the decision.
-        if (after < options.min_quality && after < before[k] - kQualityNoise) accept = false;
+        if (after.back() < options.min_quality &&
+            after.back() < current[static_cast<size_t>(q)] - kQualityNoise)
+          accept = false;
       }
-      if (!accept) {
+      if (accept) {
+        for (size_t k = 0; k < incident[v].size(); ++k)
+          current[static_cast<size_t>(incident[v][k])] = after[k];
+      } else {
         x[v] = old_x;
         normals[v] = old_n;
       }
