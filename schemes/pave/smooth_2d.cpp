@@ -3,10 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace cooperage::pave::detail {
 namespace {
 
@@ -56,41 +52,6 @@ struct Local {
   double worst = 2.0;
   double mean = 0.0;
 };
-
-// Two quads' scaled_jacobian_2d at once, one per lane of a two-double
-// vector: the same operations in the same order as the scalar function (and
-// square roots and quotients are correctly rounded either way), so the same
-// bits. Node smoothing evaluates every quad around a node for every trial
-// position; this is most of a large paved face's time.
-typedef double Pair __attribute__((vector_size(16)));
-
-inline Pair sqrt_pair(Pair v) {
-#if defined(__SSE2__)
-  return reinterpret_cast<Pair>(_mm_sqrt_pd(reinterpret_cast<__m128d>(v)));
-#else
-  return Pair{std::sqrt(v[0]), std::sqrt(v[1])};
-#endif
-}
-
-/// Corners (counter-clockwise) of two quads: lane 0 is `p`, lane 1 is `q`.
-void scaled_jacobian_2d_pair(const V2* const p[4], const V2* const q[4], double out[2]) {
-  Pair ex[4], ey[4], l[4];
-  for (int k = 0; k < 4; ++k) {
-    const int n = (k + 1) % 4;
-    ex[k] = Pair{p[n]->x() - p[k]->x(), q[n]->x() - q[k]->x()};
-    ey[k] = Pair{p[n]->y() - p[k]->y(), q[n]->y() - q[k]->y()};
-    l[k] = sqrt_pair(ex[k] * ex[k] + ey[k] * ey[k]);
-  }
-  const auto valid = (l[0] > 0) & (l[1] > 0) & (l[2] > 0) & (l[3] > 0);
-  Pair m = {1.0, 1.0};
-  for (int k = 0; k < 4; ++k) {
-    const int j = (k + 3) % 4;
-    const Pair v = (ex[j] * ey[k] - ey[j] * ex[k]) / (l[j] * l[k]);
-    m = v < m ? v : m;
-  }
-  out[0] = valid[0] ? m[0] : -1.0;
-  out[1] = valid[1] ? m[1] : -1.0;
-}
 
 /// Quality of node i's quads with i placed at x; the quads' values go to out
 /// (one per ring entry, room for the node's valence).
