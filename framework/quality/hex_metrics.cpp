@@ -52,10 +52,6 @@ Triple cross_derivatives(const HexNodes& p) {
           (p[0] + p[1] + p[6] + p[7]) - (p[2] + p[3] + p[4] + p[5])};
 }
 
-}  // namespace
-
-namespace {
-
 // The scaled Jacobian of two hexes at once, one lane of a two-double vector
 // each (SSE2, which every x86-64 has; GCC and Clang lower the same code
 // elsewhere). Every lane does the same arithmetic in the same order, so a
@@ -142,11 +138,8 @@ void hex_scaled_jacobians(const Eigen::Vector3d* points, const std::array<int, 8
   std::size_t e = 0;
   for (; e + 2 <= count; e += 2)
     TwoHexes(points, hexes[e], points, hexes[e + 1]).scaled_jacobians(out + e, 2);
-  if (e < count) {
-    double pair[2];
-    TwoHexes(points, hexes[e], kUnitCubeNodes, kUnitCube).scaled_jacobians(pair, 1);
-    out[e] = pair[0];
-  }
+  if (e < count)  // the last one alone, a cube in the idle lane
+    TwoHexes(points, hexes[e], kUnitCubeNodes, kUnitCube).scaled_jacobians(out + e, 1);
 }
 
 double hex_jacobian(const HexNodes& p) {
