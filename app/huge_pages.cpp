@@ -5,11 +5,16 @@
 // otherwise costs its own page fault on first write: on the 1 M-hex plate
 // page faults were about a fifth of the run's CPU (issue 20; glibc's
 // tunable glibc.malloc.hugetlb=1 does the same, but only when set in the
-// environment before the process starts). Only this executable replaces
-// operator new; the library and its other users keep the default.
+// environment before the process starts). The heap itself is advised the
+// same way at start-up (HeapAdvice below). Only this executable replaces
+// operator new and tunes malloc; the library and its other users keep the
+// defaults.
+#include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <new>
 
@@ -35,6 +40,36 @@ void* allocate(std::size_t bytes) {
     handler();
   }
 }
+
+// The heap in transparent huge pages as well. Blocks under 4 MB come from
+// the heap (M_MMAP_THRESHOLD), which first grows by a 64 MB pad (M_TOP_PAD,
+// virtual until touched; glibc keeps the pad when it trims), and that
+// range is advised once. On the 1 M-hex plate this cut page faults from
+// ~15,000 to ~5,000; each 4 KB fault costs about 10 microseconds on a
+// virtual machine, and the heap's pages had been a sixth of the run. Growth
+// beyond the pad is a new mapping without the advice (the kernel does not
+// merge it), which only loses the benefit.
+struct HeapAdvice {
+  HeapAdvice() {
+    mallopt(M_MMAP_THRESHOLD, static_cast<int>(kAdviseFrom));
+    mallopt(M_TOP_PAD, 64 << 20);
+    void* volatile grow = std::malloc(std::size_t{1} << 20);  // volatile: not elided
+    std::free(grow);
+    FILE* maps = std::fopen("/proc/self/maps", "r");
+    if (!maps) return;
+    char line[512];
+    while (std::fgets(line, sizeof line, maps)) {
+      if (!std::strstr(line, "[heap]")) continue;
+      unsigned long lo = 0, hi = 0;
+      if (std::sscanf(line, "%lx-%lx", &lo, &hi) == 2) {
+        const std::uintptr_t first = (lo + kHugePage - 1) & ~(kHugePage - 1);
+        const std::uintptr_t last = hi & ~(kHugePage - 1);
+        if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+      }
+    }
+    std::fclose(maps);
+  }
+} heap_advice;
 
 }  // namespace
 
