@@ -65,9 +65,9 @@ typedef long long PairMask __attribute__((vector_size(16)));
 struct TwoHexes {
   Pair x[8], y[8], z[8];
 
-  /// Lane 0 is hex `h` of `points`, lane 1 hex `g` of `other`.
-  TwoHexes(const Vector3d* points, const std::array<int, 8>& h, const Vector3d* other,
-           const std::array<int, 8>& g) {
+  /// Lane 0 is the hex of node indices h[0..8) into `points`, lane 1 that of
+  /// g[0..8) into `other`.
+  TwoHexes(const Vector3d* points, const int* h, const Vector3d* other, const int* g) {
     for (std::size_t c = 0; c < 8; ++c) {
       const Vector3d& u = points[h[c]];
       const Vector3d& v = other[g[c]];
@@ -120,7 +120,7 @@ struct TwoHexes {
   }
 };
 
-const std::array<int, 8> kUnitCube = {0, 1, 2, 3, 4, 5, 6, 7};
+const int kUnitCube[8] = {0, 1, 2, 3, 4, 5, 6, 7};
 const Vector3d kUnitCubeNodes[8] = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0),
                                     Vector3d(0, 1, 0), Vector3d(0, 0, 1), Vector3d(1, 0, 1),
                                     Vector3d(1, 1, 1), Vector3d(0, 1, 1)};
@@ -133,13 +133,14 @@ double hex_scaled_jacobian(const HexNodes& p) {
   return sj;
 }
 
-void hex_scaled_jacobians(const Eigen::Vector3d* points, const std::array<int, 8>* hexes,
-                          std::size_t count, double* out) {
+void hex_scaled_jacobians(const Eigen::Vector3d* points, const int* connectivity, std::size_t count,
+                          double* out) {
   std::size_t e = 0;
   for (; e + 2 <= count; e += 2)
-    TwoHexes(points, hexes[e], points, hexes[e + 1]).scaled_jacobians(out + e, 2);
+    TwoHexes(points, connectivity + 8 * e, points, connectivity + 8 * (e + 1))
+        .scaled_jacobians(out + e, 2);
   if (e < count)  // the last one alone, a cube in the idle lane
-    TwoHexes(points, hexes[e], kUnitCubeNodes, kUnitCube).scaled_jacobians(out + e, 1);
+    TwoHexes(points, connectivity + 8 * e, kUnitCubeNodes, kUnitCube).scaled_jacobians(out + e, 1);
 }
 
 double hex_jacobian(const HexNodes& p) {

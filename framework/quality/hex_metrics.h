@@ -36,11 +36,12 @@ using HexNodes = std::array<Eigen::Vector3d, 8>;
 /// hex look perfect; Cooperage returns 0 so it is flagged as not valid.
 double hex_scaled_jacobian(const HexNodes& p);
 
-/// hex_scaled_jacobian of `count` hexes (node indices into `points`), written
-/// to out[0..count): equal bit for bit to one call per hex, computed eight
-/// hexes at a time so the arithmetic runs in vector registers.
-void hex_scaled_jacobians(const Eigen::Vector3d* points, const std::array<int, 8>* hexes,
-                          std::size_t count, double* out);
+/// hex_scaled_jacobian of `count` hexes given by eight node indices each
+/// into `points` (`connectivity`, rows of 8 ints), written to out[0..count):
+/// equal bit for bit to one call per hex, computed two hexes at a time in
+/// vector registers.
+void hex_scaled_jacobians(const Eigen::Vector3d* points, const int* connectivity, std::size_t count,
+                          double* out);
 
 /// min(det A0..A7, det A8 / 64). Units length^3; unit cube 1; acceptable
 /// [0, inf). No sentinel (a collapsed corner gives 0, inverted < 0).

@@ -66,13 +66,14 @@ double min_scaled_jacobian(const std::vector<Vec3>& points, const std::vector<me
       tbb::blocked_range<std::size_t>(0, nh + wedges.size(), 4096), Worst{},
       [&](const tbb::blocked_range<std::size_t>& range, Worst w) {
         // Hexes go through the batched kernel, 512 at a time.
+        static_assert(sizeof(mesh::Hex) == 8 * sizeof(int), "rows are contiguous ints");
         constexpr std::size_t kBatch = 512;
         double sj[kBatch];
         for (std::size_t first = range.begin(); first < range.end(); first += kBatch) {
           const std::size_t last = std::min(range.end(), first + kBatch);
           const std::size_t hex_end = std::clamp(nh, first, last);
           if (hex_end > first)
-            quality::hex_scaled_jacobians(points.data(), hexes.data() + first, hex_end - first, sj);
+            quality::hex_scaled_jacobians(points.data(), hexes[first].data(), hex_end - first, sj);
           for (std::size_t e = hex_end; e < last; ++e) {
             quality::WedgeNodes p;
             const auto& wedge = wedges[e - nh];

@@ -168,7 +168,7 @@ TEST(HexMetrics, BatchedScaledJacobiansEqualOneAtATime) {
   }
   hexes.push_back({0, 0, 0, 0, 0, 0, 0, 0});  // collapsed: 0, as one at a time
   std::vector<double> batch(hexes.size());
-  hex_scaled_jacobians(points.data(), hexes.data(), hexes.size(), batch.data());
+  hex_scaled_jacobians(points.data(), hexes.front().data(), hexes.size(), batch.data());
   for (size_t e = 0; e < hexes.size(); ++e) {
     HexNodes p;
     for (int c = 0; c < 8; ++c)

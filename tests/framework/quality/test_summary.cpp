@@ -1,11 +1,13 @@
 // Metric names, summary statistics and evaluate() over a small mesh.
 #include <array>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
 #include "framework/quality/evaluate.h"
+#include "framework/quality/hex_metrics.h"
 #include "framework/quality/metric.h"
 #include "framework/quality/summary.h"
 
@@ -109,6 +111,42 @@ TEST(Evaluate, HexMeshAndSummary) {
   const auto rs = evaluate(Metric::RelativeSize, ElementType::Hex, m.coords, m.hexes, opts);
   EXPECT_NEAR(rs[0], 1.0, 1e-12);
   EXPECT_DOUBLE_EQ(rs[1], 0.0);
+}
+
+// Hex scaled Jacobians go through the batched kernel when rows are eight
+// ints, and one element at a time otherwise: both equal the single-hex
+// function bit for bit (an odd count, more than one parallel chunk).
+TEST(Evaluate, HexScaledJacobianEqualsOneElementAtATime) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> jitter(-0.5, 0.5);
+  std::vector<Vector3d> coords;
+  std::vector<std::array<int, 8>> hexes;
+  std::vector<int> wide;  // the same rows with a ninth, unused column
+  for (int e = 0; e < 9001; ++e) {
+    std::array<int, 8> h;
+    for (int c = 0; c < 8; ++c) {
+      h[static_cast<size_t>(c)] = static_cast<int>(coords.size());
+      coords.emplace_back((c == 1 || c == 2 || c == 5 || c == 6) + jitter(rng),
+                          (c == 2 || c == 3 || c == 6 || c == 7) + jitter(rng),
+                          (c >= 4) + jitter(rng));
+    }
+    hexes.push_back(h);
+    wide.insert(wide.end(), h.begin(), h.end());
+    wide.push_back(-7);
+  }
+  const auto batched = evaluate(Metric::ScaledJacobian, ElementType::Hex, coords, hexes);
+  const auto strided =
+      evaluate(Metric::ScaledJacobian, ElementType::Hex, coords, wide.data(), hexes.size(), 9);
+  ASSERT_EQ(batched.size(), hexes.size());
+  ASSERT_EQ(strided.size(), hexes.size());
+  for (size_t e = 0; e < hexes.size(); ++e) {
+    HexNodes p;
+    for (int c = 0; c < 8; ++c)
+      p[static_cast<size_t>(c)] = coords[static_cast<size_t>(hexes[e][c])];
+    const double one = hex_scaled_jacobian(p);
+    ASSERT_EQ(batched[e], one) << "hex " << e;
+    ASSERT_EQ(strided[e], one) << "hex " << e;
+  }
 }
 
 TEST(Evaluate, QuadsWithStrideAndNormals) {
