@@ -19,6 +19,9 @@ namespace {
 // even spacing (column_spacing).
 constexpr double kMinShear = 0.4;
 constexpr double kMinSqueeze = 0.3;
+// A notched wall's corners may be this far from a multiple of 90 degrees
+// (halfway to the next would make the walk's reading of them ambiguous).
+constexpr double kSquareTolerance = 30.0;
 
 // A curve's samples seen along the sweep (the axis component removed), and
 // their arc-length fractions.
@@ -171,9 +174,12 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
     // inverted hexes (two bays 0.3 apart); an L-shaped wall whose even
     // columns lean by 0.16 of their height (pyocc_face_recognition) fills
     // soundly as it is, and with the knots its barrel's hexes inverted.
+    // "Square" allows kSquareTolerance: a lug's conical underside meets the
+    // wall at 201 and 249 degrees, which the walk and the submap both read
+    // as straight on and a turn, so its columns are where the walk puts them.
     const bool square = std::all_of(f->angles.begin(), f->angles.end(), [](double a) {
-      return std::abs(a - 90.0) <= 10.0 || std::abs(a - 180.0) <= 10.0 ||
-             std::abs(a - 270.0) <= 10.0;
+      return std::abs(a - 90.0) <= kSquareTolerance || std::abs(a - 180.0) <= kSquareTolerance ||
+             std::abs(a - 270.0) <= kSquareTolerance;
     });
     // Open curves first: a closed rim follows the nodes they get.
     std::vector<size_t> order(loop.size());

@@ -992,6 +992,34 @@ TEST(CooperMany, TwoBaysAFractionApartKeepTheWallsBottomRimEven) {
   EXPECT_GT(s.min_sj, 0.05);
 }
 
+// A half-round lug on the side wall with a conical underside (the cone's
+// section in the wall meets it at 201 and 249 degrees), beside a pocket
+// 0.35 from that wall, and a blind hole, at size 8.295 (the plan => mesh
+// campaign, seed 5 case 33). The pocket refines the wall's top rim; its
+// bottom rim, evenly spaced, sheared the columns under the lug's footprint
+// until the lattice fill inverted ("the interval counts do not fit the
+// face's shape"). Far knots were followed on walls with corners within 10
+// degrees of square only; within 30 the walk reads them as the submap does.
+TEST(CooperMany, AWallUnderALugWithAConicalUndersideFollowsItsRefinedTop) {
+  const double bx = 23.86, by = 56.86, bz = 25.58;
+  const double r = 14.53, r0 = 2.32, lug_z = 9.59, cone_h = 3.84;
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.brick("pocket", {14.43, 12.49, 19.85}, {9.08, 15, 31.31});
+  wb.cylinder("lug", {bx, 31.12, lug_z}, {0, 0, 1}, r, bz - lug_z);
+  wb.cone("underside", {bx, 31.12, lug_z - cone_h}, {0, 0, 1}, r0, r, cone_h);
+  wb.cylinder("hole", {18.03, 42.13, 17.14}, {0, 0, 1}, 2.73, 34.02);
+  wb.fuse("body", {"block", "lug", "underside"});
+  wb.cut("part", {"body", "pocket", "hole"});
+  const Summary s = sweep_part(wb.build_model(), 8.295).summary;
+  // Half a cylinder and half a frustum outside the wall.
+  const double exact = bx * by * bz + 0.5 * M_PI * r * r * (bz - lug_z) +
+                       0.5 * M_PI * cone_h / 3 * (r0 * r0 + r0 * r + r * r) -
+                       9.08 * 15 * (bz - 19.85) - M_PI * 2.73 * 2.73 * (bz - 17.14);
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.0);
+}
+
 // A pocket from the top whose edge passes 0.39 inside the rim of a blind
 // hole from the bottom, with two more blind holes, at size 2.314 (the plan
 // => mesh campaign, seed 3 case 118). The hole's lens over the pocket is
