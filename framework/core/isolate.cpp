@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <new>
 
 #include <fcntl.h>
@@ -135,8 +136,11 @@ std::string IsolatedRun::describe(const IsolationLimits& limits) const {
   return {};
 }
 
-IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
-                         const IsolationLimits& limits) {
+namespace {
+
+IsolatedRun fork_and_wait(const std::function<void(std::string& out)>& work,
+                          const IsolationLimits& limits, const std::function<void()>& while_waiting,
+                          std::exception_ptr& waiting_error) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw MeshingError(ErrorCode::Internal, std::string("pipe: ") + std::strerror(errno));
@@ -153,6 +157,13 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
     child_main(fds[1], work, limits);
   }
   ::close(fds[1]);
+  if (while_waiting) {
+    try {
+      while_waiting();
+    } catch (...) {
+      waiting_error = std::current_exception();
+    }
+  }
 
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::milliseconds(static_cast<long long>(
@@ -234,6 +245,17 @@ IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
                                                              : ErrorCode::Internal;
     run.payload = received.substr(2);
   }
+  return run;
+}
+
+}  // namespace
+
+IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
+                         const IsolationLimits& limits,
+                         const std::function<void()>& while_waiting) {
+  std::exception_ptr waiting_error;
+  IsolatedRun run = fork_and_wait(work, limits, while_waiting, waiting_error);
+  if (waiting_error) std::rethrow_exception(waiting_error);
   return run;
 }
 

@@ -51,7 +51,11 @@ struct IsolatedRun {
 /// only when the process cannot fork or make a pipe.
 /// Do not call it while other threads of this process hold locks the work
 /// needs (only the calling thread exists in the child).
+/// `while_waiting` (optional) runs in this process right after the fork,
+/// before the wait: work the caller needs anyway, done while the child
+/// works. An exception from it is thrown once the child is reaped.
 IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
-                         const IsolationLimits& limits);
+                         const IsolationLimits& limits,
+                         const std::function<void()>& while_waiting = {});
 
 }  // namespace cooperage

@@ -3,10 +3,12 @@
 #include "framework/core/error.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/workbench.h"
+#include "framework/io/export/write_mesh.h"
 #include "framework/io/journal_reader.h"
 
 #include <filesystem>
 #include <type_traits>
+#include <vector>
 
 namespace cooperage::pipeline {
 namespace {
@@ -84,6 +86,18 @@ void run_geometry(const io::Job& job, occ::Workbench& bench) {
     throw MeshingError(ErrorCode::InvalidInput,
                        (job.file.empty() ? std::string("job") : clip_path(job.file)) +
                            ": the journal defines no geometry");
+  }
+  // The export libraries load while the first import's child reads its file
+  // (the Exodus II library: ~20 ms of dynamic linking, otherwise paid in
+  // the export on one thread). In this thread, after the fork: a child must
+  // not inherit a thread in the middle of dlopen.
+  std::vector<std::string> exports;
+  for (const io::ExportSetting& e : job.exports)
+    exports.push_back(resolve_path(job.base_dir, e.file));
+  if (!exports.empty()) {
+    bench.set_while_importing([exports] {
+      for (const std::string& path : exports) io::prepare_export(path);
+    });
   }
   for (const io::GeometryStep& step : job.geometry) {
     try {

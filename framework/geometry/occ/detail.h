@@ -18,6 +18,7 @@
 
 #include <exception>
 #include <memory>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,7 @@ struct Workbench::Impl {
   std::string unit_name = "MM";
   /// Whether build_model will imprint and merge (imports merge in their child).
   bool merge_on_import = true;
+  std::function<void()> while_importing;  ///< Workbench::set_while_importing
 
   NamedShape* find(const std::string& name);
   const NamedShape* find(const std::string& name) const;

@@ -201,9 +201,11 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
   // may hold its lock at the fork).
   if (kind != CadKind::Brep) exchange::load();
   const IsolationLimits limits = limits_for(path);
+  std::function<void()> while_reading;
+  while_reading.swap(impl_->while_importing);  // once
   const IsolatedRun run = run_isolated(
       [&](std::string& out) { read_in_child(path, kind, heal, impl_->merge_on_import, out); },
-      limits);
+      limits, while_reading);
   if (run.outcome == IsolatedRun::Outcome::Failed) throw MeshingError(run.code, run.payload);
   if (run.outcome != IsolatedRun::Outcome::Done)
     throw MeshingError(ErrorCode::ParseError,

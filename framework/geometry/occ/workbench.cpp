@@ -81,6 +81,10 @@ bool Workbench::has(const std::string& name) const { return impl_->find(name) !=
 
 void Workbench::set_imprint_merge(bool merge) { impl_->merge_on_import = merge; }
 
+void Workbench::set_while_importing(std::function<void()> task) {
+  impl_->while_importing = std::move(task);
+}
+
 namespace {
 
 void apply(Workbench::Impl& impl, const std::string& name, const gp_Trsf& trsf) {

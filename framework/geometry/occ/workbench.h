@@ -8,6 +8,7 @@
 #include "framework/geometry/model.h"
 
 #include <memory>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,12 @@ class Workbench {
   /// will). With true, an import merges its own solids in its child process,
   /// and build_model reuses that when the import is the only shape.
   void set_imprint_merge(bool merge);
+
+  /// Work this process does while the next import's child reads its file
+  /// (once, then forgotten): the caller's own preparation, overlapped with
+  /// the child's reading, e.g. loading an export's library. Its exceptions
+  /// come out of that import_file.
+  void set_while_importing(std::function<void()> task);
 
   void brick(const std::string& name, const Vec3& origin, const Vec3& size);
   void cylinder(const std::string& name, const Vec3& base, const Vec3& axis, double radius,

@@ -9,7 +9,11 @@
 #include <cstdio>
 #include <csignal>
 #include <thread>
+#include <string>
 #include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace cooperage {
 namespace {
@@ -113,6 +117,63 @@ TEST(Isolate, WaitingIsNotChargedAsProcessorTime) {
       limits);
   ASSERT_EQ(r.outcome, Outcome::Done);
   EXPECT_EQ(r.payload, "done");
+}
+
+// Two files as a handshake: the child makes one and waits for the other,
+// which only the parent's waiting task makes, after it has seen the first.
+// So the task runs in this process while the child runs (neither before
+// the fork nor after the child ended, which would leave each side waiting).
+TEST(Isolate, TheWaitingTaskRunsHereWhileTheChildWorks) {
+  const std::string dir = ::testing::TempDir();
+  const std::string from_child = dir + "/isolate_child_" + std::to_string(::getpid());
+  const std::string from_parent = dir + "/isolate_parent_" + std::to_string(::getpid());
+  std::remove(from_child.c_str());
+  std::remove(from_parent.c_str());
+  const auto appears = [](const std::string& path) {
+    for (int k = 0; k < 2000; ++k) {  // up to 20 s
+      if (std::FILE* f = std::fopen(path.c_str(), "r")) {
+        std::fclose(f);
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  };
+  const pid_t parent = ::getpid();
+  pid_t ran_in = 0;
+  bool saw_child = false;
+  const IsolatedRun r = run_isolated(
+      [&](std::string& out) {
+        std::fclose(std::fopen(from_child.c_str(), "w"));
+        out = appears(from_parent) ? "saw the parent" : "alone";
+      },
+      IsolationLimits{60, 0},
+      [&] {
+        ran_in = ::getpid();
+        saw_child = appears(from_child);
+        std::fclose(std::fopen(from_parent.c_str(), "w"));
+      });
+  std::remove(from_child.c_str());
+  std::remove(from_parent.c_str());
+  ASSERT_EQ(r.outcome, Outcome::Done);
+  EXPECT_EQ(r.payload, "saw the parent");
+  EXPECT_EQ(ran_in, parent);
+  EXPECT_TRUE(saw_child);
+}
+
+TEST(Isolate, TheWaitingTasksErrorComesOutAfterTheChildIsReaped) {
+  bool thrown = false;
+  try {
+    run_isolated([](std::string& out) { out = "done"; }, IsolationLimits{10, 0},
+                 [] { throw MeshingError(ErrorCode::Internal, "cannot load the library"); });
+  } catch (const MeshingError& e) {
+    thrown = true;
+    EXPECT_NE(std::string(e.what()).find("cannot load the library"), std::string::npos);
+  }
+  EXPECT_TRUE(thrown);
+  // No child is left behind: nothing more to wait for.
+  int status = 0;
+  EXPECT_EQ(::waitpid(-1, &status, WNOHANG), -1);
 }
 
 }  // namespace
