@@ -11,16 +11,16 @@
 // defaults.
 #include "huge_pages.h"
 
+#include "framework/pipeline/mesher.h"
+
 #include <malloc.h>
 #include <sys/mman.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <cstdlib>
 #include <new>
-#include <thread>
 
 namespace {
 
@@ -84,9 +84,7 @@ struct HeapAdvice {
 // lock could cost more than the faults; that was not measured, so glibc's
 // default stays.
 void cooperage::app::share_heap_when_few_threads(int requested) {
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int threads = requested > 0 ? std::min(requested, hardware) : hardware;
-  if (threads <= 2) mallopt(M_ARENA_MAX, 1);
+  if (cooperage::pipeline::limit_threads_count(requested) <= 2) mallopt(M_ARENA_MAX, 1);
 }
 
 void* operator new(std::size_t bytes) { return allocate(bytes); }

@@ -140,18 +140,18 @@ constexpr const char* kNoSchemeHint =
     "`cooperage plan` gives every scheme's reason; cut the volume with <webcut> or give it a "
     "sweep hint (<volume sources/targets/direction>)";
 
-/// TBB workers: the request, at most the hardware's (a journal asking for
-/// 2,147,483,647 threads ran out of memory; issue 21).
-int limit_threads_count(int requested) {
-  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  return requested > 0 ? std::min(requested, hardware) : hardware;
-}
 std::unique_ptr<tbb::global_control> limit_threads(int requested) {
   return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                static_cast<size_t>(limit_threads_count(requested)));
 }
 
 }  // namespace
+
+// A journal asking for 2,147,483,647 threads ran out of memory (issue 21).
+int limit_threads_count(int requested) {
+  const int hardware = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return requested > 0 ? std::min(requested, hardware) : hardware;
+}
 
 std::string Warning::text() const {
   const std::string who = entity.name();

@@ -123,6 +123,10 @@ class IncompleteMesh : public MeshingError {
   std::vector<Verdict> verdicts_;
 };
 
+/// The worker threads a run uses for MeshOptions::threads: the request, at
+/// most the hardware's; 0 means every core.
+int limit_threads_count(int requested);
+
 /// Meshes a model. Every model is validated first (geom::validate) and its
 /// size estimated against the element limit. Inverted elements are never
 /// returned. A failure of a single-volume (single-surface) model throws

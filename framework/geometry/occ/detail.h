@@ -17,8 +17,8 @@
 #include <gp_Vec.hxx>
 
 #include <exception>
-#include <memory>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>

@@ -7,8 +7,8 @@
 
 #include "framework/geometry/model.h"
 
-#include <memory>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
