@@ -149,6 +149,7 @@ def main():
                     verdict = "meshed" if rc2 == 0 else "planned, run failed"
                 else:
                     verdict = "refused at plan" if rc == 2 else "plan crashed or hung"
+                    row["error"] = err.strip().splitlines()[:1]
                 row["verdict"] = verdict
                 counts[verdict] = counts.get(verdict, 0) + 1
                 if bad:

@@ -148,17 +148,19 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
       }
     }
   }
+  // A side may wall the volume in at one level and a hole at another (a
+  // hole drilled through a boss's edge: its wall is outer beside the boss's
+  // top, a hole's below the block's top); each slab's cycles then take
+  // their side from the contacts of the caps that bound them.
+  auto decides = [](const CapContact& k) { return k.convex || k.cap_loop != 0; };
+  auto outer_at = [](const CapContact& k) { return k.convex == (k.cap_loop == 0); };
+  std::set<int> mixed;  // sides walling the volume in at one cap and a hole at another
   for (const CapContact& k : lattice.contacts) {
     // A ring rising re-entrantly from a cap's outer loop walls a blind
     // hole above a floor, or a step flush with an outer wall: undecided.
-    if (!k.convex && k.cap_loop == 0) continue;
-    const bool outer = k.convex == (k.cap_loop == 0);
-    const auto [it, added] = out.outer_face.emplace(k.face, outer);
-    if (!added && it->second != outer) {
-      out.why = "side surface " + std::to_string(k.face) +
-                " walls the volume in at one cap and a hole at another";
-      return out;
-    }
+    if (!decides(k)) continue;
+    const auto [it, added] = out.outer_face.emplace(k.face, outer_at(k));
+    if (!added && it->second != outer_at(k)) mixed.insert(k.face);
   }
   for (bool progress = true; progress;) {
     progress = false;
@@ -221,9 +223,25 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
     for (auto& [root, faces] : groups) {
       Cycle c;
       c.faces = faces;
-      c.outer = out.outer_face.at(faces.front());
+      // The contacts of the caps bounding this slab on their material side.
+      std::set<bool> here;
+      for (const CapContact& ct : lattice.contacts) {
+        if (!decides(ct) || !std::binary_search(faces.begin(), faces.end(), ct.face)) continue;
+        const double h = height(lattice.cap_class.at(ct.cap));
+        const bool bounds = order.upper.at(ct.cap) ? std::abs(slab.top - h) <= tol
+                                                   : std::abs(slab.bottom - h) <= tol;
+        if (bounds) here.insert(outer_at(ct));
+      }
+      bool any_mixed = false;
+      for (int f : faces) any_mixed = any_mixed || mixed.count(f) > 0;
+      if (here.size() > 1 || (any_mixed && here.empty())) {
+        out.why = "side surface " + std::to_string(faces.front()) +
+                  " walls the volume in at one cap and a hole at another";
+        return out;
+      }
+      c.outer = here.empty() ? out.outer_face.at(faces.front()) : *here.begin();
       for (int f : faces) {
-        if (out.outer_face.at(f) != c.outer) {
+        if (!mixed.count(f) && out.outer_face.at(f) != c.outer) {
           out.why = "the sides " + std::to_string(faces.front()) + " and " + std::to_string(f) +
                     " form one cycle but wall the volume on different sides";
           return out;

@@ -992,6 +992,36 @@ TEST(CooperMany, TwoBaysAFractionApartKeepTheWallsBottomRimEven) {
   EXPECT_GT(s.min_sj, 0.05);
 }
 
+// A through hole drilled across a boss's edge (the plan => mesh campaign,
+// seed 5 case 187). The hole's wall is one face: beside the boss's top it
+// walls the volume in (the boss's top is a crescent, the hole's arc on its
+// outer loop), below the block's top it walls a hole. Each slab's cycles
+// now take their side from the caps that bound them; the face as a whole
+// had to be one or the other, and the plan refused ("side surface 8 walls
+// the volume in at one cap and a hole at another").
+TEST(CooperMany, AThroughHoleAcrossABossEdgeIsSwept) {
+  const double bx = 78.25, by = 55.28, bz = 14.64;
+  const double r1 = 10.69, boss_h = 13.4, r2 = 8.22;
+  const Vec3 c1(50.65, 20.03, 0), c2(59.28, 12.24, 0);
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("boss", {c1.x(), c1.y(), bz}, {0, 0, 1}, r1, boss_h);
+  wb.cylinder("hole", {c2.x(), c2.y(), -bz}, {0, 0, 1}, r2, 3 * bz);
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "hole"});
+  const Summary s = sweep_part(wb.build_model(), 3.098).summary;
+  // The hole lies inside the block's footprint; over the boss it removes
+  // the lens the two circles share.
+  const double d = (c1 - c2).norm();
+  const double lens =
+      r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
+      r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
+      0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
+  const double exact = bx * by * bz + M_PI * r1 * r1 * boss_h - M_PI * r2 * r2 * bz - lens * boss_h;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.3);  // 0.77
+}
+
 // A half-round lug on the side wall with a conical underside (the cone's
 // section in the wall meets it at 201 and 249 degrees), beside a pocket
 // 0.35 from that wall, and a blind hole, at size 8.295 (the plan => mesh
