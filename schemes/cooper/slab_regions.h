@@ -36,7 +36,10 @@ struct SlabRegions {
   double tolerance = 0;        ///< heights closer than this are one level
   /// Per side face: lowest and highest level height of its runs along.
   std::map<int, std::pair<double, double>> span;
-  /// Per side face: the volume lies inside its cycles (outer walls).
+  /// Per side face: the volume lies inside its cycles (outer walls), from
+  /// its first deciding cap contact. A slab's cycle takes its role from the
+  /// caps bounding that slab (Cycle::outer), which may differ from this for
+  /// a face that walls the volume in at one level and a hole at another.
   std::map<int, bool> outer_face;
 };
 
