@@ -32,7 +32,8 @@ std::vector<LatticePoint> walk_loop(const std::vector<int>& directions,
   return points;
 }
 
-LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
+LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops,
+                         FillInterior interior) {
   LatticeFill out;
   int imin = INT_MAX, jmin = INT_MAX, imax = INT_MIN, jmax = INT_MIN;
   for (const auto& loop : loops) {
@@ -133,11 +134,43 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
     }
   }
 
-  // Blend row and column interpolations for every interior point.
-  auto is_interior = [&](int i, int j) {
+  auto is_unplaced = [&](int i, int j) {
     if (!inside_box(i, j)) return false;
     const int g = gat(i, j);
     return g >= 0 && static_cast<size_t>(g) >= boundary_count;
+  };
+  // Cut lines first (FillInterior::Blocks): from every reentrant corner of
+  // the boundary (three of its four cells inside), the two boundary edges
+  // there continue straight into the region up to the next placed point.
+  std::vector<char> on_cut(out.ij.size(), 0);
+  if (interior == FillInterior::Blocks) {
+    for (size_t b = 0; b < boundary_count; ++b) {
+      const int i = out.ij[b][0], j = out.ij[b][1];
+      const int around = cell_inside(i, j) + cell_inside(i - 1, j) + cell_inside(i, j - 1) +
+                         cell_inside(i - 1, j - 1);
+      if (around != 3) continue;
+      for (const LatticePoint& d :
+           {LatticePoint{1, 0}, LatticePoint{-1, 0}, LatticePoint{0, 1}, LatticePoint{0, -1}}) {
+        std::vector<int> line;
+        int x = i + d[0], y = j + d[1];
+        for (; is_unplaced(x, y) && !on_cut[static_cast<size_t>(gat(x, y))]; x += d[0], y += d[1]) {
+          line.push_back(gat(x, y));
+        }
+        if (line.empty() || !inside_box(x, y) || gat(x, y) < 0) continue;
+        const Vec2 lo = out.uv[b], hi = out.uv[static_cast<size_t>(gat(x, y))];
+        const double n = static_cast<double>(line.size() + 1);
+        for (size_t k = 0; k < line.size(); ++k) {
+          const double s = static_cast<double>(k + 1) / n;
+          out.uv[static_cast<size_t>(line[k])] = (1.0 - s) * lo + s * hi;
+          on_cut[static_cast<size_t>(line[k])] = 1;
+        }
+      }
+    }
+  }
+
+  // Blend row and column interpolations for every other interior point.
+  auto is_interior = [&](int i, int j) {
+    return is_unplaced(i, j) && !on_cut[static_cast<size_t>(gat(i, j))];
   };
   // The first non-interior point from each interior point along -i, +i, -j
   // and +j, found by one scan per row and per column (walking from every
@@ -222,6 +255,7 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops) {
     return total > 0 ? (line.length[m] - line.length[a]) / total : -1.0;
   };
   for (size_t p = boundary_count; p < out.ij.size(); ++p) {
+    if (on_cut[p]) continue;
     const int i = out.ij[p][0], j = out.ij[p][1];
     double wsum = 0.0;
     Vec2 acc = Vec2::Zero();

@@ -47,6 +47,14 @@ struct LatticeFill {
       cells;  ///< unit cells inside, point indices, counter-clockwise in (i, j)
 };
 
+/// How interior points get their parameters.
+enum class FillInterior {
+  Blend,   ///< every point blends its row and its column
+  Blocks,  ///< the boundary edges at reentrant corners are extended first
+           ///< (linear along each cut line), cutting the region into blocks
+           ///< whose points then blend between their block's sides only
+};
+
 /// Fills the region bounded by the loops (outer loop counter-clockwise in
 /// (i, j), holes clockwise). The region's winding number must be 0 or 1 in
 /// every cell and no two different nodes may share a lattice point (one node
@@ -54,7 +62,8 @@ struct LatticeFill {
 ///   uv = (w_r * row + w_c * col) / (w_r + w_c),
 /// row/col the linear interpolations between the boundary points hit going
 /// -i/+i and -j/+j, w = 1 / (distance in index space to the nearer of the two).
-LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops);
+LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops,
+                         FillInterior interior = FillInterior::Blend);
 
 /// True when the cells of `fill` cover its whole (i, j) box: one rectangular
 /// block (a mapped face).

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <cmath>
 #include <unordered_map>
 
@@ -154,7 +155,7 @@ void SurfaceSubmap::constrain(const scheme::SurfaceView& view,
 }
 
 scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
-                                       const scheme::Settings& /*params*/) const {
+                                       const scheme::Settings& params) const {
   const int sid = view.surface_id;
   if (!view.mesh) fail(sid, "submap needs the meshed curves");
   const mesh::MeshDB& db = *view.mesh;
@@ -239,90 +240,106 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
   }
 
   // 3. Fill the lattice in surface parameters.
-  const LatticeFill fill = fill_lattice(placed);
-  if (!fill.ok) fail(sid, "the submap lattice is not a valid region: " + fill.why);
+  for (const FillInterior mode : {FillInterior::Blend, FillInterior::Blocks}) {
+    const LatticeFill fill = fill_lattice(placed, mode);
+    if (!fill.ok) fail(sid, "the submap lattice is not a valid region: " + fill.why);
 
-  // 4. Nodes: boundary points are the curve nodes (once, even at seams);
-  // interior points go onto the surface.
-  scheme::EntityMesh out;
-  std::vector<Vec3> normals;
-  std::vector<Vec2> node_uv;  // where each node's projections start (a B-spline's Newton)
-  std::vector<bool> fixed;
-  std::unordered_map<int, int> local_of_global;
-  std::vector<int> local_of_point(fill.ij.size(), -1);
-  for (size_t p = 0; p < fill.ij.size(); ++p) {
-    const int g = fill.node[p];
-    if (g >= 0) {
-      auto it = local_of_global.find(g);
-      if (it != local_of_global.end()) {
-        local_of_point[p] = it->second;
-        continue;
+    // 4. Nodes: boundary points are the curve nodes (once, even at seams);
+    // interior points go onto the surface.
+    scheme::EntityMesh out;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> node_uv;  // where each node's projections start (a B-spline's Newton)
+    std::vector<bool> fixed;
+    std::unordered_map<int, int> local_of_global;
+    std::vector<int> local_of_point(fill.ij.size(), -1);
+    for (size_t p = 0; p < fill.ij.size(); ++p) {
+      const int g = fill.node[p];
+      if (g >= 0) {
+        auto it = local_of_global.find(g);
+        if (it != local_of_global.end()) {
+          local_of_point[p] = it->second;
+          continue;
+        }
+        const int local = out.add(db.node(g), g);
+        local_of_global.emplace(g, local);
+        local_of_point[p] = local;
+        const geom::SurfaceProjection pr = geometry.project_near(db.node(g), fill.uv[p]);
+        normals.push_back(pr.normal);
+        node_uv.push_back(pr.uv);
+        fixed.push_back(true);
+      } else {
+        const geom::SurfaceProjection pr =
+            geometry.project_near(geometry.point(fill.uv[p]), fill.uv[p]);
+        local_of_point[p] = out.add(pr.point);
+        normals.push_back(pr.normal);
+        node_uv.push_back(pr.uv);
+        fixed.push_back(false);
       }
-      const int local = out.add(db.node(g), g);
-      local_of_global.emplace(g, local);
-      local_of_point[p] = local;
-      const geom::SurfaceProjection pr = geometry.project_near(db.node(g), fill.uv[p]);
-      normals.push_back(pr.normal);
-      node_uv.push_back(pr.uv);
-      fixed.push_back(true);
-    } else {
-      const geom::SurfaceProjection pr =
-          geometry.project_near(geometry.point(fill.uv[p]), fill.uv[p]);
-      local_of_point[p] = out.add(pr.point);
-      normals.push_back(pr.normal);
-      node_uv.push_back(pr.uv);
-      fixed.push_back(false);
     }
-  }
-  out.quads.reserve(fill.cells.size());
-  for (const auto& c : fill.cells) {
-    out.quads.push_back(
-        {local_of_point[static_cast<size_t>(c[0])], local_of_point[static_cast<size_t>(c[1])],
-         local_of_point[static_cast<size_t>(c[2])], local_of_point[static_cast<size_t>(c[3])]});
-  }
+    out.quads.reserve(fill.cells.size());
+    for (const auto& c : fill.cells) {
+      out.quads.push_back(
+          {local_of_point[static_cast<size_t>(c[0])], local_of_point[static_cast<size_t>(c[1])],
+           local_of_point[static_cast<size_t>(c[2])], local_of_point[static_cast<size_t>(c[3])]});
+    }
 
-  // 5. Guarded smoothing, then the inversion check: never silent. The fill
-  // carries a graded curve's spacing across the face (transfinite
-  // interpolation along rows and columns); smoothing would only even it out
-  // again (a rib leaving a tangent cap: cooper's tangent_grading.h; a side
-  // of several barrels whose rows lie on the caps' levels, cooper's
-  // level_spacing.h: evened out, a row moved 1 mm off the level of a blind
-  // hole's floor, and the cap stacks folded). A single block (the lattice
-  // fills its box) keeps a grading above half, or above 2 % on a face
-  // where a volume scheme placed nodes along a curve; other lattices keep a
-  // grading above half only on such a face (their fill is less even than
-  // one block's, and smoothing mends it: gmsh_Angled
-  // --dim 2, surface 30, min scaled Jacobian 0.22 unsmoothed, 0.33 smoothed).
-  const bool block = fills_its_box(fill);
-  const bool volume_placed =
-      std::any_of(plan.loops.begin(), plan.loops.end(), [&](const LoopPlan& lp) {
-        return std::any_of(lp.uses.begin(), lp.uses.end(),
-                           [&](const auto& use) { return db.curve_placed_by_volume(use.curve); });
-      });
-  const bool keep = block ? has_graded_curve(db, plan, volume_placed ? 1.02 : 1.5)
-                          : volume_placed && has_graded_curve(db, plan, 1.5);
-  if (!keep) {
-    smooth_quads(
-        out.coords, normals, fixed, out.quads,
-        [&](const Vec3& x, size_t node) {
-          const geom::SurfaceProjection pr = geometry.project_near(x, node_uv[node]);
-          node_uv[node] = pr.uv;
-          return pr;
-        },
-        options_.smooth);
-  }
-  for (size_t q = 0; q < out.quads.size(); ++q) {
-    std::array<Vec3, 4> p, n;
-    for (size_t k = 0; k < 4; ++k) {
-      p[k] = out.coords[static_cast<size_t>(out.quads[q][k])];
-      n[k] = normals[static_cast<size_t>(out.quads[q][k])];
+    // 5. Guarded smoothing, then the inversion check: never silent. The fill
+    // carries a graded curve's spacing across the face (transfinite
+    // interpolation along rows and columns); smoothing would only even it out
+    // again (a rib leaving a tangent cap: cooper's tangent_grading.h; a side
+    // of several barrels whose rows lie on the caps' levels, cooper's
+    // level_spacing.h: evened out, a row moved 1 mm off the level of a blind
+    // hole's floor, and the cap stacks folded). A single block (the lattice
+    // fills its box) keeps a grading above half, or above 2 % on a face
+    // where a volume scheme placed nodes along a curve; other lattices keep a
+    // grading above half only on such a face (their fill is less even than
+    // one block's, and smoothing mends it: gmsh_Angled
+    // --dim 2, surface 30, min scaled Jacobian 0.22 unsmoothed, 0.33 smoothed).
+    const bool block = fills_its_box(fill);
+    const bool volume_placed =
+        std::any_of(plan.loops.begin(), plan.loops.end(), [&](const LoopPlan& lp) {
+          return std::any_of(lp.uses.begin(), lp.uses.end(),
+                             [&](const auto& use) { return db.curve_placed_by_volume(use.curve); });
+        });
+    const bool keep = block ? has_graded_curve(db, plan, volume_placed ? 1.02 : 1.5)
+                            : volume_placed && has_graded_curve(db, plan, 1.5);
+    if (!keep) {
+      smooth_quads(
+          out.coords, normals, fixed, out.quads,
+          [&](const Vec3& x, size_t node) {
+            const geom::SurfaceProjection pr = geometry.project_near(x, node_uv[node]);
+            node_uv[node] = pr.uv;
+            return pr;
+          },
+          options_.smooth);
     }
-    if (quad_scaled_jacobian(p, n) <= 0.0) {
-      fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(q) +
+    int inverted = -1;
+    for (size_t q = 0; q < out.quads.size(); ++q) {
+      std::array<Vec3, 4> p, n;
+      for (size_t k = 0; k < 4; ++k) {
+        p[k] = out.coords[static_cast<size_t>(out.quads[q][k])];
+        n[k] = normals[static_cast<size_t>(out.quads[q][k])];
+      }
+      if (quad_scaled_jacobian(p, n) <= 0.0) {
+        inverted = static_cast<int>(q);
+        break;
+      }
+    }
+    if (inverted < 0) return out;
+    // A blend across a reentrant corner can fold where the rows on its two
+    // sides are spaced differently (a hole's wall notched down into a foot:
+    // the notch's columns spread their rows over the notch's whole depth);
+    // the same lattice cut into blocks at its corners fills each block alone.
+    // Only where no other scheme may mesh the face (a sweep's side): where
+    // the fallbacks may, pave's mesh is better (gmsh_Angled --dim 2 at D/80,
+    // surface 28: blocks 0.36, pave 0.75).
+    const bool no_other = !params.allow_fallback && !params.allow_quad_fallback;
+    if (mode == FillInterior::Blocks || block || !no_other) {
+      fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +
                     "); the interval counts do not fit the face's shape");
     }
   }
-  return out;
+  throw std::logic_error("submap: unreachable");
 }
 
 std::unique_ptr<scheme::SurfaceScheme> make_submap(SubmapOptions options) {

@@ -1113,6 +1113,45 @@ TEST(CooperMany, ALensUnderAnOverhangGetsIntervalsForTwoQuads) {
   EXPECT_GT(s.min_sj, 0.0);  // thin hexes over the lens, none inverted
 }
 
+// Area of the circle (centre (cx, cy), radius r) inside the box
+// [x0, x1] x [y0, y1], by the midpoint rule across x: an independent check
+// of where a hole leaves a boss's corner.
+double circle_in_box(double cx, double cy, double r, double x0, double x1, double y0, double y1) {
+  const int steps = 200000;
+  const double a = std::max(x0, cx - r), b = std::min(x1, cx + r);
+  double area = 0;
+  for (int k = 0; k < steps; ++k) {
+    const double x = a + (b - a) * (k + 0.5) / steps;
+    const double h = std::sqrt(std::max(0.0, r * r - (x - cx) * (x - cx)));
+    area += std::max(0.0, std::min(cy + h, y1) - std::max(cy - h, y0)) * (b - a) / steps;
+  }
+  return area;
+}
+
+// A blind hole from the top of a square boss across the boss's corner, a
+// second boss 0.63 beside it (the plan => mesh campaign, seed 3 case 185),
+// at size 3.88. The hole's wall, notched where the boss's corner cuts it,
+// has a lattice whose blend folds beside the notch; the submap fill, when
+// its blend folds, cuts the lattice into blocks at its reentrant corners.
+TEST(CooperMany, ABlindHoleAcrossABossCornerFillsItsWallInBlocks) {
+  const double bx = 29.75, by = 50.81, bz = 28.03;
+  const double cx = 10.5, cy = 27.96, r = 1.76, floor_z = 18.15;
+  const double b1x = 9.54, b1y = 22.64, b1w = 8.52, b1d = 6.26, b1h = 9.0;
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("hole", {cx, cy, floor_z}, {0, 0, 1}, r, 37.91);
+  wb.brick("boss1", {b1x, b1y, bz}, {b1w, b1d, b1h});
+  wb.brick("boss2", {11.66, 12.77, bz}, {5.22, 9.24, 7.85});
+  wb.fuse("body", {"block", "boss1", "boss2"});
+  wb.cut("part", {"body", "hole"});
+  const Summary s = sweep_part(wb.build_model(), 3.88).summary;
+  const double in_boss = circle_in_box(cx, cy, r, b1x, b1x + b1w, b1y, b1y + b1d);
+  const double exact = bx * by * bz + b1w * b1d * b1h + 5.22 * 9.24 * 7.85 -
+                       M_PI * r * r * (bz - floor_z) - in_boss * b1h;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.05);  // 0.07 in the boss's corner beside the hole
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {

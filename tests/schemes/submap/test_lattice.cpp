@@ -1,6 +1,7 @@
 // Lattice walk and fill, and the guarded smoother (value types, no CAD).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "schemes/submap/directions.h"
@@ -115,6 +116,70 @@ TEST(SubmapLattice, SeamNodeMayHoldTwoLatticePoints) {
   const LatticeFill f = fill_lattice({loop});
   ASSERT_TRUE(f.ok) << f.why;
   EXPECT_EQ(f.cells.size(), 8u);
+}
+
+// Signed area of every cell in (u, v): positive where the fill keeps the
+// lattice's orientation.
+double smallest_cell_area(const LatticeFill& f) {
+  double least = INFINITY;
+  for (const auto& c : f.cells) {
+    double twice = 0;
+    for (size_t k = 0; k < 4; ++k) {
+      const Vec2& a = f.uv[static_cast<size_t>(c[k])];
+      const Vec2& b = f.uv[static_cast<size_t>(c[(k + 1) % 4])];
+      twice += a.x() * b.y() - a.y() * b.x();
+    }
+    least = std::min(least, 0.5 * twice);
+  }
+  return least;
+}
+
+// A hole's wall notched down into a foot (the plan => mesh campaign, seed 3
+// case 71), unrolled: rows 0-4 are the wall between the block's top and
+// bottom, one unit apart; columns 16-20 continue 4 rows more into the foot,
+// 0.25 apart, and their foot lies further along the wall than their top.
+// Blended, the notch's columns spread their rows over the notch's whole
+// depth and the cells beside the notch's corners fold; cut into blocks at
+// the reentrant corners, every row of the wall stays level and no cell
+// folds.
+TEST(SubmapLattice, ANotchedWallCutIntoBlocksKeepsItsRowsLevel) {
+  const int n = 24, depth = 4, notch = 4, a = 16;
+  const double top_u[] = {0,   0.5, 0.9, 1.25, 1.55, 1.8, 2.0, 2.2, 2.4, 2.6, 2.8,  3.05, 3.3,
+                          3.6, 4.0, 4.5, 5.1,  5.7,  6.3, 6.9, 7.5, 8.1, 8.7, 9.35, 10};
+  std::vector<BoundaryPoint> loop;
+  int node = 0;
+  auto add = [&](int i, int j, double u, double v) {
+    loop.push_back({{i, j}, node++, Vec2(u, v)});
+  };
+  // Counter-clockwise in (i, j): the bottom rim left to right with the
+  // notch, the right seam, the top rim right to left, the left seam.
+  const double bottom_u0 = 7.9, notch_w = 0.8;  // the notch spans u 7.9 - 8.7
+  auto bottom_u = [&](int i) {
+    if (i <= a) return bottom_u0 * i / a;
+    if (i >= a + notch)
+      return bottom_u0 + notch_w + (10 - bottom_u0 - notch_w) * (i - a - notch) / (n - a - notch);
+    return bottom_u0 + notch_w * (i - a) / notch;
+  };
+  for (int i = 0; i < a; ++i) add(i, 0, bottom_u(i), 0);
+  for (int j = 0; j < depth; ++j) add(a, -j, bottom_u(a), -0.25 * j);
+  for (int i = a; i < a + notch; ++i) add(i, -depth, bottom_u(i), -0.25 * depth);
+  for (int j = depth; j > 0; --j) add(a + notch, -j, bottom_u(a + notch), -0.25 * j);
+  for (int i = a + notch; i < n; ++i) add(i, 0, bottom_u(i), 0);
+  for (int j = 0; j < 4; ++j) add(n, j, 10, j);
+  for (int i = n; i > 0; --i) add(i, 4, top_u[i], 4);
+  for (int j = 4; j > 0; --j) add(0, j, 0, j);
+  const LatticeFill blend = fill_lattice({loop}, FillInterior::Blend);
+  const LatticeFill blocks = fill_lattice({loop}, FillInterior::Blocks);
+  ASSERT_TRUE(blend.ok) << blend.why;
+  ASSERT_TRUE(blocks.ok) << blocks.why;
+  EXPECT_EQ(blocks.cells.size(), blend.cells.size());
+  EXPECT_LE(smallest_cell_area(blend), 0.0);  // why the blocks exist
+  EXPECT_GT(smallest_cell_area(blocks), 0.0);
+  for (size_t p = 0; p < blocks.ij.size(); ++p) {
+    if (blocks.ij[p][1] >= 0) {
+      EXPECT_NEAR(blocks.uv[p].y(), blocks.ij[p][1], 1e-12) << "point " << p;
+    }
+  }
 }
 
 TEST(SubmapSmooth, SmoothingNeverInvertsAndKeepsTopology) {
