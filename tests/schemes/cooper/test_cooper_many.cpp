@@ -1128,6 +1128,36 @@ double circle_in_box(double cx, double cy, double r, double x0, double x1, doubl
   return area;
 }
 
+// A through hole that cuts into a small foot under the block (the plan =>
+// mesh campaign, seed 3 case 71), at size 9.489. The hole's wall runs down
+// into what is left of the foot, a notch taking 4 of the wall's 24 columns
+// in 8 % of its circumference; the top rim, evenly spaced, left the columns
+// leaning 0.24 of their height, and the wall's lattice fill folded. A
+// notched wall's other rim now follows from a lean of 0.2 (was 0.4).
+TEST(CooperMany, AThroughHoleNotchedIntoAFootItOverlapsIsSwept) {
+  const double bx = 63.83, by = 47.58, bz = 36.59;
+  const double r0 = 9.77, r1 = 2.51, foot_h = 9.92, r2 = 7.52, blind = 26.96;
+  const Vec3 c0(40.89, 35.2, 0), c1(46.7, 27.19, 0);
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("hole", {c0.x(), c0.y(), -bz}, {0, 0, 1}, r0, 3 * bz);
+  wb.cylinder("foot", {c1.x(), c1.y(), -foot_h}, {0, 0, 1}, r1, foot_h);
+  wb.cylinder("blind", {47.11, 11.79, -bz}, {0, 0, 1}, r2, bz + blind);
+  wb.fuse("body", {"block", "foot"});
+  wb.cut("part", {"body", "hole", "blind"});
+  const Summary s = sweep_part(wb.build_model(), 9.489).summary;
+  // The foot less the lens it shares with the hole.
+  const double d = (c0 - c1).norm();
+  const double lens =
+      r0 * r0 * std::acos((d * d + r0 * r0 - r1 * r1) / (2 * d * r0)) +
+      r1 * r1 * std::acos((d * d + r1 * r1 - r0 * r0) / (2 * d * r1)) -
+      0.5 * std::sqrt((-d + r0 + r1) * (d + r0 - r1) * (d - r0 + r1) * (d + r0 + r1));
+  const double exact = bx * by * bz - M_PI * r0 * r0 * bz - M_PI * r2 * r2 * blind +
+                       (M_PI * r1 * r1 - lens) * foot_h;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.05);  // 0.06: the foot's crescent is a quarter of an element wide
+}
+
 // A blind hole from the top of a square boss across the boss's corner, a
 // second boss 0.63 beside it (the plan => mesh campaign, seed 3 case 185),
 // at size 3.88. The hole's wall, notched where the boss's corner cuts it,
