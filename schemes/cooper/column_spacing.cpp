@@ -272,7 +272,11 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       if (!increasing) continue;
       double squeeze = 1.0;
       for (size_t m = 1; m < t.size(); ++m) squeeze = std::min(squeeze, (t[m] - t[m - 1]) * n);
-      if (far && !rectangle && (squeeze < kMinSqueeze || shear < kMinShear)) continue;
+      // A closed rim follows at any lean: round a hole every even column
+      // leans the same way, and the ribs spiral (a wall leaning 0.07 round
+      // a hole across a boss's edge inverted a hex beside the hole).
+      if (far && !rectangle && (squeeze < kMinSqueeze || (shear < kMinShear && c.start != c.end)))
+        continue;
       // 3D arc length along a curve that runs along a level is its profile's.
       mesh::SizeFunction sf = steps_through(t, c.length);
       if (out.count(id)) conflicting.insert(id);

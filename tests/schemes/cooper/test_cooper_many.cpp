@@ -1182,6 +1182,38 @@ TEST(CooperMany, ABlindHoleAcrossABossCornerFillsItsWallInBlocks) {
   EXPECT_GT(s.min_sj, 0.05);  // 0.07 in the boss's corner beside the hole
 }
 
+// A through hole across a round boss's edge, beside two more bosses, at
+// size 10.001 (the plan => mesh campaign, seed 5 case 37). The hole's wall
+// has one closed rim (its foot) and a notched one (the block's top and the
+// boss's top). The even columns lean by only 0.07 of their height, but on
+// a closed rim every column leans the same way: the ribs spiral round the
+// hole and a hex beside it inverted. A closed rim follows the other rim's
+// knots at any lean.
+TEST(CooperMany, AHoleWallsClosedRimFollowsItsNotchedRimAtAnyLean) {
+  const double bx = 23.63, by = 32.32, bz = 30.56;
+  const double rb = 3.42, boss_h = 12.03, rh = 3.4;
+  const Vec3 cb(14.72, 20.87, 0), ch(11.11, 26.43, 0);
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("boss", {cb.x(), cb.y(), bz}, {0, 0, 1}, rb, boss_h);
+  wb.cylinder("hole", {ch.x(), ch.y(), -bz}, {0, 0, 1}, rh, 3 * bz);
+  wb.cylinder("pin", {5.19, 27.36, bz}, {0, 0, 1}, 1.24, 18.1);
+  wb.cylinder("hub", {13.8, 9.56, bz}, {0, 0, 1}, 5.82, 18.23);
+  wb.fuse("body", {"block", "boss", "pin", "hub"});
+  wb.cut("part", {"body", "hole"});
+  const Summary s = sweep_part(wb.build_model(), 10.001).summary;
+  // The boss less the lens it shares with the hole.
+  const double d = (cb - ch).norm();
+  const double lens =
+      rb * rb * std::acos((d * d + rb * rb - rh * rh) / (2 * d * rb)) +
+      rh * rh * std::acos((d * d + rh * rh - rb * rb) / (2 * d * rh)) -
+      0.5 * std::sqrt((-d + rb + rh) * (d + rb - rh) * (d - rb + rh) * (d + rb + rh));
+  const double exact = bx * by * bz + (M_PI * rb * rb - lens) * boss_h + M_PI * 1.24 * 1.24 * 18.1 +
+                       M_PI * 5.82 * 5.82 * 18.23 - M_PI * rh * rh * bz;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // three circles of 6-8 chords
+  EXPECT_GT(s.min_sj, 0.02);                   // 0.025, where the hole leaves the boss at size 10
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {
