@@ -11,8 +11,10 @@ the automatic decomposition off so that the cooper scheme itself is judged.
 Each part is planned (`cooperage plan --json`); a part the plan accepts is
 run (`cooperage run -q`). A case fails when the plan accepted it and the run
 did not exit 0, or when any command crashed, hung (60 s) or exited with
-another code than 0 or 2. Writes DIR/results.jsonl and keeps failing
-journals in DIR/failures/. Exit status 1 when any case failed.
+another code than 0 or 2. Writes DIR/results.jsonl (with each meshed part's
+smallest scaled Jacobian, from `cooperage quality`, to compare two builds'
+quality part by part) and keeps failing journals in DIR/failures/. Exit
+status 1 when any case failed.
 """
 import argparse
 import json
@@ -110,13 +112,24 @@ def random_part(rng):
     return text, what
 
 
-def run(cmd, cwd):
+def run(cmd, cwd, stdout=False):
     t0 = time.time()
     try:
         p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=TIME_LIMIT)
-        return p.returncode, p.stderr, time.time() - t0, False
+        return p.returncode, p.stdout if stdout else p.stderr, time.time() - t0, False
     except subprocess.TimeoutExpired:
         return None, "", TIME_LIMIT, True
+
+
+def min_scaled_jacobian(binary, cwd):
+    """The mesh's smallest scaled Jacobian over its blocks, as `cooperage
+    quality` reports it (None when it cannot be read)."""
+    rc, out, _, hung = run([binary, "quality", "out.vtu"], cwd, stdout=True)
+    if hung or rc != 0:
+        return None
+    values = [float(line.split()[1]) for line in out.splitlines()
+              if line.strip().startswith("scaled_jacobian")]
+    return min(values) if values else None
 
 
 def main():
@@ -147,6 +160,8 @@ def main():
                                 "error": err2.strip().splitlines()[:1]})
                     bad = bad or hung2 or rc2 != 0
                     verdict = "meshed" if rc2 == 0 else "planned, run failed"
+                    if rc2 == 0:
+                        row["min_sj"] = min_scaled_jacobian(binary, tmp)
                 else:
                     verdict = "refused at plan" if rc == 2 else "plan crashed or hung"
                     row["error"] = err.strip().splitlines()[:1]
