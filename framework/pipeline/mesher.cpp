@@ -140,6 +140,22 @@ constexpr const char* kNoSchemeHint =
     "`cooperage plan` gives every scheme's reason; cut the volume with <webcut> or give it a "
     "sweep hint (<volume sources/targets/direction>)";
 
+/// What to do about a volume its scheme accepted and then failed on: in the
+/// plan => mesh campaign (bench/RESULTS.md, session 20) such failures are
+/// mostly features closer than an element, and half the size meshed a
+/// quarter of them.
+std::string failed_volume_hint(const io::MeshSettings& settings, int volume) {
+  std::optional<double> size = settings.size;
+  for (const auto& v : settings.volumes) {
+    if (v.id == volume && v.sizing.size) size = v.sizing.size;
+  }
+  const std::string id = std::to_string(volume);
+  std::string tag = "<volume id=\"" + id + "\" size=\"" +
+                    (size ? number(0.5 * *size) : std::string("...")) + "\"/>";
+  return "features closer than an element may meet here: a smaller size on volume " + id + " (" +
+         tag + ") or a <webcut> between them may mesh it";
+}
+
 std::unique_ptr<tbb::global_control> limit_threads(int requested) {
   return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                static_cast<size_t>(limit_threads_count(requested)));
@@ -331,7 +347,10 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
         },
         commit_volume_keep_quality,
         [&](int id, const MeshingError& e) {
-          refusals.refuse(id, e.code(), e.message(), e.hint());
+          refusals.refuse(id, e.code(), e.message(),
+                          e.hint().empty() && e.code() == ErrorCode::MeshingFailed
+                              ? failed_volume_hint(settings, id)
+                              : e.hint());
         });
     done.insert(wave.begin(), wave.end());
     pending = std::move(later);

@@ -292,6 +292,53 @@ TEST_F(Reliability, ThreadsAreCappedAtTheHardwareCount) {
   EXPECT_EQ(run_error(journal(body), options), "");
 }
 
+// A volume scheme that accepts what the volume map accepts and then fails
+// while meshing, as cooper does on the parts of the plan => mesh campaign
+// it cannot mesh yet.
+class AcceptsThenFails final : public scheme::VolumeScheme {
+ public:
+  explicit AcceptsThenFails(const scheme::VolumeScheme& map) : map_(map) {}
+  std::string_view name() const override { return "accepts_then_fails"; }
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
+    return map_.applicable(view);
+  }
+  void constrain(const scheme::VolumeView& view,
+                 intervals::IntervalProblem& problem) const override {
+    map_.constrain(view, problem);
+  }
+  scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override {
+    return map_.roles(view);
+  }
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& /*settings*/) const override {
+    throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(view.volume_id),
+                       "hex 3 of layer 0 is inverted");
+  }
+
+ private:
+  const scheme::VolumeScheme& map_;
+};
+
+// A scheme that fails on a volume it accepted gives no advice of its own;
+// the error then says what may help, with the size to try (half the
+// volume's own) in the journal's words.
+TEST_F(Reliability, AVolumeItsSchemeFailedOnSaysWhatSizeToTry) {
+  registry_.add(std::make_unique<AcceptsThenFails>(*registry_.volume_scheme("map")));
+  try {
+    run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" size="0.8" scheme="accepts_then_fails"/></mesh>
+  <export file="out.vtu"/>
+)"),
+            registry_, selector::mesh_options());
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("hex 3 of layer 0 is inverted"), std::string::npos)
+        << e.what();
+    EXPECT_NE(e.hint().find("<volume id=\"1\" size=\"0.4\"/>"), std::string::npos) << e.hint();
+  }
+  EXPECT_TRUE(files().empty());
+}
+
 // ---- assemblies: a verdict per volume -----------------------------------------------
 
 const char* kBrickAndPinnedCylinder = R"(  <geometry>
