@@ -143,7 +143,7 @@ constexpr const char* kNoSchemeHint =
 /// What to do about a volume its scheme accepted and then failed on: in the
 /// plan => mesh campaign (bench/RESULTS.md, session 20) such failures are
 /// mostly features closer than an element, and half the size meshed a
-/// quarter of them.
+/// third of them.
 std::string failed_volume_hint(const io::MeshSettings& settings, int volume) {
   std::optional<double> size = settings.size;
   for (const auto& v : settings.volumes) {
