@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -192,6 +194,34 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
   return changed;
 }
 
+// Where the subcaps no step could resolve lie, for a person: " on surfaces
+// 3, 5 (upper end) and 9, a virtual cap (lower end)"; empty when none.
+std::string unmatched_surfaces(const SweepState& s, const ImprintResult& r) {
+  std::string out;
+  for (size_t e = 0; e < 2; ++e) {
+    std::set<int> caps;
+    for (int id : r.unmatched[e]) {
+      // A subcap cut during this imprinting names the piece it came from.
+      for (auto o = r.origin.find(id); o != r.origin.end(); o = r.origin.find(id)) id = o->second;
+      if (id >= 0 && static_cast<size_t>(id) < s.pieces.size())
+        caps.insert(s.pieces[static_cast<size_t>(id)].cap);
+    }
+    if (caps.empty()) continue;
+    std::string list;
+    for (int c : caps) {
+      if (c == 0) continue;
+      list += (list.empty() ? "" : ", ") + std::to_string(c);
+    }
+    const bool virtual_cap = caps.count(0) > 0;
+    std::string what =
+        list.empty() ? "" : (caps.size() - virtual_cap > 1 ? "surfaces " : "surface ") + list;
+    if (virtual_cap) what += std::string(what.empty() ? "" : ", ") + "a virtual cap";
+    out += std::string(out.empty() ? " on " : " and ") + what +
+           (e == 0 ? " (upper end)" : " (lower end)");
+  }
+  return out;
+}
+
 }  // namespace
 
 // cite: Blacker 1996, sec. 5 (5.1 matching, 5.2 subtraction, 5.3
@@ -207,7 +237,8 @@ void imprint_barrels(SweepState& s) {
       const BarrelEnds ends = ends_of(s, b);
       const ImprintResult r = imprint_subcaps(ends, options);
       if (!r.ok) {
-        fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed (" + r.why + ")");
+        fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed" + unmatched_surfaces(s, r) +
+                        " (" + r.why + ")");
       }
       changed = apply(s, b, ends, r) || changed;
     }

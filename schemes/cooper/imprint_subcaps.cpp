@@ -57,7 +57,8 @@ ImprintResult Imprinter::run() {
     r_.why = "no imprinting step applies to the unmatched subcaps" + unmatched_list();
     return r_;
   }
-  r_.why = "imprinting did not finish within " + std::to_string(options_.max_steps) + " steps";
+  r_.why = "imprinting did not finish within " + std::to_string(options_.max_steps) +
+           " steps; unmatched subcaps" + unmatched_list();
   return r_;
 }
 
@@ -74,9 +75,9 @@ std::string Imprinter::unmatched_list() {
   std::string s;
   for (int e = 0; e < 2; ++e) {
     for (const Subcap& c : caps(e)) {
-      if (!matched(c.id))
-        s +=
-            std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
+      if (matched(c.id)) continue;
+      s += std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
+      r_.unmatched[static_cast<size_t>(e)].push_back(c.id);
     }
   }
   return s;

@@ -32,6 +32,7 @@
 
 #include "schemes/cooper/imprint_polygons.h"
 
+#include <array>
 #include <map>
 #include <set>
 #include <string>
@@ -76,6 +77,8 @@ struct ImprintResult {
   std::vector<ImprintStep> steps;  ///< in order
   /// New subcap id -> the input subcap it was cut from.
   std::map<int, int> origin;
+  /// For !ok: the subcaps no step could resolve, at the upper and lower end.
+  std::array<std::vector<int>, 2> unmatched;
 };
 
 /// Imprints and matches the subcaps of one barrel's ends (sec. 5).

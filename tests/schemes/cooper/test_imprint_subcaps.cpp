@@ -302,6 +302,27 @@ TEST(ImprintSubcaps, SeamingClosesSmallCracksButNeverOnTheExterior) {
   }
 }
 
+// A run that stops before every subcap is matched says which ones are
+// left, per end, so the caller can name the surfaces they lie on.
+TEST(ImprintSubcaps, AnUnfinishedRunListsTheUnmatchedSubcapsPerEnd) {
+  Hand h;
+  h.exterior(rect(0, 0, 4, 4));
+  h.subcap(0, 1, {rect(0, 0, 4, 4)});
+  h.subcap(1, 2, {rect(0, 0, 4, 2)});
+  h.subcap(1, 3, {rect(0, 2, 4, 4)});
+  ImprintOptions none;
+  none.max_steps = 0;
+  const ImprintResult r = imprint_subcaps(h.ends, none);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.unmatched[0], std::vector<int>{1});
+  EXPECT_EQ(r.unmatched[1], (std::vector<int>{2, 3}));
+  EXPECT_NE(r.why.find("upper 1, lower 2, lower 3"), std::string::npos) << r.why;
+  // With its steps the same ends imprint and leave none.
+  const ImprintResult done = imprint_subcaps(h.ends);
+  expect_partition(done, 16);
+  EXPECT_TRUE(done.unmatched[0].empty() && done.unmatched[1].empty());
+}
+
 // Fig. 18 style: the upper subcap a, ribbed only to b along the bottom,
 // pokes past b's top boundary into c: the subtraction leaves b' touching
 // itself twice (n = 2), resolved into 3 loops; the overlap is subtracted
