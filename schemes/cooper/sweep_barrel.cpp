@@ -35,18 +35,33 @@ void cap_adjacency(const SweepInput& in, std::vector<int>& start, std::vector<in
   for (const auto& e : edges) next.push_back(e.second);
 }
 
-std::string describe_bad(const SweepInput& in, long bad, double worst) {
+// "hex 66 of layer 0, at (17.6, 5.7, 33), is inverted (...)": where it is,
+// so that a person can find it in the part (its centre, 3 significant digits).
+std::string describe_bad(const SweepInput& in, const SweepResult& out, long bad, double worst) {
   std::ostringstream s;
   const long per_layer_h = static_cast<long>(in.quads.size());
   const long total_h = per_layer_h * in.layers;
+  Vec3 centre = Vec3::Zero();
   if (bad < total_h) {
     s << "hex " << bad % std::max(1L, per_layer_h) << " of layer "
       << bad / std::max(1L, per_layer_h);
+    if (static_cast<size_t>(bad) < out.hexes.size()) {
+      for (int n : out.hexes[static_cast<size_t>(bad)])
+        centre += out.points[static_cast<size_t>(n)];
+      centre /= 8.0;
+    }
   } else {
     const long w = bad - total_h;
     const long per_layer_w = std::max(1L, static_cast<long>(in.tris.size()));
     s << "wedge " << w % per_layer_w << " of layer " << w / per_layer_w;
+    if (static_cast<size_t>(w) < out.wedges.size()) {
+      for (int n : out.wedges[static_cast<size_t>(w)]) centre += out.points[static_cast<size_t>(n)];
+      centre /= 6.0;
+    }
   }
+  s.precision(3);
+  s << ", at (" << centre.x() << ", " << centre.y() << ", " << centre.z() << "),";
+  s.precision(6);
   s << " is inverted (minimum scaled Jacobian " << worst << ")";
   return s.str();
 }
@@ -167,7 +182,8 @@ SweepResult sweep_barrel(const SweepInput& in, const SweepOptions& options) {
     out.ok = true;
     return out;
   }
-  out.why = (placed ? std::string() : why + "; ") + describe_bad(in, bad, out.min_scaled_jacobian) +
+  out.why = (placed ? std::string() : why + "; ") +
+            describe_bad(in, out, bad, out.min_scaled_jacobian) +
             " after the least-squares projection and the smoothing fallback";
   return out;
 }

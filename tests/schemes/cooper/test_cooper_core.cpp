@@ -206,6 +206,19 @@ TEST(SweepBarrel, StraightQuadCapGivesUnitCubes) {
   }
 }
 
+// A sweep that cannot mend an inverted hex says which one and where: a
+// one-cell barrel whose source quad is turned the wrong way round (every
+// node a rib node, so nothing can move).
+TEST(SweepBarrel, AnInvertedHexIsNamedWithItsCentre) {
+  SweepInput in = grid_barrel(1, 1, 2, 0.0, false);
+  auto& q = in.quads.front();
+  std::swap(q[1], q[3]);
+  const SweepResult r = sweep_barrel(in);
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(r.why.find("hex 0 of layer 0, at (0.5, 0.5, 0.5), is inverted"), std::string::npos)
+      << r.why;
+}
+
 TEST(SweepBarrel, CurvedAxisFollowsTheArc) {
   const SweepInput in = grid_barrel(4, 4, 8, 1.2, false);
   const SweepResult r = sweep_barrel(in);
