@@ -749,6 +749,13 @@ TEST(CooperMany, LugWithAShallowConeUnderItSweepsTheConeAsACap) {
                               "lug over a 31-degree cone");
 }
 
+/// Area of the lens two circles of radii r0 and r1, centres d apart, share.
+double lens_area(double r0, double r1, double d) {
+  return r0 * r0 * std::acos((d * d + r0 * r0 - r1 * r1) / (2 * d * r0)) +
+         r1 * r1 * std::acos((d * d + r1 * r1 - r0 * r0) / (2 * d * r1)) -
+         0.5 * std::sqrt((-d + r0 + r1) * (d + r0 - r1) * (d - r0 + r1) * (d + r0 + r1));
+}
+
 /// The run of the built-in schemes on `model` at `size`, with the mesh
 /// checked (check_mesh); cooper must mesh the volume.
 struct SweptPart {
@@ -1013,10 +1020,7 @@ TEST(CooperMany, AThroughHoleAcrossABossEdgeIsSwept) {
   // The hole lies inside the block's footprint; over the boss it removes
   // the lens the two circles share.
   const double d = (c1 - c2).norm();
-  const double lens =
-      r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
-      r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
-      0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
+  const double lens = lens_area(r1, r2, d);
   const double exact = bx * by * bz + M_PI * r1 * r1 * boss_h - M_PI * r2 * r2 * bz - lens * boss_h;
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
   EXPECT_GT(s.min_sj, 0.3);  // 0.77
@@ -1148,10 +1152,7 @@ TEST(CooperMany, AThroughHoleNotchedIntoAFootItOverlapsIsSwept) {
   const Summary s = sweep_part(wb.build_model(), 9.489).summary;
   // The foot less the lens it shares with the hole.
   const double d = (c0 - c1).norm();
-  const double lens =
-      r0 * r0 * std::acos((d * d + r0 * r0 - r1 * r1) / (2 * d * r0)) +
-      r1 * r1 * std::acos((d * d + r1 * r1 - r0 * r0) / (2 * d * r1)) -
-      0.5 * std::sqrt((-d + r0 + r1) * (d + r0 - r1) * (d - r0 + r1) * (d + r0 + r1));
+  const double lens = lens_area(r0, r1, d);
   const double exact = bx * by * bz - M_PI * r0 * r0 * bz - M_PI * r2 * r2 * blind +
                        (M_PI * r1 * r1 - lens) * foot_h;
   EXPECT_NEAR(s.volume, exact, 0.005 * exact);
@@ -1204,10 +1205,7 @@ TEST(CooperMany, AHoleWallsClosedRimFollowsItsNotchedRimAtAnyLean) {
   const Summary s = sweep_part(wb.build_model(), 10.001).summary;
   // The boss less the lens it shares with the hole.
   const double d = (cb - ch).norm();
-  const double lens =
-      rb * rb * std::acos((d * d + rb * rb - rh * rh) / (2 * d * rb)) +
-      rh * rh * std::acos((d * d + rh * rh - rb * rb) / (2 * d * rh)) -
-      0.5 * std::sqrt((-d + rb + rh) * (d + rb - rh) * (d - rb + rh) * (d + rb + rh));
+  const double lens = lens_area(rb, rh, d);
   const double exact = bx * by * bz + (M_PI * rb * rb - lens) * boss_h + M_PI * 1.24 * 1.24 * 18.1 +
                        M_PI * 5.82 * 5.82 * 18.23 - M_PI * rh * rh * bz;
   EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // three circles of 6-8 chords
