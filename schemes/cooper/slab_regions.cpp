@@ -224,14 +224,25 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
       Cycle c;
       c.faces = faces;
       // The contacts of the caps bounding this slab on their material side.
-      std::set<bool> here;
+      std::set<bool> here, on_holes;
+      bool all_planar = true;
       for (const CapContact& ct : lattice.contacts) {
         if (!decides(ct) || !std::binary_search(faces.begin(), faces.end(), ct.face)) continue;
         const double h = height(lattice.cap_class.at(ct.cap));
         const bool bounds = order.upper.at(ct.cap) ? std::abs(slab.top - h) <= tol
                                                    : std::abs(slab.bottom - h) <= tol;
-        if (bounds) here.insert(outer_at(ct));
+        if (!bounds) continue;
+        here.insert(outer_at(ct));
+        if (ct.cap_loop != 0) on_holes.insert(outer_at(ct));
+        all_planar = all_planar && facts.face(ct.cap)->planar;
       }
+      // A plane cap whose hole loop this cycle walls surrounds it in this
+      // slab, so the cycle is what that contact says. A convex contact on
+      // an outer loop only says the cap ends at the wall: a blind hole's
+      // floor ends at a through hole crossing it, whose wall is still a
+      // hole's. (On a sphere or cone which loop is outer is the CAD's
+      // choice, so curved caps keep the refusal.)
+      if (here.size() > 1 && on_holes.size() == 1 && all_planar) here = on_holes;
       bool any_mixed = false;
       for (int f : faces) any_mixed = any_mixed || mixed.count(f) > 0;
       if (here.size() > 1 || (any_mixed && here.empty())) {

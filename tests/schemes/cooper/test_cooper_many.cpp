@@ -1212,6 +1212,28 @@ TEST(CooperMany, AHoleWallsClosedRimFollowsItsNotchedRimAtAnyLean) {
   EXPECT_GT(s.min_sj, 0.02);                   // 0.025, where the hole leaves the boss at size 10
 }
 
+// A blind hole from the bottom crossed by a through hole (the plan => mesh
+// campaign, seed 3 case 131). The blind hole's floor ends at the through
+// hole's wall, on the floor's outer loop; the slab above it was refused
+// because that contact called the wall an outer one while the top's hole
+// loop calls it a hole's.
+TEST(CooperMany, AThroughHoleCrossingABlindHolesFloorIsSwept) {
+  const double bx = 58.11, by = 59.87, bz = 22.11;
+  const double rb = 9.97, depth = 9.54, rt = 7.46;
+  const Vec3 cb(25.83, 27.18, 0), ct(34.31, 39.75, 0);
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {bx, by, bz});
+  wb.cylinder("blind", {cb.x(), cb.y(), -bz}, {0, 0, 1}, rb, bz + depth);
+  wb.cylinder("through", {ct.x(), ct.y(), -bz}, {0, 0, 1}, rt, 3 * bz);
+  wb.cut("part", {"block", "blind", "through"});
+  const Summary s = sweep_part(wb.build_model(), 6.892).summary;
+  // The lens both holes take below the floor is taken once.
+  const double lens = lens_area(rb, rt, (cb - ct).norm());
+  const double exact = bx * by * bz - M_PI * rb * rb * depth - M_PI * rt * rt * bz + lens * depth;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);  // circles of 8-10 chords
+  EXPECT_GT(s.min_sj, 0.3);
+}
+
 // The shipped example examples/cylinder_boss.xml (round boss on a cylinder:
 // pave for the disk and annulus caps) meshes with the built-in schemes.
 TEST(CooperMany, ExampleCylinderBossMeshes) {

@@ -286,6 +286,56 @@ TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
   EXPECT_TRUE(s.order.upper.at(floor));
 }
 
+// A 6 x 6 x 3 block with a 2 x 2 pocket 1 deep from the bottom and a
+// 2 x 2 through hole overlapping a quarter of it (the plan => mesh
+// campaign's seed 3 case 131, with circles). The pocket's floor ends at the
+// hole's wall: a convex contact on the floor's outer loop, while the top's
+// hole loop says the same wall walls a hole.
+std::vector<PolyFace> pocket_crossed_by_hole() {
+  std::vector<PolyFace> f = walls(0, 0, 6, 6, 0, 3);
+  const Vec3 px(1, 0, 0), py(0, 1, 0), mx(-1, 0, 0), my(0, -1, 0);
+  f.push_back(
+      {oriented(rect_xy(0, 0, 6, 6, 0), kDown),
+       oriented(
+           {{1, 1, 0}, {3, 1, 0}, {3, 2, 0}, {4, 2, 0}, {4, 4, 0}, {2, 4, 0}, {2, 3, 0}, {1, 3, 0}},
+           kDown, false)});
+  f.push_back(
+      {oriented(rect_xy(0, 0, 6, 6, 3), kUp), oriented(rect_xy(2, 2, 4, 4, 3), kUp, false)});
+  // The pocket: its floor (an L, facing the cavity below) and four walls.
+  f.push_back(
+      {oriented({{1, 1, 1}, {3, 1, 1}, {3, 2, 1}, {2, 2, 1}, {2, 3, 1}, {1, 3, 1}}, kDown)});
+  f.push_back({oriented({{1, 1, 0}, {1, 3, 0}, {1, 3, 1}, {1, 1, 1}}, px)});
+  f.push_back({oriented({{1, 1, 0}, {3, 1, 0}, {3, 1, 1}, {1, 1, 1}}, py)});
+  f.push_back({oriented({{3, 1, 0}, {3, 2, 0}, {3, 2, 1}, {3, 1, 1}}, mx)});
+  f.push_back({oriented({{1, 3, 0}, {2, 3, 0}, {2, 3, 1}, {1, 3, 1}}, my)});
+  // The hole: two walls notched where the pocket takes their foot.
+  f.push_back({oriented({{2, 2, 1}, {2, 3, 1}, {2, 3, 0}, {2, 4, 0}, {2, 4, 3}, {2, 2, 3}}, px)});
+  f.push_back({oriented({{2, 2, 1}, {3, 2, 1}, {3, 2, 0}, {4, 2, 0}, {4, 2, 3}, {2, 2, 3}}, py)});
+  f.push_back({oriented({{4, 2, 0}, {4, 4, 0}, {4, 4, 3}, {4, 2, 3}}, mx)});
+  f.push_back({oriented({{2, 4, 0}, {4, 4, 0}, {4, 4, 3}, {2, 4, 3}}, my)});
+  return f;
+}
+
+TEST(PlanSteps, AHoleCrossingAPocketsFloorStillWallsAHole) {
+  const VolumeFacts facts = testing::polyhedron_facts(pocket_crossed_by_hole());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_TRUE(s.slabs.ok) << s.slabs.why;
+  ASSERT_EQ(s.slabs.slabs.size(), 2u);
+  // Above the floor: the block's walls round the hole's; below it: the
+  // block's walls round the pocket and the hole's feet, one cavity.
+  for (const Slab& slab : s.slabs.slabs) {
+    ASSERT_EQ(slab.cycles.size(), 2u);
+    ASSERT_EQ(slab.regions.size(), 1u);
+    int outer = 0;
+    for (const Cycle& c : slab.cycles) outer += c.outer ? 1 : 0;
+    EXPECT_EQ(outer, 1);
+    const Cycle& hole = slab.cycles[static_cast<size_t>(slab.regions[0].back())];
+    EXPECT_FALSE(hole.outer);
+    EXPECT_EQ(hole.faces.size(), slab.top > 1.5 ? 4u : 8u);
+  }
+  EXPECT_EQ(s.tree.barrels.size(), 2u);
+}
+
 TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
   const VolumeFacts facts = testing::polyhedron_facts(stepped_l());
   const Steps s = run_steps(facts, z_caps(facts), down());
