@@ -293,7 +293,8 @@ using detail::Loop;
 // cite: Blacker 1996, sec. 5.5 (self-intersecting subcaps: n + 1 loops).
 std::vector<Loop> split_self_intersections(const Loop& input, const std::map<int, Vec2>& xy,
                                            bool even_parity,
-                                           std::vector<std::pair<int, int>>* combined) {
+                                           std::vector<std::pair<int, int>>* combined,
+                                           const std::function<bool(int, int)>& combinable) {
   Loop loop = input;
   // Combine proper crossings onto node pairs.
   for (int guard = 0; guard < 1000; ++guard) {
@@ -312,6 +313,12 @@ std::vector<Loop> split_self_intersections(const Loop& input, const std::map<int
         cands.push_back({p, q, (xy.at(loop[p]) - xy.at(loop[q])).norm()});
     }
     std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) { return x.d < y.d; });
+    // Two ribbed nodes made one would leave one of their ribs pointing at
+    // a node that no loop holds any more; such pairs go last.
+    if (combinable) {
+      std::stable_partition(cands.begin(), cands.end(),
+                            [&](const Cand& c) { return combinable(loop[c.p], loop[c.q]); });
+    }
     const Cand* pick = &cands.front();
     if (even_parity) {
       for (const Cand& c : cands) {

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <utility>
@@ -39,11 +40,14 @@ std::vector<std::vector<std::vector<int>>> separate_regions(
 /// Splits closed loop `loop` (no repeated nodes) at its repeated or crossing
 /// points into n + 1 loops (sec. 5.5). Crossings between segments are first
 /// combined onto a node pair (the closer pair whose loops stay even when
-/// `even_parity`); `combined` receives (removed node, kept node). Returns
-/// the loops; counter-clockwise ones are caps, clockwise ones overlaps.
+/// `even_parity`); `combined` receives (removed node, kept node). A pair
+/// `combinable` rejects (two nodes ribbed to different opposing nodes) is
+/// taken only when no other pair of that crossing is left. Returns the
+/// loops; counter-clockwise ones are caps, clockwise ones overlaps.
 std::vector<std::vector<int>> split_self_intersections(
     const std::vector<int>& loop, const std::map<int, Vec2>& xy, bool even_parity,
-    std::vector<std::pair<int, int>>* combined = nullptr);
+    std::vector<std::pair<int, int>>* combined = nullptr,
+    const std::function<bool(int, int)>& combinable = {});
 
 namespace detail {
 

@@ -214,10 +214,18 @@ std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& p
   const Subcap old = caps(e)[bi];
   caps(e).erase(caps(e).begin() + static_cast<long>(bi));
   std::vector<Loop> outers, overlaps;
-  for (const Loop& p : pieces) {
+  std::vector<Loop> todo = pieces;
+  const auto combinable = [&](int u, int v) { return !(partner(e, u) && partner(e, v)); };
+  for (size_t pi = 0; pi < todo.size(); ++pi) {
     std::vector<std::pair<int, int>> combined;
-    const auto parts = split_self_intersections(p, xy(), options_.even_parity, &combined);
+    const auto parts =
+        split_self_intersections(todo[pi], xy(), options_.even_parity, &combined, combinable);
     apply_combined(e, combined);
+    // The pieces still to come share the split path: they lose the node too.
+    for (const auto& [drop, keep] : combined) {
+      for (size_t pj = pi + 1; pj < todo.size(); ++pj)
+        std::replace(todo[pj].begin(), todo[pj].end(), drop, keep);
+    }
     if (parts.size() > 1) r_.steps.push_back(ImprintStep::SelfIntersect);
     for (const Loop& part : parts) {
       const double a = signed_area(part, xy());

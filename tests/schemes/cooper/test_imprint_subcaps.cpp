@@ -362,6 +362,34 @@ TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
   EXPECT_EQ(negative, 1);
 }
 
+// Two nodes that both carry ribs (to different opposing nodes) made one
+// would leave a rib pointing at a node no loop holds (found in the
+// campaign's seed 3 case 8): such a pair is combined only when the crossing
+// offers no other, and the loops stay even.
+TEST(ImprintSubcaps, SplitSelfIntersectionsCombinesRibbedPairsLast) {
+  std::map<int, Vec2> xy;
+  std::vector<int> loop;
+  int id = 1;
+  for (Vec2 p : {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(3, 0), Vec2(4, 0), Vec2(4, 1), Vec2(3, 1),
+                 Vec2(3, -1), Vec2(2, -1), Vec2(1, -1), Vec2(1, 1), Vec2(0, 1)}) {
+    xy[id] = p;
+    loop.push_back(id++);
+  }
+  std::vector<std::pair<int, int>> free_choice;
+  split_self_intersections(loop, xy, true, &free_choice);
+  ASSERT_FALSE(free_choice.empty());
+  const std::set<int> ribbed = {free_choice.front().first, free_choice.front().second};
+  std::vector<std::pair<int, int>> combined;
+  const auto parts = split_self_intersections(loop, xy, true, &combined, [&](int u, int v) {
+    return !(ribbed.count(u) && ribbed.count(v));
+  });
+  ASSERT_FALSE(combined.empty());
+  for (const auto& [drop, keep] : combined)
+    EXPECT_FALSE(ribbed.count(drop) && ribbed.count(keep)) << drop << " onto " << keep;
+  EXPECT_GE(parts.size(), 2u);
+  for (const auto& p : parts) EXPECT_EQ(p.size() % 2, 0u);
+}
+
 // Two features meeting at a corner (issue 15, the campaign's case 1810): a
 // notch on the exterior at (0,1)-(1,2) and a boss base at (1,2)-(2,3) touch
 // at (1,2), so the upper remainder's outer loop and hole share that node.
