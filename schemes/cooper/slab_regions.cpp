@@ -83,6 +83,44 @@ int keep_widest_outer(const VolumeFacts& facts, const SideLattice& lattice,
   return 1;
 }
 
+/// For a cycle no cap bounding its slab decides (a wall of a face that
+/// walls the volume in at one level and a hole at another): which way its
+/// faces face across the sweep. A hole's walls face the middle of its rims,
+/// an outer wall faces away from it. +1 outer, -1 hole, 0 undecided.
+int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const Cycle& cycle) {
+  geom::Vec3 axis = geom::Vec3::Zero();
+  for (int cap : lattice.caps) {
+    if (facts.face(cap)->planar) {
+      axis = facts.face(cap)->normal.normalized();
+      break;
+    }
+  }
+  if (axis.squaredNorm() == 0) return 0;
+  auto across = [&](const geom::Vec3& v) { return v - axis * axis.dot(v); };
+  geom::Vec3 middle = geom::Vec3::Zero();
+  size_t n = 0;
+  for (const CapContact& k : lattice.contacts) {
+    if (!std::binary_search(cycle.faces.begin(), cycle.faces.end(), k.face)) continue;
+    for (const geom::Vec3& p : facts.curves.at(k.curve).samples) {
+      middle += p;
+      ++n;
+    }
+  }
+  if (n == 0) return 0;
+  middle /= static_cast<double>(n);
+  int away = 0, towards = 0;
+  for (int f : cycle.faces) {
+    const FaceFact& face = *facts.face(f);
+    const geom::Vec3 normal = across(face.normal);
+    const geom::Vec3 to_middle = across(middle - face.centre);
+    if (normal.norm() < 0.5 || to_middle.norm() < 1e-9 * facts.size()) continue;
+    (normal.dot(to_middle) > 0 ? towards : away)++;
+  }
+  if (away > 0 && towards == 0) return 1;
+  if (towards > 0 && away == 0) return -1;
+  return 0;
+}
+
 }  // namespace
 
 int region_of_cycle(const Slab& slab, int c) {
@@ -245,18 +283,38 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
       if (here.size() > 1 && on_holes.size() == 1 && all_planar) here = on_holes;
       bool any_mixed = false;
       for (int f : faces) any_mixed = any_mixed || mixed.count(f) > 0;
-      if (here.size() > 1 || (any_mixed && here.empty())) {
-        out.why = "side surface " + std::to_string(faces.front()) +
-                  " walls the volume in at one cap and a hole at another";
-        return out;
+      // The walls' facing across the sweep decides, when it is unanimous,
+      // where the caps say nothing (no cap bounds this slab: a blind hole
+      // from one end reaching into one from the other), disagree, decide a
+      // face that walls a hole elsewhere by an outer loop alone (a shallow
+      // blind hole's floor beside a deeper one), or call the cycle other
+      // than its faces' own roles (holes and pockets that overlap).
+      int facing = 0;
+      bool facing_known = false;
+      auto facing_now = [&] {
+        if (!facing_known) facing = order.straight ? facing_of_cycle(facts, lattice, c) : 0;
+        facing_known = true;
+        return facing;
+      };
+      if (here.size() > 1 || (any_mixed && on_holes.empty())) {
+        if (facing_now()) {
+          here = {facing > 0};
+        } else if (here.size() != 1) {
+          out.why = "side surface " + std::to_string(faces.front()) +
+                    " walls the volume in at one cap and a hole at another";
+          return out;
+        }
       }
       c.outer = here.empty() ? out.outer_face.at(faces.front()) : *here.begin();
       for (int f : faces) {
-        if (!mixed.count(f) && out.outer_face.at(f) != c.outer) {
-          out.why = "the sides " + std::to_string(faces.front()) + " and " + std::to_string(f) +
-                    " form one cycle but wall the volume on different sides";
-          return out;
+        if (mixed.count(f) || out.outer_face.at(f) == c.outer) continue;
+        if (facing_now()) {
+          c.outer = facing > 0;
+          break;
         }
+        out.why = "the sides " + std::to_string(faces.front()) + " and " + std::to_string(f) +
+                  " form one cycle but wall the volume on different sides";
+        return out;
       }
       slab.cycles.push_back(std::move(c));
     }

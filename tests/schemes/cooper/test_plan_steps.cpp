@@ -336,6 +336,57 @@ TEST(PlanSteps, AHoleCrossingAPocketsFloorStillWallsAHole) {
   EXPECT_EQ(s.tree.barrels.size(), 2u);
 }
 
+// A 6 x 6 x 4 block with a 2 x 2 pocket from the top (floor at 1.5) and
+// one from the bottom (ceiling at 2.5) overlapping a quarter of it: between
+// 1.5 and 2.5 the two are one cavity, and no cap bounds that slab (the
+// floor faces up, the ceiling down). The cavity's walls there are walls of
+// faces that are holes' above and below.
+std::vector<PolyFace> pockets_from_both_ends() {
+  std::vector<PolyFace> f = walls(0, 0, 6, 6, 0, 4);
+  const Vec3 px(1, 0, 0), py(0, 1, 0), mx(-1, 0, 0), my(0, -1, 0);
+  f.push_back(
+      {oriented(rect_xy(0, 0, 6, 6, 0), kDown), oriented(rect_xy(2, 2, 4, 4, 0), kDown, false)});
+  f.push_back(
+      {oriented(rect_xy(0, 0, 6, 6, 4), kUp), oriented(rect_xy(1, 1, 3, 3, 4), kUp, false)});
+  f.push_back({oriented(
+      {{1, 1, 1.5}, {3, 1, 1.5}, {3, 2, 1.5}, {2, 2, 1.5}, {2, 3, 1.5}, {1, 3, 1.5}}, kUp)});
+  f.push_back({oriented(
+      {{3, 2, 2.5}, {4, 2, 2.5}, {4, 4, 2.5}, {2, 4, 2.5}, {2, 3, 2.5}, {3, 3, 2.5}}, kDown)});
+  // The top pocket's walls, two of them open at the foot onto the other.
+  f.push_back({oriented({{1, 1, 1.5}, {1, 3, 1.5}, {1, 3, 4}, {1, 1, 4}}, px)});
+  f.push_back({oriented({{1, 1, 1.5}, {3, 1, 1.5}, {3, 1, 4}, {1, 1, 4}}, py)});
+  f.push_back(
+      {oriented({{3, 1, 1.5}, {3, 2, 1.5}, {3, 2, 2.5}, {3, 3, 2.5}, {3, 3, 4}, {3, 1, 4}}, mx)});
+  f.push_back(
+      {oriented({{1, 3, 1.5}, {2, 3, 1.5}, {2, 3, 2.5}, {3, 3, 2.5}, {3, 3, 4}, {1, 3, 4}}, my)});
+  // The bottom pocket's walls, likewise open at the head.
+  f.push_back({oriented({{4, 2, 0}, {4, 4, 0}, {4, 4, 2.5}, {4, 2, 2.5}}, mx)});
+  f.push_back({oriented({{2, 4, 0}, {4, 4, 0}, {4, 4, 2.5}, {2, 4, 2.5}}, my)});
+  f.push_back(
+      {oriented({{2, 2, 0}, {2, 4, 0}, {2, 4, 2.5}, {2, 3, 2.5}, {2, 3, 1.5}, {2, 2, 1.5}}, px)});
+  f.push_back(
+      {oriented({{2, 2, 0}, {4, 2, 0}, {4, 2, 2.5}, {3, 2, 2.5}, {3, 2, 1.5}, {2, 2, 1.5}}, py)});
+  return f;
+}
+
+TEST(PlanSteps, PocketsFromBothEndsMeetInASlabTheirWallsFacingDecide) {
+  const VolumeFacts facts = testing::polyhedron_facts(pockets_from_both_ends());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_TRUE(s.slabs.ok) << s.slabs.why;
+  ASSERT_EQ(s.slabs.slabs.size(), 3u);
+  const size_t walls_per_slab[] = {4, 8, 4};  // top down: the cavity's walls
+  for (size_t k = 0; k < 3; ++k) {
+    const Slab& slab = s.slabs.slabs[k];
+    ASSERT_EQ(slab.cycles.size(), 2u) << k;
+    ASSERT_EQ(slab.regions.size(), 1u) << k;
+    const Cycle& outer = slab.cycles[static_cast<size_t>(slab.regions[0].front())];
+    const Cycle& hole = slab.cycles[static_cast<size_t>(slab.regions[0].back())];
+    EXPECT_TRUE(outer.outer) << k;
+    EXPECT_FALSE(hole.outer) << k;
+    EXPECT_EQ(hole.faces.size(), walls_per_slab[k]) << k;
+  }
+}
+
 TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
   const VolumeFacts facts = testing::polyhedron_facts(stepped_l());
   const Steps s = run_steps(facts, z_caps(facts), down());
