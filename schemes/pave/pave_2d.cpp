@@ -255,6 +255,9 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
   return quads;
 }
 
+/// Other first nodes of the outer loop pave_2d tries when the first folds.
+constexpr size_t kRetryStarts = 6;
+
 /// A frontal mesh this good is kept without trying the other coarse
 /// triangulation: a circumcentre mesh's median is ~0.98 (8-11 irregular
 /// nodes per 100 quads), so it could only win by its minimum, and a 45
@@ -289,7 +292,10 @@ MeshScore score_mesh(const std::vector<V2>& P, const std::vector<detail::Quad>& 
 
 }  // namespace
 
-QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions& options) {
+namespace {
+
+// pave_2d with the canonical frame of the outer loop's first node.
+QuadMesh2D pave_2d_once(const std::vector<std::vector<V2>>& loops, const PaveOptions& options) {
   if (loops.empty()) invalid("no boundary loop");
   size_t total = 0;
   for (const auto& l : loops) total += l.size();
@@ -425,6 +431,45 @@ QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions&
   for (size_t i = static_cast<size_t>(nb); i < P.size(); ++i) out.points[i] = frame.from(P[i]);
   out.quads = std::move(quads);
   return out;
+}
+
+}  // namespace
+
+QuadMesh2D pave_2d(const std::vector<std::vector<V2>>& loops, const PaveOptions& options) {
+  try {
+    return pave_2d_once(loops, options);
+  } catch (const MeshingError& err) {
+    if (err.code() != ErrorCode::MeshingFailed || !options.check_inversion) throw;
+    // The frame (and so every snapped coordinate, the coarse picks and the
+    // triangulation) hangs on the outer loop's first node, and a sliver
+    // face can fold from one start and not from the next (a crescent of 12
+    // nodes with tips of 28 and 40 degrees: 4 of the 12 starts fold). So
+    // the next starts are tried, in order, before the failure stands; the
+    // boundary keeps the caller's numbering.
+    const size_t n0 = loops.front().size();
+    for (size_t r = 1; r < std::min<size_t>(n0, kRetryStarts + 1); ++r) {
+      std::vector<std::vector<V2>> turned = loops;
+      std::rotate(turned.front().begin(), turned.front().begin() + static_cast<long>(r),
+                  turned.front().end());
+      QuadMesh2D m;
+      try {
+        m = pave_2d_once(turned, options);
+      } catch (const MeshingError& again) {
+        if (again.code() != ErrorCode::MeshingFailed) throw;
+        continue;
+      }
+      // Turned outer index i is the caller's (i + r) mod n0.
+      std::vector<V2> outer(m.points.begin(), m.points.begin() + static_cast<long>(n0));
+      for (size_t i = 0; i < n0; ++i) m.points[(i + r) % n0] = outer[i];
+      for (auto& q : m.quads) {
+        for (int& v : q) {
+          if (v < static_cast<int>(n0)) v = static_cast<int>((static_cast<size_t>(v) + r) % n0);
+        }
+      }
+      return m;
+    }
+    throw;
+  }
 }
 
 }  // namespace cooperage::pave

@@ -94,6 +94,29 @@ TEST(Pave2D, SingleQuadAndSmallestLoops) {
   EXPECT_EQ(check_mesh(small_hole, pave_2d(small_hole)), "");
 }
 
+// A crescent between two circles with tips of about 28 and 40 degrees and
+// a collinear node beside a reflex one (the plan => mesh campaign's seed 3
+// case 96, surface 13, in its chart). From its first node every attempt
+// folds a quad at a tip; from the next node it meshes. The mesh keeps the
+// caller's boundary numbering.
+TEST(Pave2D, ASliverThatFoldsFromItsFirstNodeIsPavedFromTheNext) {
+  const Loops crescent{{{0, 0},
+                        {1.083678032045102, 0},
+                        {2.6479247530690344, -0.33514975399358737},
+                        {4.6902316121791134, -1.5128945461949985},
+                        {6.454707595538614, -3.9773385705109043},
+                        {6.1627615986129083, -1.4597400366772479},
+                        {4.727361439392415, 0.62907810418425369},
+                        {2.4817612828912483, 1.8041588587727437},
+                        {-0.052682090829506922, 1.7926859304067415},
+                        {-2.2875517132615304, 0.5973229673646131},
+                        {-1.0494636862264848, 0.94408441029155754},
+                        {-0.32152009698471384, 1.147965526870476}}};
+  const QuadMesh2D m = pave_2d(crescent);
+  EXPECT_EQ(check_mesh(crescent, m), "");
+  EXPECT_EQ(m.boundary_count, 12);
+}
+
 TEST(Pave2D, RotatedAndTranslatedFaceGivesTheMovedMesh) {
   for (const NamedFace& face : benchmark_faces()) {
     SCOPED_TRACE(face.name);
