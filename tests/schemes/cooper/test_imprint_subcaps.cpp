@@ -339,17 +339,24 @@ TEST(ImprintSubcaps, SelfIntersectingSubcapSplitsIntoNPlusOneLoops) {
   EXPECT_GE(count(r, ImprintStep::SelfIntersect), 1u);
 }
 
-TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
-  // A loop crossing itself twice (a rectangle whose top run dips through
-  // its bottom run), as lattice nodes.
+/// A loop crossing itself twice (a rectangle whose top run dips through
+/// its bottom run), as lattice nodes 1..12.
+struct DippingLoop {
   std::map<int, Vec2> xy;
   std::vector<int> loop;
-  int id = 1;
-  for (Vec2 p : {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(3, 0), Vec2(4, 0), Vec2(4, 1), Vec2(3, 1),
-                 Vec2(3, -1), Vec2(2, -1), Vec2(1, -1), Vec2(1, 1), Vec2(0, 1)}) {
-    xy[id] = p;
-    loop.push_back(id++);
+  DippingLoop() {
+    int id = 1;
+    for (Vec2 p : {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(3, 0), Vec2(4, 0), Vec2(4, 1),
+                   Vec2(3, 1), Vec2(3, -1), Vec2(2, -1), Vec2(1, -1), Vec2(1, 1), Vec2(0, 1)}) {
+      xy[id] = p;
+      loop.push_back(id++);
+    }
   }
+};
+
+TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
+  const DippingLoop d;
+  const auto& [xy, loop] = d;
   std::vector<std::pair<int, int>> combined;
   const auto parts = split_self_intersections(loop, xy, true, &combined);
   EXPECT_EQ(combined.size(), 2u);
@@ -367,14 +374,8 @@ TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
 // campaign's seed 3 case 8): such a pair is combined only when the crossing
 // offers no other, and the loops stay even.
 TEST(ImprintSubcaps, SplitSelfIntersectionsCombinesRibbedPairsLast) {
-  std::map<int, Vec2> xy;
-  std::vector<int> loop;
-  int id = 1;
-  for (Vec2 p : {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), Vec2(3, 0), Vec2(4, 0), Vec2(4, 1), Vec2(3, 1),
-                 Vec2(3, -1), Vec2(2, -1), Vec2(1, -1), Vec2(1, 1), Vec2(0, 1)}) {
-    xy[id] = p;
-    loop.push_back(id++);
-  }
+  const DippingLoop d;
+  const auto& [xy, loop] = d;
   std::vector<std::pair<int, int>> free_choice;
   split_self_intersections(loop, xy, true, &free_choice);
   ASSERT_FALSE(free_choice.empty());

@@ -286,6 +286,22 @@ TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
   EXPECT_TRUE(s.order.upper.at(floor));
 }
 
+/// Every slab, top down, is one region: the block's walls (outer) round
+/// one hole of `hole_walls[k]` faces.
+void expect_walls_round_one_hole(const SlabRegions& slabs, const std::vector<size_t>& hole_walls) {
+  ASSERT_EQ(slabs.slabs.size(), hole_walls.size());
+  for (size_t k = 0; k < hole_walls.size(); ++k) {
+    const Slab& slab = slabs.slabs[k];
+    ASSERT_EQ(slab.cycles.size(), 2u) << k;
+    ASSERT_EQ(slab.regions.size(), 1u) << k;
+    const Cycle& outer = slab.cycles[static_cast<size_t>(slab.regions[0].front())];
+    const Cycle& hole = slab.cycles[static_cast<size_t>(slab.regions[0].back())];
+    EXPECT_TRUE(outer.outer) << k;
+    EXPECT_FALSE(hole.outer) << k;
+    EXPECT_EQ(hole.faces.size(), hole_walls[k]) << k;
+  }
+}
+
 // A 6 x 6 x 3 block with a 2 x 2 pocket 1 deep from the bottom and a
 // 2 x 2 through hole overlapping a quarter of it (the plan => mesh
 // campaign's seed 3 case 131, with circles). The pocket's floor ends at the
@@ -323,16 +339,7 @@ TEST(PlanSteps, AHoleCrossingAPocketsFloorStillWallsAHole) {
   ASSERT_EQ(s.slabs.slabs.size(), 2u);
   // Above the floor: the block's walls round the hole's; below it: the
   // block's walls round the pocket and the hole's feet, one cavity.
-  for (const Slab& slab : s.slabs.slabs) {
-    ASSERT_EQ(slab.cycles.size(), 2u);
-    ASSERT_EQ(slab.regions.size(), 1u);
-    int outer = 0;
-    for (const Cycle& c : slab.cycles) outer += c.outer ? 1 : 0;
-    EXPECT_EQ(outer, 1);
-    const Cycle& hole = slab.cycles[static_cast<size_t>(slab.regions[0].back())];
-    EXPECT_FALSE(hole.outer);
-    EXPECT_EQ(hole.faces.size(), slab.top > 1.5 ? 4u : 8u);
-  }
+  expect_walls_round_one_hole(s.slabs, {4, 8});
   EXPECT_EQ(s.tree.barrels.size(), 2u);
 }
 
@@ -374,17 +381,7 @@ TEST(PlanSteps, PocketsFromBothEndsMeetInASlabTheirWallsFacingDecide) {
   const Steps s = run_steps(facts, z_caps(facts), down());
   ASSERT_TRUE(s.slabs.ok) << s.slabs.why;
   ASSERT_EQ(s.slabs.slabs.size(), 3u);
-  const size_t walls_per_slab[] = {4, 8, 4};  // top down: the cavity's walls
-  for (size_t k = 0; k < 3; ++k) {
-    const Slab& slab = s.slabs.slabs[k];
-    ASSERT_EQ(slab.cycles.size(), 2u) << k;
-    ASSERT_EQ(slab.regions.size(), 1u) << k;
-    const Cycle& outer = slab.cycles[static_cast<size_t>(slab.regions[0].front())];
-    const Cycle& hole = slab.cycles[static_cast<size_t>(slab.regions[0].back())];
-    EXPECT_TRUE(outer.outer) << k;
-    EXPECT_FALSE(hole.outer) << k;
-    EXPECT_EQ(hole.faces.size(), walls_per_slab[k]) << k;
-  }
+  expect_walls_round_one_hole(s.slabs, {4, 8, 4});  // top down: the cavity's walls
 }
 
 TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
