@@ -83,10 +83,9 @@ int keep_widest_outer(const VolumeFacts& facts, const SideLattice& lattice,
   return 1;
 }
 
-/// For a cycle no cap bounding its slab decides (a wall of a face that
-/// walls the volume in at one level and a hole at another): which way its
-/// faces face across the sweep. A hole's walls face the middle of its rims,
-/// an outer wall faces away from it. +1 outer, -1 hole, 0 undecided.
+/// For a cycle the caps bounding its slab do not decide, or decide against
+/// its faces' own roles: which way its faces face across the sweep. A hole's walls face the middle
+/// of its rims, an outer wall faces away from it. +1 outer, -1 hole, 0 undecided.
 int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const Cycle& cycle) {
   geom::Vec3 axis = geom::Vec3::Zero();
   for (int cap : lattice.caps) {

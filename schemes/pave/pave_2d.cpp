@@ -290,10 +290,6 @@ MeshScore score_mesh(const std::vector<V2>& P, const std::vector<detail::Quad>& 
   return s;
 }
 
-}  // namespace
-
-namespace {
-
 // pave_2d with the canonical frame of the outer loop's first node.
 QuadMesh2D pave_2d_once(const std::vector<std::vector<V2>>& loops, const PaveOptions& options) {
   if (loops.empty()) invalid("no boundary loop");
