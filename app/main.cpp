@@ -128,11 +128,12 @@ int run_journal(const std::string& file, const std::string& report, const RunLim
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
              const std::string& report, bool binary, bool no_imprint, io::ElementKind elements,
-             const RunLimits& limits, io::Decompose decompose) {
+             const RunLimits& limits, io::Decompose decompose, int finer_retries) {
   if (!(size > 0) || !std::isfinite(size))
     throw MeshingError(ErrorCode::InvalidInput, "--size must be a positive number");
   pipeline::ModelJobOptions options;
   options.decompose = decompose;
+  options.finer_retries = finer_retries;
   options.size = size;
   options.imprint_merge = !no_imprint;
   options.elements = elements;
@@ -244,6 +245,11 @@ int main(int argc, char** argv) {
                    "auto (default): cut volumes no scheme applies to into sweepable pieces; "
                    "off: refuse them")
       ->check(CLI::IsMember({"auto", "off"}));
+  int mesh_finer_retries = io::MeshSettings{}.finer_retries;
+  mesh->add_option("--finer-retries", mesh_finer_retries,
+                   "A volume its scheme fails on after planning is meshed again at half its size, "
+                   "at most this many times (default 2; 0: never)")
+      ->check(CLI::Range(0, io::MeshSettings::kMaxFinerRetries));
 
   std::string plan_file;
   double plan_size = 0;
@@ -307,7 +313,8 @@ int main(int argc, char** argv) {
                                                                   : io::ElementKind::Hex;
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
                       mesh_no_imprint, elements, limits,
-                      mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto);
+                      mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto,
+                      mesh_finer_retries);
     }
   } catch (const MeshingError& e) {
     print_error(e);

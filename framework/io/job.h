@@ -187,6 +187,10 @@ struct MeshSettings {
   /// fraction (the journal gives percent); default 0.01.
   std::optional<double> volume_tolerance;
   Decompose decompose = Decompose::Auto;
+  /// A volume its scheme accepted and then failed on is meshed again at
+  /// half its size, at most this many times (pipeline/finer_retry.h); 0: never.
+  int finer_retries = 2;
+  static constexpr int kMaxFinerRetries = 4;
   std::vector<CurveSetting> curves;
   std::vector<SurfaceSetting> surfaces;
   std::vector<VolumeSetting> volumes;

@@ -146,7 +146,8 @@ VertexTypeSetting read_vertex_type(const Element& e) {
 }  // namespace
 
 MeshSettings read_mesh(const Element& mesh) {
-  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance", "decompose"});
+  mesh.allow_attributes(
+      {"size", "threads", "max_elements", "volume_tolerance", "decompose", "finer_retries"});
   MeshSettings m;
   m.size = mesh.number("size", NumberKind::Positive);
   m.threads = mesh.integer("threads", 0).value_or(0);
@@ -159,6 +160,12 @@ MeshSettings read_mesh(const Element& mesh) {
     m.volume_tolerance = *t / 100.0;
   }
   m.decompose = static_cast<Decompose>(mesh.choice("decompose", {"auto", "off"}).value_or(0));
+  m.finer_retries = mesh.integer("finer_retries", 0).value_or(m.finer_retries);
+  if (m.finer_retries > MeshSettings::kMaxFinerRetries)
+    mesh.fail_at("finer_retries", "attribute \"finer_retries\" is at most " +
+                                      std::to_string(MeshSettings::kMaxFinerRetries) +
+                                      " (each halves the size), got \"" +
+                                      *mesh.text("finer_retries") + "\"");
   m.where = mesh.where();
   FirstLine<int> curves, surfaces, volumes;
   FirstLine<std::pair<int, int>> vertices;

@@ -8,6 +8,7 @@
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/commit_mesh.h"
+#include "framework/pipeline/finer_retry.h"
 #include "framework/pipeline/interval_setup.h"
 #include "framework/pipeline/mesh_curves.h"
 #include "framework/report/html_report.h"
@@ -26,6 +27,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <numeric>
 #include <memory>
 #include <optional>
 #include <set>
@@ -77,8 +79,10 @@ void report(const MeshOptions& options, const std::string& stage, size_t done, s
 class Refusals {
  public:
   bool refused(int id) const { return refused_.count(id) > 0; }
-  void refuse(int id, ErrorCode code, const std::string& reason, const std::string& hint) {
-    refused_.emplace(id, Verdict{EntityRef{}, Verdict::State::Refused, code, reason, hint});
+  void refuse(int id, ErrorCode code, const std::string& reason, const std::string& hint,
+              bool finer_may_help = false) {
+    refused_.emplace(
+        id, Verdict{EntityRef{}, Verdict::State::Refused, code, reason, hint, finer_may_help});
   }
   const std::map<int, Verdict>& all() const { return refused_; }
 
@@ -185,8 +189,12 @@ IncompleteMesh::IncompleteMesh(const Verdict& first, std::vector<Verdict> verdic
                                const std::string& hint)
     : MeshingError(first.code, first.entity, first.reason, hint), verdicts_(std::move(verdicts)) {}
 
-MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_settings,
-                      const scheme::Registry& registry, const MeshOptions& options) {
+namespace {
+
+// One pass of the pipeline at the sizes of `job_settings`: every entity
+// gets a verdict; refusals are not thrown here (finish_result does).
+MeshResult mesh_attempt(const geom::Model& model, const io::MeshSettings& job_settings,
+                        const scheme::Registry& registry, const MeshOptions& options) {
   // --volume-tolerance overrides the journal's for the sizing too (the
   // faceting budget of curve_sizing.h takes half of it).
   std::optional<io::MeshSettings> overridden;
@@ -195,7 +203,6 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
     overridden->volume_tolerance = options.volume_tolerance;
   }
   const io::MeshSettings& settings = overridden ? *overridden : job_settings;
-  const auto threads = limit_threads(options.threads);
   MeshResult result;
   auto stage_start = Clock::now();
   const auto lap = [&](const char* stage) {
@@ -274,7 +281,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
       return;
     }
     for (int v : model.surface(sid).volumes)
-      refusals.refuse(v, e.code(), "surface " + std::to_string(sid) + ": " + e.message(), e.hint());
+      refusals.refuse(v, e.code(), "surface " + std::to_string(sid) + ": " + e.message(), e.hint(),
+                      e.code() == ErrorCode::MeshingFailed);
   };
 
   std::vector<int> surfaces;
@@ -347,10 +355,10 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
         },
         commit_volume_keep_quality,
         [&](int id, const MeshingError& e) {
+          const bool failed = e.code() == ErrorCode::MeshingFailed;
           refusals.refuse(id, e.code(), e.message(),
-                          e.hint().empty() && e.code() == ErrorCode::MeshingFailed
-                              ? failed_volume_hint(settings, id)
-                              : e.hint());
+                          e.hint().empty() && failed ? failed_volume_hint(settings, id) : e.hint(),
+                          failed);
         });
     done.insert(wave.begin(), wave.end());
     pending = std::move(later);
@@ -393,7 +401,7 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
                         std::to_string(sj->inverted) + " inverted " +
                         std::string(quality::to_string(block.type)) +
                         " elements (minimum scaled Jacobian " + std::to_string(sj->min) + ")",
-                    "");
+                    "", dim == 3);
   }
 
   // The meshed volume (area) against the CAD's, for what meshed.
@@ -428,7 +436,6 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
   } else {
     for (const auto& [id, entry] : result.plan.surfaces) entities.push_back(id);
   }
-  std::set<int> good;
   const int verdict_dim = dim == 3 ? 3 : 2;
   for (int id : entities) {
     Verdict v{EntityRef{verdict_dim, id}, Verdict::State::Meshed, ErrorCode::NotApplicable, "", ""};
@@ -438,12 +445,23 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
     } else if (auto d = deviates.find(id); d != deviates.end()) {
       v.state = Verdict::State::Deviates;
       v.reason = d->second;
-    } else {
-      good.insert(id);
     }
     result.verdicts.push_back(std::move(v));
   }
 
+  lap("quality");
+  beside.wait();  // before `result` leaves this function
+  return result;
+}
+
+// The refusals of an attempt: thrown (the first one, or IncompleteMesh for
+// an assembly) unless allow_partial, which keeps what meshed.
+void finish_result(MeshResult& result, const geom::Model& model, const MeshOptions& options) {
+  const auto t0 = Clock::now();
+  const int verdict_dim = options.dim == 3 ? 3 : 2;
+  std::set<int> good;
+  for (const Verdict& v : result.verdicts)
+    if (v.state == Verdict::State::Meshed) good.insert(v.entity.id);
   const auto first_refused =
       std::find_if(result.verdicts.begin(), result.verdicts.end(),
                    [](const Verdict& v) { return v.state == Verdict::State::Refused; });
@@ -475,14 +493,41 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& job_sett
       throw MeshingError(v.state == Verdict::State::Refused ? v.code : ErrorCode::MeshingFailed,
                          v.entity, v.reason.empty() ? "nothing could be meshed" : v.reason, v.hint);
     }
-    beside.wait();  // it reads the mesh replaced here
-    result.mesh = keep_entities(result.mesh, model, dim == 3 ? good : std::set<int>{},
-                                dim == 3 ? std::set<int>{} : good);
+    result.mesh = keep_entities(result.mesh, model, verdict_dim == 3 ? good : std::set<int>{},
+                                verdict_dim == 3 ? std::set<int>{} : good);
     result.mesh_replaced = true;
     result.quality = assess_quality(result.mesh, model, options.quality_checks);
   }
-  lap("quality");
-  beside.wait();  // before `result` leaves this function
+  if (!result.stages.empty()) result.stages.back().seconds += seconds_since(t0);
+}
+
+}  // namespace
+
+MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings,
+                      const scheme::Registry& registry, const MeshOptions& options) {
+  const auto threads = limit_threads(options.threads);
+  MeshResult result = mesh_attempt(model, settings, registry, options);
+  if (options.dim == 3 && settings.finer_retries > 0) {
+    io::MeshSettings finer = settings;
+    std::map<int, FinerRetry> retries;
+    double earlier = 0;  // seconds of the attempts that failed
+    for (int round = 0; round < settings.finer_retries; ++round) {
+      const std::vector<int> halved = halve_failed_volumes(result.verdicts, finer, retries);
+      if (halved.empty()) break;
+      for (int volume : halved)
+        log::info("volume " + std::to_string(volume) + " failed at size " +
+                  number(2 * retries.at(volume).size) + "; meshing again at " +
+                  number(retries.at(volume).size));
+      const double failed =
+          std::accumulate(result.stages.begin(), result.stages.end(), 0.0,
+                          [](double t, const StageTime& st) { return t + st.seconds; });
+      result = mesh_attempt(model, finer, registry, options);
+      earlier += failed;
+    }
+    if (earlier > 0) result.stages.insert(result.stages.begin(), {"failed attempts", earlier});
+    report_finer_retries(retries, result);
+  }
+  finish_result(result, model, options);
   return result;
 }
 
@@ -545,6 +590,10 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   if (!job.exports.empty()) {
     opts.beside_checks = [&](const mesh::MeshDB& db) {
       const auto t0 = Clock::now();
+      // Called again after a retry at a finer size (finer_retry.h): what
+      // the failed attempt staged is discarded.
+      early = std::make_unique<io::ExportBatch>();
+      early_error = nullptr;
       try {
         stage_exports(*early, db);
       } catch (...) {

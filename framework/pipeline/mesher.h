@@ -89,6 +89,9 @@ struct Verdict {
   ErrorCode code = ErrorCode::NotApplicable;  ///< Refused: why, as an error code
   std::string reason;  ///< Refused / Deviates: one sentence, no entity prefix
   std::string hint;    ///< Refused: what to do, or ""
+  /// Refused after its scheme accepted it (the scheme failed, or left
+  /// inverted elements): a smaller size on it may mesh it (finer_retry.h).
+  bool finer_may_help = false;
 };
 
 struct MeshResult {

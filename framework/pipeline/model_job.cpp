@@ -31,6 +31,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   job.mesh = io::MeshSettings{};
   job.mesh->size = options.size;
   job.mesh->decompose = options.decompose;
+  job.mesh->finer_retries = options.finer_retries;
   if (options.elements != io::ElementKind::Hex) {
     const geom::Model m = load_any(model, options.imprint_merge);
     for (const geom::Volume& v : m.volumes()) {

@@ -31,6 +31,8 @@ struct ModelJobOptions {
   std::string binary_option = "--binary";
   /// Cut volumes no volume scheme applies to (framework/decompose/).
   io::Decompose decompose = io::Decompose::Auto;
+  /// Halvings of a failed volume's size (io::MeshSettings::finer_retries).
+  int finer_retries = io::MeshSettings{}.finer_retries;
 };
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at

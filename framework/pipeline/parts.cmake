@@ -9,6 +9,7 @@ cooperage_framework_part(pipeline SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/mesh_size.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measure_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/partial_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/finer_retry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesher.cpp
   ${CMAKE_CURRENT_LIST_DIR}/model_job.cpp
   PRIVATE_DEPS TBB::tbb)

@@ -326,7 +326,7 @@ TEST_F(Reliability, AVolumeItsSchemeFailedOnSaysWhatSizeToTry) {
   registry_.add(std::make_unique<AcceptsThenFails>(*registry_.volume_scheme("map")));
   try {
     run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
-  <mesh size="1"><volume id="1" size="0.8" scheme="accepts_then_fails"/></mesh>
+  <mesh size="1" finer_retries="0"><volume id="1" size="0.8" scheme="accepts_then_fails"/></mesh>
   <export file="out.vtu"/>
 )"),
             registry_, selector::mesh_options());

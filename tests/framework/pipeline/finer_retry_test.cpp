@@ -1,0 +1,232 @@
+// A volume its scheme accepted and then failed on is meshed again at half
+// its size (framework/pipeline/finer_retry.h), and says so.
+#include "framework/core/error.h"
+#include "framework/pipeline/finer_retry.h"
+#include "framework/pipeline/mesher.h"
+#include "selector/select_schemes.h"
+
+#include "journal_fixture.h"
+#include "support/mesh_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace cooperage::pipeline {
+namespace {
+
+// A volume scheme that meshes as the volume map does, but fails (as cooper
+// does on features closer than an element) while its mesh has fewer than
+// `least` hexes: a coarse size fails, a fine enough one meshes.
+class FailsWhenCoarse final : public scheme::VolumeScheme {
+ public:
+  FailsWhenCoarse(const scheme::VolumeScheme& map, std::size_t least) : map_(map), least_(least) {}
+  std::string_view name() const override { return "fails_when_coarse"; }
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
+    return map_.applicable(view);
+  }
+  void constrain(const scheme::VolumeView& view,
+                 intervals::IntervalProblem& problem) const override {
+    map_.constrain(view, problem);
+  }
+  scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override {
+    return map_.roles(view);
+  }
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override {
+    scheme::EntityMesh m = map_.mesh(view, settings);
+    if (m.hexes.size() < least_)
+      throw MeshingError(
+          ErrorCode::MeshingFailed, EntityRef::volume(view.volume_id),
+          "hex 3 of layer 0 is inverted (" + std::to_string(m.hexes.size()) + " hexes)");
+    return m;
+  }
+
+ private:
+  const scheme::VolumeScheme& map_;
+  std::size_t least_;
+};
+
+class FinerRetries : public testing::JournalFixture {
+ protected:
+  void use_scheme(std::size_t least) {
+    registry_.add(std::make_unique<FailsWhenCoarse>(*registry_.volume_scheme("map"), least));
+  }
+  bool written(const char* file) const { return std::filesystem::exists(dir_ / file); }
+  static double hex_volume(const mesh::MeshDB& db) {
+    double v = 0;
+    for (const auto& [id, vol] : db.volumes())
+      for (const mesh::Hex& h : vol.hexes)
+        v += cooperage::testing::hex_volume(cooperage::testing::hex_points(db, h));
+    return v;
+  }
+};
+
+// A 4-unit cube at size 1 has 64 hexes: too few for the scheme; at 0.5 it
+// has 512.
+TEST_F(FinerRetries, AVolumeThatFailsIsMeshedAtHalfItsSizeWithAWarning) {
+  use_scheme(100);
+  const RunResult r =
+      run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="fails_when_coarse"/></mesh>
+  <export file="out.vtu"/>
+)"),
+              registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 512u);
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0, 1e-9);
+  ASSERT_FALSE(r.mesh.warnings.empty());
+  const Warning& w = r.mesh.warnings.front();
+  EXPECT_EQ(w.entity.dim, 3);
+  EXPECT_EQ(w.entity.id, 1);
+  EXPECT_EQ(w.message.rfind("meshed at size 0.5, half the size asked for (1), at which it failed: "
+                            "hex 3 of layer 0 is inverted (64 hexes)",
+                            0),
+            0u)
+      << w.message;
+  EXPECT_TRUE(written("out.vtu"));
+  ASSERT_FALSE(r.mesh.stages.empty());
+  EXPECT_EQ(r.mesh.stages.front().stage, "failed attempts");
+}
+
+TEST_F(FinerRetries, NoRetryWhenTheJournalSaysNone) {
+  use_scheme(100);
+  try {
+    run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1" finer_retries="0"><volume id="1" scheme="fails_when_coarse"/></mesh>
+  <export file="out.vtu"/>
+)"),
+            registry_, selector::mesh_options());
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("(64 hexes)"), std::string::npos) << e.what();
+    EXPECT_EQ(e.hint().find("failed too"), std::string::npos) << e.hint();
+  }
+  EXPECT_FALSE(written("out.vtu"));
+}
+
+// 1 -> 0.5 -> 0.25 gives 64, 512, 4096 hexes: two halvings are not enough
+// for 5000, and the error says what was tried.
+TEST_F(FinerRetries, TheErrorSaysWhichSizesWereTried) {
+  use_scheme(5000);
+  try {
+    run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="fails_when_coarse"/></mesh>
+  <export file="out.vtu"/>
+)"),
+            registry_, selector::mesh_options());
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("(4096 hexes)"), std::string::npos) << e.what();
+    EXPECT_EQ(e.hint().rfind("meshing it again at a quarter the size (0.25) failed too; ", 0), 0u)
+        << e.hint();
+  }
+  EXPECT_FALSE(written("out.vtu"));
+}
+
+// Only the volume that failed gets the smaller size; its own size, not the
+// global one, is halved.
+TEST_F(FinerRetries, OnlyTheFailedVolumeIsRefined) {
+  use_scheme(100);
+  const RunResult r = run_job(journal(R"(  <geometry>
+    <brick name="a" origin="0 0 0" size="4 4 4"/>
+    <brick name="b" origin="10 0 0" size="2 2 2"/>
+  </geometry>
+  <mesh size="0.5"><volume id="1" size="1" scheme="fails_when_coarse"/></mesh>
+)"),
+                              registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.volume(1).hexes.size(), 512u);
+  EXPECT_EQ(r.mesh.mesh.volume(2).hexes.size(), 64u);
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0 + 8.0, 1e-9);
+}
+
+TEST(FinerRetryAttribute, IsCheckedInTheJournal) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("cooperage-finer-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "job.xml";
+  for (const char* value : {"5", "-1", "two"}) {
+    std::ofstream(file) << "<cooperage version=\"1\">\n  <geometry><brick name=\"b\" origin=\"0 0 "
+                           "0\" size=\"1 1 1\"/></geometry>\n  <mesh size=\"1\" finer_retries=\""
+                        << value << "\"/>\n</cooperage>\n";
+    try {
+      io::read_journal(file.string());
+      ADD_FAILURE() << value;
+    } catch (const MeshingError& e) {
+      EXPECT_NE(std::string(e.what()).find("job.xml:3"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("finer_retries"), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// ---- the settings and the texts, without a run ------------------------------
+
+Verdict refused(int volume, bool finer_may_help) {
+  Verdict v{EntityRef::volume(volume),
+            Verdict::State::Refused,
+            ErrorCode::MeshingFailed,
+            "quad 3 is folded",
+            "a hint",
+            finer_may_help};
+  return v;
+}
+
+TEST(HalveFailedVolumes, HalvesOnlyWhatASmallerSizeMayMesh) {
+  io::MeshSettings s;
+  s.size = 2;
+  io::VolumeSetting own;
+  own.id = 3;
+  own.sizing.size = 0.5;
+  s.volumes.push_back(own);
+  std::map<int, FinerRetry> retries;
+  Verdict meshed{EntityRef::volume(4), Verdict::State::Meshed, ErrorCode::NotApplicable, "", ""};
+  const std::vector<int> halved = halve_failed_volumes(
+      {refused(1, true), refused(2, false), refused(3, true), meshed}, s, retries);
+  EXPECT_EQ(halved, (std::vector<int>{1, 3}));
+  EXPECT_EQ(*s.size, 2.0) << "the global size stays";
+  ASSERT_EQ(s.volumes.size(), 2u);
+  EXPECT_EQ(s.volumes[0].id, 3);
+  EXPECT_EQ(*s.volumes[0].sizing.size, 0.25);
+  EXPECT_EQ(s.volumes[1].id, 1);
+  EXPECT_EQ(*s.volumes[1].sizing.size, 1.0);
+  EXPECT_EQ(retries.at(1).asked, 2.0);
+  EXPECT_EQ(retries.at(3).asked, 0.5);
+  EXPECT_EQ(retries.at(3).first_reason, "quad 3 is folded");
+  // Again: a quarter of the size asked for; the first reason stays.
+  Verdict again = refused(3, true);
+  again.reason = "hex 9 is inverted";
+  EXPECT_EQ(halve_failed_volumes({again}, s, retries), (std::vector<int>{3}));
+  EXPECT_EQ(retries.at(3).size, 0.125);
+  EXPECT_EQ(retries.at(3).first_reason, "quad 3 is folded");
+}
+
+TEST(HalveFailedVolumes, AVolumeSizedByIntervalsAloneIsLeftAsItIs) {
+  io::MeshSettings s;  // no size anywhere
+  std::map<int, FinerRetry> retries;
+  EXPECT_TRUE(halve_failed_volumes({refused(1, true)}, s, retries).empty());
+  EXPECT_TRUE(s.volumes.empty());
+}
+
+TEST(ReportFinerRetries, WarnsForWhatMeshedAndExtendsTheHintOfWhatDidNot) {
+  MeshResult r;
+  r.verdicts = {{EntityRef::volume(1), Verdict::State::Meshed, ErrorCode::NotApplicable, "", ""},
+                refused(2, true)};
+  r.warnings = {{EntityRef::surface(5), "pave fell back"}};
+  std::map<int, FinerRetry> retries;
+  retries[1] = {3.0, 0.75, "quad 3 is folded"};
+  retries[2] = {1.0, 0.5, "hex 9 is inverted"};
+  report_finer_retries(retries, r);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_EQ(r.warnings[0].text(),
+            "volume 1: meshed at size 0.75, a quarter the size asked for (3), at which it "
+            "failed: quad 3 is folded");
+  EXPECT_EQ(r.warnings[1].message, "pave fell back");
+  EXPECT_EQ(r.verdicts[1].hint, "meshing it again at half the size (0.5) failed too; a hint");
+}
+
+}  // namespace
+}  // namespace cooperage::pipeline
