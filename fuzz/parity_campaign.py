@@ -113,11 +113,12 @@ def random_part(rng):
     return text, what
 
 
-def run(cmd, cwd, stdout=False):
+def run(cmd, cwd, stdout=False, both=False):
     t0 = time.time()
     try:
         p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=TIME_LIMIT)
-        return p.returncode, p.stdout if stdout else p.stderr, time.time() - t0, False
+        out = p.stderr + p.stdout if both else p.stdout if stdout else p.stderr
+        return p.returncode, out, time.time() - t0, False
     except subprocess.TimeoutExpired:
         return None, "", TIME_LIMIT, True
 
@@ -161,13 +162,14 @@ def main():
                 row = {"case": case, "features": what, "plan_rc": rc, "plan_s": round(sec, 2)}
                 bad = hung or rc not in (0, 2)
                 if rc == 0:
-                    rc2, err2, sec2, hung2 = run([binary, "run", "-q", "part.xml"], tmp)
+                    rc2, err2, sec2, hung2 = run([binary, "run", "-q", "part.xml"], tmp, both=True)
                     row.update({"run_rc": rc2, "run_s": round(sec2, 2),
-                                "error": err2.strip().splitlines()[:1]})
+                                "error": err2.strip().splitlines()[:1] if rc2 != 0 else []})
                     bad = bad or hung2 or rc2 != 0
                     verdict = "meshed" if rc2 == 0 else "planned, run failed"
                     if rc2 == 0 and "the size asked for" in err2:
                         verdict = "meshed at a finer size"
+                        row["finer"] = [l for l in err2.splitlines() if "the size asked for" in l][:1]
                     if rc2 == 0:
                         row["min_sj"] = min_scaled_jacobian(binary, tmp)
                 else:
