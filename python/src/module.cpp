@@ -52,7 +52,8 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
 }
 
 std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size, int dim,
-                                 const std::string& elements, int threads, bool imprint) {
+                                 const std::string& elements, int threads, bool imprint,
+                                 int finer_retries) {
   if (dim != 2 && dim != 3) {
     throw MeshingError(
         ErrorCode::InvalidInput,
@@ -66,8 +67,15 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
                            ": cooperage.mesh() takes a CAD file (.step .stp .iges "
                            ".igs .brep); run a journal with cooperage.run()");
   }
+  if (finer_retries < 0 || finer_retries > io::MeshSettings::kMaxFinerRetries) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "cooperage.mesh(): finer_retries must be 0 to " +
+                           std::to_string(io::MeshSettings::kMaxFinerRetries) + ", got " +
+                           std::to_string(finer_retries));
+  }
   pipeline::ModelJobOptions options;
   options.size = size;
+  options.finer_retries = finer_retries;
   options.imprint_merge = imprint;
   options.elements = element_kind(elements);
   options.origin = "cooperage.mesh()";
@@ -95,13 +103,16 @@ PYBIND11_MODULE(_core, m) {
   bind_mesh(m);
   m.def("mesh", &mesh, py::arg("model"), py::arg("size"), py::arg("dim") = 3,
         py::arg("elements") = "hex", py::arg("threads") = 0, py::arg("imprint") = true,
+        py::arg("finer_retries") = cooperage::io::MeshSettings{}.finer_retries,
         R"doc(Meshes a CAD file with automatic schemes, as `cooperage mesh` does.
 
 model: a .step/.stp/.iges/.igs/.brep path; size: element size in the model's
 units; dim: 3 volume mesh, 2 surface mesh only; elements: "hex", "wedge"
 (triangle caps swept into wedges) or "mixed"; threads: 0 for all cores (the
 mesh does not depend on it); imprint: merge touching solids so they share
-nodes. Returns a Mesh. Raises InputError or MeshingError.)doc");
+nodes; finer_retries: a volume its scheme fails on after planning is meshed
+again at half its size, at most this many times (0-4; a warning says so).
+Returns a Mesh. Raises InputError or MeshingError.)doc");
   m.def("run", &run, py::arg("journal"), py::arg("threads") = 0,
         R"doc(Runs a journal (.xml) as `cooperage run` does: geometry, meshing, quality
 checks, exports and reports. Returns a Mesh whose `written` lists the files
