@@ -14,6 +14,7 @@
 #include "schemes/submap/hole_offsets.h"
 #include "schemes/submap/lattice.h"
 #include "schemes/submap/submap_plan.h"
+#include "schemes/submap/untangle.h"
 #include "schemes/submap/uv_chart.h"
 
 namespace cooperage::submap {
@@ -303,16 +304,12 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
         });
     const bool keep = block ? has_graded_curve(db, plan, volume_placed ? 1.02 : 1.5)
                             : volume_placed && has_graded_curve(db, plan, 1.5);
-    if (!keep) {
-      smooth_quads(
-          out.coords, normals, fixed, out.quads,
-          [&](const Vec3& x, size_t node) {
-            const geom::SurfaceProjection pr = geometry.project_near(x, node_uv[node]);
-            node_uv[node] = pr.uv;
-            return pr;
-          },
-          options_.smooth);
-    }
+    const Projector project = [&](const Vec3& x, size_t node) {
+      const geom::SurfaceProjection pr = geometry.project_near(x, node_uv[node]);
+      node_uv[node] = pr.uv;
+      return pr;
+    };
+    if (!keep) smooth_quads(out.coords, normals, fixed, out.quads, project, options_.smooth);
     int inverted = -1;
     for (size_t q = 0; q < out.quads.size(); ++q) {
       std::array<Vec3, 4> p, n;
@@ -326,14 +323,18 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
       }
     }
     if (inverted < 0) return out;
+    // Only where no other scheme may mesh the face (a sweep's side), the
+    // fold is mended: where the fallbacks may, pave's mesh is better
+    // (gmsh_Angled --dim 2 at D/80, surface 28: blocks 0.36, pave 0.75).
+    const bool no_other = !params.allow_fallback && !params.allow_quad_fallback;
+    // The nodes around the fold move, the rest stays (untangle.h): a lug's
+    // cone on its wall (plan => mesh campaign, seed 7 case 33).
+    if (no_other && untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0)
+      return out;
     // A blend across a reentrant corner can fold where the rows on its two
     // sides are spaced differently (a hole's wall notched down into a foot:
     // the notch's columns spread their rows over the notch's whole depth);
     // the same lattice cut into blocks at its corners fills each block alone.
-    // Only where no other scheme may mesh the face (a sweep's side): where
-    // the fallbacks may, pave's mesh is better (gmsh_Angled --dim 2 at D/80,
-    // surface 28: blocks 0.36, pave 0.75).
-    const bool no_other = !params.allow_fallback && !params.allow_quad_fallback;
     if (mode == FillInterior::Blocks || block || !no_other) {
       fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +
                     "); the interval counts do not fit the face's shape");

@@ -40,6 +40,7 @@ const MeshOptions kOptions = selector::mesh_options();
 io::MeshSettings sized(double size) {
   io::MeshSettings s;
   s.size = size;
+  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
   return s;
 }
 

@@ -23,6 +23,7 @@ using geom::Vec3;
 io::MeshSettings job(io::ElementKind elements, const Vec3& direction) {
   io::MeshSettings s;
   s.size = 0.5;
+  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
   io::VolumeSetting v;
   v.id = 1;
   v.scheme = "cooper";

@@ -30,6 +30,7 @@ const scheme::Registry& registry() {
 io::MeshSettings cooper_pinned(double size) {
   io::MeshSettings s;
   s.size = size;
+  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
   io::VolumeSetting v;
   v.id = 1;
   v.scheme = "cooper";

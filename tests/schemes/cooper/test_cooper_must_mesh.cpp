@@ -39,6 +39,7 @@ std::unique_ptr<scheme::Registry> builtin() {
 io::MeshSettings sized(double size) {
   io::MeshSettings s;
   s.size = size;
+  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
   return s;
 }
 

@@ -36,6 +36,7 @@ io::MeshSettings wedge_settings(double size, const std::string& scheme = "cooper
                                 io::ElementKind elements = io::ElementKind::Wedge) {
   io::MeshSettings s;
   s.size = size;
+  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
   io::VolumeSetting v;
   v.id = 1;
   v.scheme = scheme;
