@@ -323,19 +323,20 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
       }
     }
     if (inverted < 0) return out;
-    // Only where no other scheme may mesh the face (a sweep's side), the
-    // fold is mended: where the fallbacks may, pave's mesh is better
-    // (gmsh_Angled --dim 2 at D/80, surface 28: blocks 0.36, pave 0.75).
-    const bool no_other = !params.allow_fallback && !params.allow_quad_fallback;
-    // The nodes around the fold move, the rest stays (untangle.h): a lug's
-    // cone on its wall (plan => mesh campaign, seed 7 case 33).
-    if (no_other && untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0)
-      return out;
     // A blend across a reentrant corner can fold where the rows on its two
     // sides are spaced differently (a hole's wall notched down into a foot:
     // the notch's columns spread their rows over the notch's whole depth);
     // the same lattice cut into blocks at its corners fills each block alone.
+    // Only where no other scheme may mesh the face (a sweep's side): where
+    // the fallbacks may, pave's mesh is better (gmsh_Angled --dim 2 at D/80,
+    // surface 28: blocks 0.36, pave 0.75).
+    const bool no_other = !params.allow_fallback && !params.allow_quad_fallback;
     if (mode == FillInterior::Blocks || block || !no_other) {
+      // Last, on a sweep's side: the nodes around the fold move, the rest
+      // stays (untangle.h; a lug's cone on its wall, plan => mesh campaign
+      // seed 7 case 33).
+      if (no_other && untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0)
+        return out;
       fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +
                     "); the interval counts do not fit the face's shape");
     }
