@@ -2,10 +2,10 @@
 
 #include "json_writer.h"
 
+#include "framework/core/text.h"
 #include "framework/scheme/vertex_angles.h"
 
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -18,14 +18,8 @@ constexpr double kSharpCornerDegrees = 12.0;
 
 using geom::Sense;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 std::string point(const geom::Vec3& p) {
-  return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")";
+  return "(" + number_text(p.x()) + ", " + number_text(p.y()) + ", " + number_text(p.z()) + ")";
 }
 
 std::string id_list(const std::vector<int>& ids) {
@@ -57,7 +51,7 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
       << model.curves().size() << " curves, " << model.vertices().size()
       << " vertices; Euler-Poincare V-E+F-R = " << geom::euler_characteristic(model)
       << " (R = " << inner_loop_count(model) << " inner loops)\n";
-  out << "  length unit: " << num(model.unit_in_metres()) << " m\n";
+  out << "  length unit: " << number_text(model.unit_in_metres()) << " m\n";
   const geom::BoundingBox box = model.box();
   if (!box.empty()) out << "  box " << point(box.min) << " - " << point(box.max) << "\n";
 
@@ -67,8 +61,8 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
     for (const auto& shell : v.shells) faces += shell.size();
     out << "  volume " << v.id;
     if (!v.name.empty()) out << " \"" << v.name << "\"";
-    out << ": volume " << num(v.volume) << ", " << faces << " surfaces in " << v.shells.size()
-        << (v.shells.size() == 1 ? " shell" : " shells") << ":";
+    out << ": volume " << number_text(v.volume) << ", " << faces << " surfaces in "
+        << v.shells.size() << (v.shells.size() == 1 ? " shell" : " shells") << ":";
     for (const auto& shell : v.shells) {
       for (const auto& use : shell) {
         out << " " << use.surface << (use.sense == Sense::Forward ? "+" : "-");
@@ -80,12 +74,13 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
   out << "\nsurfaces\n";
   for (const auto& s : model.surfaces()) {
     out << "  surface " << s.id << ": " << geom::to_string(s.geometry->type()) << ", area "
-        << num(s.area) << ", volumes " << id_list(s.volumes);
+        << number_text(s.area) << ", volumes " << id_list(s.volumes);
     const auto sharpest = scheme::sharpest_corner(model, s.id);
     if (sharpest && sharpest->angle < kSharpCornerDegrees) {
-      out << ", corner of " << num(std::round(sharpest->angle * 10) / 10) << " degrees at vertex "
-          << sharpest->vertex << " (no element there above scaled Jacobian "
-          << num(std::round(std::sin(sharpest->angle * M_PI / 180) * 1000) / 1000) << ")";
+      out << ", corner of " << number_text(std::round(sharpest->angle * 10) / 10)
+          << " degrees at vertex " << sharpest->vertex
+          << " (no element there above scaled Jacobian "
+          << number_text(std::round(std::sin(sharpest->angle * M_PI / 180) * 1000) / 1000) << ")";
     }
     out << "\n";
     for (size_t i = 0; i < s.loops.size(); ++i) {
@@ -96,7 +91,7 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
   out << "\ncurves\n";
   for (const auto& c : model.curves()) {
     out << "  curve " << c.id << ": " << geom::to_string(c.geometry->type()) << ", length "
-        << num(c.length) << ", vertices " << c.start_vertex << " -> " << c.end_vertex
+        << number_text(c.length) << ", vertices " << c.start_vertex << " -> " << c.end_vertex
         << ", surfaces " << id_list(c.surfaces) << "\n";
   }
 

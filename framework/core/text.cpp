@@ -1,6 +1,7 @@
 #include "framework/core/text.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace cooperage {
 namespace {
@@ -57,6 +58,12 @@ std::string clip_path(std::string_view path, std::size_t limit) {
     begin = b;
   }
   return clip(path, limit);
+}
+
+std::string number_text(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", value);
+  return buf;
 }
 
 }  // namespace cooperage

@@ -17,6 +17,10 @@ inline constexpr std::size_t kEchoLimit = 80;
 /// sequences are kept whole (counted as one character) or cut before.
 std::string clip(std::string_view text, std::size_t limit = kEchoLimit);
 
+/// A number for a message: six significant digits, no trailing zeros
+/// ("0.5", "3.1095", "1e+06").
+std::string number_text(double value);
+
 /// A file path for a message: like clip(), but a long path keeps its end
 /// (the file name) and loses its beginning: "…/deep/dir/part.step".
 std::string clip_path(std::string_view path, std::size_t limit = kEchoLimit);

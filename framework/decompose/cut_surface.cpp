@@ -1,21 +1,17 @@
 #include "framework/decompose/cut_surface.h"
 
+#include "framework/core/text.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 namespace cooperage::decompose {
 namespace {
 
-std::string num(double x) {
-  if (std::abs(x) < 5e-13) x = 0.0;
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+std::string num(double x) { return number_text(std::abs(x) < 5e-13 ? 0.0 : x); }
 
 std::string vec(const geom::Vec3& v) {
   return "(" + num(v.x()) + " " + num(v.y()) + " " + num(v.z()) + ")";

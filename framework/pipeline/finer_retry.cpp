@@ -3,17 +3,10 @@
 #include "framework/core/text.h"
 
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
 namespace cooperage::pipeline {
 namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 std::optional<double> size_of(const io::MeshSettings& settings, int volume) {
   for (const io::VolumeSetting& v : settings.volumes)
@@ -67,13 +60,13 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
     if (v.entity.dim != 3 || it == retries.end()) continue;
     const FinerRetry& r = it->second;
     if (v.state == Verdict::State::Refused) {
-      v.hint = "meshing it again at " + fraction(r.asked, r.size) + " the size (" + number(r.size) +
-               ") failed too; " + v.hint;
+      v.hint = "meshing it again at " + fraction(r.asked, r.size) + " the size (" +
+               number_text(r.size) + ") failed too; " + v.hint;
       continue;
     }
-    warnings.push_back({v.entity, "meshed at size " + number(r.size) + ", " +
+    warnings.push_back({v.entity, "meshed at size " + number_text(r.size) + ", " +
                                       fraction(r.asked, r.size) + " the size asked for (" +
-                                      number(r.asked) +
+                                      number_text(r.asked) +
                                       "), at which it failed: " + clip(r.first_reason, 240)});
   }
   result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());

@@ -132,12 +132,6 @@ std::string percent(double fraction) {
   return buf;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 /// What to do about a volume no scheme fits (issue 16 item 5: an error says
 /// what to do).
 constexpr const char* kNoSchemeHint =
@@ -155,7 +149,7 @@ std::string failed_volume_hint(const io::MeshSettings& settings, int volume) {
   }
   const std::string id = std::to_string(volume);
   std::string tag = "<volume id=\"" + id + "\" size=\"" +
-                    (size ? number(0.5 * *size) : std::string("...")) + "\"/>";
+                    (size ? number_text(0.5 * *size) : std::string("...")) + "\"/>";
   return "features closer than an element may meet here: a smaller size on volume " + id + " (" +
          tag + ") or a <webcut> between them may mesh it";
 }
@@ -410,8 +404,9 @@ MeshResult mesh_attempt(const geom::Model& model, const io::MeshSettings& job_se
     if (refusals.refused(m.entity.id)) continue;
     const double d = m.deviation();
     const char* what = m.entity.dim == 3 ? "volume" : "area";
-    const std::string text = "its meshed " + std::string(what) + " " + number(m.mesh + m.faceting) +
-                             " deviates " + percent(d) + " from the CAD's " + number(m.cad) +
+    const std::string text = "its meshed " + std::string(what) + " " +
+                             number_text(m.mesh + m.faceting) + " deviates " + percent(d) +
+                             " from the CAD's " + number_text(m.cad) +
                              (m.faceting != 0 ? " (faceting of curved faces credited)" : "");
     if (d > 0.01) {
       result.warnings.push_back({m.entity, text});
@@ -419,9 +414,9 @@ MeshResult mesh_attempt(const geom::Model& model, const io::MeshSettings& job_se
       // Correct facets, yet a person asked for the part and gets this much
       // less of it (a rod at a coarse size is a hexagonal prism): say so.
       result.warnings.push_back({m.entity, "its meshed " + std::string(what) + " " +
-                                               number(m.mesh) + " is " + percent(raw) +
+                                               number_text(m.mesh) + " is " + percent(raw) +
                                                (m.mesh < m.cad ? " below" : " above") +
-                                               " the CAD's " + number(m.cad) +
+                                               " the CAD's " + number_text(m.cad) +
                                                ": the elements facet its curved faces coarsely; a "
                                                "smaller size follows them closer"});
     }
@@ -516,8 +511,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       if (halved.empty()) break;
       for (int volume : halved)
         log::info("volume " + std::to_string(volume) + " failed at size " +
-                  number(2 * retries.at(volume).size) + "; meshing again at " +
-                  number(retries.at(volume).size));
+                  number_text(2 * retries.at(volume).size) + "; meshing again at " +
+                  number_text(retries.at(volume).size));
       const double failed =
           std::accumulate(result.stages.begin(), result.stages.end(), 0.0,
                           [](double t, const StageTime& st) { return t + st.seconds; });

@@ -23,6 +23,16 @@ double quad_scaled_jacobian(const std::array<Vec3, 4>& p, const std::array<Vec3,
   return q;
 }
 
+double quad_scaled_jacobian(const std::vector<Vec3>& x, const std::vector<Vec3>& normals,
+                            const mesh::Quad& q) {
+  std::array<Vec3, 4> p, nn;
+  for (size_t k = 0; k < 4; ++k) {
+    p[k] = x[static_cast<size_t>(q[k])];
+    nn[k] = normals[static_cast<size_t>(q[k])];
+  }
+  return quad_scaled_jacobian(p, nn);
+}
+
 void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::vector<bool>& fixed,
                   const std::vector<mesh::Quad>& quads, const Projector& project,
                   const SmoothOptions& options) {
@@ -44,12 +54,7 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
     row.erase(std::unique(row.begin(), row.end()), row.end());
   }
   auto quality = [&](int q) {
-    std::array<Vec3, 4> p, nn;
-    for (size_t k = 0; k < 4; ++k) {
-      p[k] = x[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
-      nn[k] = normals[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
-    }
-    return quad_scaled_jacobian(p, nn);
+    return quad_scaled_jacobian(x, normals, quads[static_cast<size_t>(q)]);
   };
   // Every quad's quality, kept current as nodes move: a node's "before" is
   // read, not computed again.

@@ -31,6 +31,10 @@ using Projector = std::function<geom::SurfaceProjection(const Vec3& point, size_
 /// (one per corner). 1 for a square, <= 0 when inverted; -1 for a degenerate edge.
 double quad_scaled_jacobian(const std::array<Vec3, 4>& p, const std::array<Vec3, 4>& normals);
 
+/// The same for quad `q` of a mesh: its nodes in `x`, their normals.
+double quad_scaled_jacobian(const std::vector<Vec3>& x, const std::vector<Vec3>& normals,
+                            const mesh::Quad& q);
+
 /// Smooths in place.
 /// \param[in,out] x        node positions
 /// \param[in,out] normals  unit surface normal per node (updated for moved nodes)

@@ -20,12 +20,7 @@ double untangle_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals,
     for (size_t k = 0; k < 4; ++k)
       incident[static_cast<size_t>(quads[q][k])].push_back(static_cast<int>(q));
   auto quality = [&](int q) {
-    std::array<Vec3, 4> p, nn;
-    for (size_t k = 0; k < 4; ++k) {
-      p[k] = x[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
-      nn[k] = normals[static_cast<size_t>(quads[static_cast<size_t>(q)][k])];
-    }
-    return quad_scaled_jacobian(p, nn);
+    return quad_scaled_jacobian(x, normals, quads[static_cast<size_t>(q)]);
   };
   auto worst_at = [&](size_t v) {
     double m = std::numeric_limits<double>::max();

@@ -6,6 +6,7 @@
 #include "selector/select_schemes.h"
 
 #include "journal_fixture.h"
+#include "plans_like_map.h"
 #include "support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -20,20 +21,11 @@ namespace {
 // A volume scheme that meshes as the volume map does, but fails (as cooper
 // does on features closer than an element) while its mesh has fewer than
 // `least` hexes: a coarse size fails, a fine enough one meshes.
-class FailsWhenCoarse final : public scheme::VolumeScheme {
+class FailsWhenCoarse final : public testing::PlansLikeMap {
  public:
-  FailsWhenCoarse(const scheme::VolumeScheme& map, std::size_t least) : map_(map), least_(least) {}
+  FailsWhenCoarse(const scheme::VolumeScheme& map, std::size_t least)
+      : PlansLikeMap(map), least_(least) {}
   std::string_view name() const override { return "fails_when_coarse"; }
-  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
-    return map_.applicable(view);
-  }
-  void constrain(const scheme::VolumeView& view,
-                 intervals::IntervalProblem& problem) const override {
-    map_.constrain(view, problem);
-  }
-  scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override {
-    return map_.roles(view);
-  }
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& settings) const override {
     scheme::EntityMesh m = map_.mesh(view, settings);
@@ -45,7 +37,6 @@ class FailsWhenCoarse final : public scheme::VolumeScheme {
   }
 
  private:
-  const scheme::VolumeScheme& map_;
   std::size_t least_;
 };
 

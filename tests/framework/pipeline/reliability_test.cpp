@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 #include "journal_fixture.h"
+#include "plans_like_map.h"
 #include "support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -295,28 +296,15 @@ TEST_F(Reliability, ThreadsAreCappedAtTheHardwareCount) {
 // A volume scheme that accepts what the volume map accepts and then fails
 // while meshing, as cooper does on the parts of the plan => mesh campaign
 // it cannot mesh yet.
-class AcceptsThenFails final : public scheme::VolumeScheme {
+class AcceptsThenFails final : public testing::PlansLikeMap {
  public:
-  explicit AcceptsThenFails(const scheme::VolumeScheme& map) : map_(map) {}
+  using PlansLikeMap::PlansLikeMap;
   std::string_view name() const override { return "accepts_then_fails"; }
-  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
-    return map_.applicable(view);
-  }
-  void constrain(const scheme::VolumeView& view,
-                 intervals::IntervalProblem& problem) const override {
-    map_.constrain(view, problem);
-  }
-  scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override {
-    return map_.roles(view);
-  }
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& /*settings*/) const override {
     throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(view.volume_id),
                        "hex 3 of layer 0 is inverted");
   }
-
- private:
-  const scheme::VolumeScheme& map_;
 };
 
 // A scheme that fails on a volume it accepted gives no advice of its own;
