@@ -312,12 +312,7 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
     if (!keep) smooth_quads(out.coords, normals, fixed, out.quads, project, options_.smooth);
     int inverted = -1;
     for (size_t q = 0; q < out.quads.size(); ++q) {
-      std::array<Vec3, 4> p, n;
-      for (size_t k = 0; k < 4; ++k) {
-        p[k] = out.coords[static_cast<size_t>(out.quads[q][k])];
-        n[k] = normals[static_cast<size_t>(out.quads[q][k])];
-      }
-      if (quad_scaled_jacobian(p, n) <= 0.0) {
+      if (quad_scaled_jacobian(out.coords, normals, out.quads[q]) <= 0.0) {
         inverted = static_cast<int>(q);
         break;
       }
