@@ -71,6 +71,7 @@ const Candidate* find_candidate(const std::vector<Candidate>& candidates, const 
 std::string listed(const scheme::NeighbourMeshes& n) {
   std::set<int> all = n.made;
   all.insert(n.kept.begin(), n.kept.end());
+  all.insert(n.closing.begin(), n.closing.end());
   std::string out = all.size() > 1 ? "s" : "";
   for (int s : all) out += (out.size() > 1 ? ", " : " ") + std::to_string(s);
   return out;
@@ -138,6 +139,7 @@ class Selector {
         waits_for_.clear();
         selection_.volumes.clear();
         selection_.refused.clear();
+        selection_.ring_closers.clear();
         for (const geom::Volume& v : model_.volumes()) {
           try {
             choose_volume(v.id);
@@ -251,6 +253,22 @@ class Selector {
     return {};
   }
 
+  // The shared surfaces `volume` taking `roles` would mesh itself that a
+  // neighbour chosen earlier takes as it finds them: the neighbour waits for
+  // this volume there, which closes a cycle when this volume waits for it
+  // elsewhere (the second half of a ring of sweeps round an axis).
+  std::set<int> closing_surfaces(int volume, const scheme::SurfaceRoles& roles) const {
+    std::set<int> out;
+    for (const auto& [surface, role] : roles) {
+      if (role != scheme::kMeshedByVolume) continue;
+      const auto it = roles_.find(surface);
+      if (it != roles_.end() && it->second.volume != volume &&
+          it->second.scheme != scheme::kMeshedByVolume && it->second.takes_existing)
+        out.insert(surface);
+    }
+    return out;
+  }
+
   // The neighbour chosen earlier may plan around the surface (a sweep the
   // other way round): it is asked once, and the volumes are chosen again.
   void request(const Request& ask) {
@@ -275,9 +293,11 @@ class Selector {
                                 std::find(taken.begin(), taken.end(), s) == taken.end()))
         return false;
     }
-    for (int s : n.kept) {
-      const auto it = roles.find(s);
-      if (it != roles.end() && it->second == scheme::kMeshedByVolume) return false;
+    for (const std::set<int>* list : {&n.kept, &n.closing}) {
+      for (int s : *list) {
+        const auto it = roles.find(s);
+        if (it != roles.end() && it->second == scheme::kMeshedByVolume) return false;
+      }
     }
     return true;
   }
@@ -320,7 +340,7 @@ class Selector {
     }
     // A round after a request asks every volume again; an answer depends
     // only on the volume and what its neighbours fix.
-    auto& known = evaluated_[{id, neighbours.made, neighbours.kept}];
+    auto& known = evaluated_[{id, neighbours.made, neighbours.kept, neighbours.closing}];
     if (known.empty()) known = evaluate(schemes, view);
     Choice choice{3, id, known, {}, {}, false, false};
     std::vector<const Candidate*> order;
@@ -355,6 +375,7 @@ class Selector {
     }
     std::string conflicts;
     std::vector<Request> asks;  // from the conflicts of the candidates passed over
+    std::set<int> closing;      // surfaces whose meshing here closed a cycle of waits
     for (const Candidate* c : order) {
       const scheme::VolumeScheme* vs = registry_.volume_scheme(c->scheme);
       // The scheme's own plan from its applicable(), handed back.
@@ -369,6 +390,8 @@ class Selector {
       if (conflict.empty() && has_cycle(waits)) {
         conflict = "volume " + std::to_string(id) + " (" + c->scheme +
                    ") and its neighbours would each wait for the other's mesh of a shared surface";
+        const std::set<int> more = closing_surfaces(id, roles);
+        closing.insert(more.begin(), more.end());
       }
       if (!conflict.empty()) {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
@@ -404,16 +427,24 @@ class Selector {
       choice.reason = choice.pinned
                           ? "pinned at " + place(pin->where)
                           : "best applicable, score " + score_text(c->applicability.score);
-      if (const auto it = yield_.find(id);
-          it != yield_.end() && !choice.pinned && honours(*c, view, it->second))
+      if (const auto it = yield_.find(id); it != yield_.end() && honours(*c, view, it->second)) {
         choice.reason +=
             " (planned around shared surface" + listed(it->second) + " for its neighbours)";
+        if (!it->second.closing.empty()) selection_.ring_closers.insert(id);
+      }
       if (!choice.pinned && c != order.front())
         choice.reason += " (better ones conflict: " + conflicts + ")";
       selection_.volumes.push_back(std::move(choice));
       return;
     }
     for (const Request& a : asks) request(a);
+    // A ring of sweeps: the next round asks this volume to end on the meshes
+    // its neighbours take as found (only when nothing else fits: a sweep
+    // onto an existing mesh needs that mesh to be its source's image).
+    std::set<int>& close = yield_[id].closing;
+    for (int s : closing) {
+      if (close.insert(s).second) restart_ = true;
+    }
     // A pin that contradicts every candidate is the input's fault; else the
     // volume is refused like one no scheme applies to (plan lists it).
     const bool pinned =
@@ -546,7 +577,8 @@ class Selector {
   std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it
   std::map<int, scheme::NeighbourMeshes> yield_;  // requests made of a volume
   bool restart_ = false;                          // a request was added this round
-  std::map<std::tuple<int, std::set<int>, std::set<int>>, std::vector<Candidate>> evaluated_;
+  std::map<std::tuple<int, std::set<int>, std::set<int>, std::set<int>>, std::vector<Candidate>>
+      evaluated_;
   Selection selection_;
 };
 
@@ -573,6 +605,7 @@ pipeline::SchemePlan Selection::plan() const {
   for (const Choice& c : surfaces) plan.surfaces[c.id] = entry(c);
   plan.refused_volumes = refused;
   plan.waits_for = waits_for;
+  plan.ring_closers = ring_closers;
   plan.intervals = intervals;
   return plan;
 }

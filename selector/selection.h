@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,8 @@ struct Selection {
   /// Volume -> the volumes meshed before it, whose mesh of a shared surface
   /// it takes (SchemePlan::waits_for).
   std::map<int, std::vector<int>> waits_for;
+  /// Volumes closing a ring of sweeps (SchemePlan::ring_closers).
+  std::set<int> ring_closers;
   /// The feasible interval assignment found for the final choices (with
   /// SelectOptions::check_intervals), carried into SchemePlan::intervals.
   std::optional<intervals::IntervalSolution> intervals;

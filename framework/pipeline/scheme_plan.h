@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,10 @@ struct SchemePlan {
   /// Volume -> the volumes it waits for: they mesh a surface it shares and
   /// takes as it finds it (VolumeScheme::takes_existing_mesh). Acyclic.
   std::map<int, std::vector<int>> waits_for;
+  /// Volumes whose sweep ends on a mesh a ring of neighbouring sweeps made
+  /// from its own source (scheme::NeighbourMeshes::closing): a cut that
+  /// needs one is the decomposition's last resort.
+  std::set<int> ring_closers;
   /// The interval assignment the planner found feasible for this plan and
   /// its settings, when it solved one; the mesher uses it instead of solving
   /// the same problem again (on a 137-face part, 70 s each).

@@ -52,6 +52,11 @@ struct NeighbourMeshes {
   /// A neighbour needs these from their surface scheme and does not take a
   /// volume's mesh (a sweep's side): this volume must not mesh them itself.
   std::set<int> kept;
+  /// Meshing these itself would close a cycle of volumes waiting for each
+  /// other's meshes (a ring of sweeps round an axis, each taking the last
+  /// one's target as its source): a sweep ending on one should take the
+  /// mesh it finds there, which the ring made from its own source.
+  std::set<int> closing;
 };
 
 /// A volume as a scheme sees it; `mesh` holds its meshed surfaces during

@@ -17,6 +17,7 @@
 #include <deque>
 #include <numeric>
 #include <set>
+#include <unordered_map>
 
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
@@ -270,6 +271,123 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   untangle(s, b, quads, tris, index, image, to);
 }
 
+// The faces of `to`, meshed beforehand, in the order and corner order of
+// the faces of `from` (as project() makes them): walked face by face from
+// the ribs, whose ends pair the two boundaries. A mesh that is not the
+// image of `from`'s (another topology, or boundaries paired with a twist)
+// is refused, naming both caps.
+void match_existing(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
+  const BarrelState& st = s.barrels[b];
+  std::unordered_map<int, int> image;  // from's node -> to's node
+  for (const auto& [u, l] : st.rib_pairs) image[down ? u : l] = down ? l : u;
+  Piece found;
+  found.cap = to.cap;
+  take_surface_mesh(s, found);
+  const std::string what = "cap " + std::to_string(to.cap) + ", meshed beforehand, is not the " +
+                           "image of cap " + std::to_string(from.cap) + "'s mesh across " +
+                           s.barrel_name(b);
+  if (found.quads.size() != from.quads.size() || found.tris.size() != from.tris.size())
+    fail(s.vid, what + " (" + std::to_string(found.quads.size() + found.tris.size()) +
+                    " faces, not " + std::to_string(from.quads.size() + from.tris.size()) + ")");
+  // Faces of either mesh by their (unordered) edges.
+  using Face = std::vector<int>;
+  std::vector<Face> src, dst;
+  for (const auto& q : from.quads) src.push_back(Face(q.begin(), q.end()));
+  for (const auto& t : from.tris) src.push_back(Face(t.begin(), t.end()));
+  for (const auto& q : found.quads) dst.push_back(Face(q.begin(), q.end()));
+  for (const auto& t : found.tris) dst.push_back(Face(t.begin(), t.end()));
+  auto key = [](int a, int c) { return std::make_pair(std::min(a, c), std::max(a, c)); };
+  std::map<std::pair<int, int>, std::vector<size_t>> src_edges, dst_edges;
+  for (size_t f = 0; f < src.size(); ++f)
+    for (size_t k = 0; k < src[f].size(); ++k)
+      src_edges[key(src[f][k], src[f][(k + 1) % src[f].size()])].push_back(f);
+  for (size_t f = 0; f < dst.size(); ++f)
+    for (size_t k = 0; k < dst[f].size(); ++k)
+      dst_edges[key(dst[f][k], dst[f][(k + 1) % dst[f].size()])].push_back(f);
+  std::vector<int> match(src.size(), -1);
+  std::vector<char> used(dst.size(), 0);
+  int turn = 0;  // +1: to's faces run as from's, -1: reversed (fixed by the first face)
+  auto corner = [](const Face& c, size_t j, int dir, size_t i) {
+    const long n = static_cast<long>(c.size());
+    return c[static_cast<size_t>(((static_cast<long>(j) + dir * static_cast<long>(i)) % n + n) %
+                                 n)];
+  };
+  // Face f of from onto the face of to holding the image of its edge from
+  // corner k to k + 1.
+  auto place = [&](size_t f, size_t k) {
+    const Face& a = src[f];
+    const size_t n = a.size();
+    const int p = image.at(a[k]), q = image.at(a[(k + 1) % n]);
+    const auto it = dst_edges.find(key(p, q));
+    if (it == dst_edges.end()) return false;
+    for (size_t g : it->second) {
+      const Face& c = dst[g];
+      if (used[g] || c.size() != n) continue;
+      const size_t j = static_cast<size_t>(std::find(c.begin(), c.end(), p) - c.begin());
+      const int dir = corner(c, j, 1, 1) == q ? 1 : -1;
+      if (turn != 0 && dir != turn) continue;
+      bool fits = true;
+      for (size_t i = 0; i < n && fits; ++i) {
+        const auto m = image.find(a[(k + i) % n]);
+        fits = m == image.end() || m->second == corner(c, j, dir, i);
+      }
+      if (!fits) continue;
+      for (size_t i = 0; i < n; ++i) image[a[(k + i) % n]] = corner(c, j, dir, i);
+      turn = dir;
+      used[g] = 1;
+      match[f] = static_cast<int>(g);
+      return true;
+    }
+    return false;
+  };
+  // The corner of face g where its edge {x, y} starts.
+  auto edge_at = [&](size_t g, int x, int y) {
+    const Face& a = src[g];
+    for (size_t i = 0; i < a.size(); ++i) {
+      const int u = a[i], v = a[(i + 1) % a.size()];
+      if ((u == x && v == y) || (u == y && v == x)) return i;
+    }
+    return a.size();
+  };
+  std::deque<size_t> queue;
+  for (size_t f = 0; f < src.size() && queue.empty(); ++f) {
+    for (size_t k = 0; k < src[f].size() && queue.empty(); ++k) {
+      const int x = src[f][k], y = src[f][(k + 1) % src[f].size()];
+      if (image.count(x) && image.count(y) && src_edges[key(x, y)].size() == 1 && place(f, k))
+        queue.push_back(f);
+    }
+  }
+  while (!queue.empty()) {
+    const size_t f = queue.front();
+    queue.pop_front();
+    for (size_t k = 0; k < src[f].size(); ++k) {
+      const int x = src[f][k], y = src[f][(k + 1) % src[f].size()];
+      for (size_t g : src_edges[key(x, y)]) {
+        if (match[g] >= 0) continue;
+        const size_t at = edge_at(g, x, y);
+        if (at == src[g].size() || !place(g, at))
+          fail(s.vid, what + " (the meshes part at a face)");
+        queue.push_back(g);
+      }
+    }
+  }
+  if (std::find(match.begin(), match.end(), -1) != match.end())
+    fail(s.vid, what + " (faces of its source are not reached from its boundary)");
+  for (const auto& [u, l] : st.rib_pairs) {
+    if (image.at(down ? u : l) != (down ? l : u)) fail(s.vid, what + " (its boundary is twisted)");
+  }
+  std::set<int> hit;
+  for (const auto& [n, x] : image) {
+    if (!hit.insert(x).second) fail(s.vid, what + " (two of its nodes meet in one)");
+  }
+  auto image_of = [&](int n) { return image.at(n); };
+  for (const auto& q : from.quads)
+    to.quads.push_back({image_of(q[0]), image_of(q[1]), image_of(q[2]), image_of(q[3])});
+  for (const auto& t : from.tris)
+    to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
+  to.meshed = true;
+}
+
 }  // namespace
 
 // cite: Blacker 1996, sec. 6.1 (forming and meshing cap stacks).
@@ -288,17 +406,24 @@ void mesh_stacks(SweepState& s) {
     if (p.alive) stacks[find_root(parent, p.id)].push_back(p.id);
   }
   for (const auto& [root, members] : stacks) {
-    // The seed: the cap meshed beforehand, else a real piece, else any.
+    // The seed: the cap meshed beforehand, else a real piece, else any. Two
+    // meshed beforehand: a one-to-one sweep closing a ring of sweeps
+    // (end_on_existing_mesh), seeded at its source.
     int seed = -1;
+    std::vector<int> premeshed;
     for (int m : members) {
-      const Piece& p = s.pieces[static_cast<size_t>(m)];
-      if (!p.premeshed) continue;
-      if (seed >= 0) {
-        fail(s.vid, "caps " + std::to_string(s.pieces[static_cast<size_t>(seed)].cap) + " and " +
-                        std::to_string(p.cap) +
+      if (s.pieces[static_cast<size_t>(m)].premeshed) premeshed.push_back(m);
+    }
+    if (premeshed.size() == 1) seed = premeshed.front();
+    if (premeshed.size() > 1) {
+      const Piece& a = s.pieces[static_cast<size_t>(premeshed[0])];
+      const Piece& b = s.pieces[static_cast<size_t>(premeshed[1])];
+      const bool ring = premeshed.size() == 2 && members.size() == 2 && s.barrels.size() == 1;
+      if (!ring) {
+        fail(s.vid, "caps " + std::to_string(a.cap) + " and " + std::to_string(b.cap) +
                         " were both meshed by their surface schemes but lie in one cap stack");
       }
-      seed = m;
+      seed = a.upper_of >= 0 ? a.id : b.id;
     }
     if (seed >= 0) {
       take_surface_mesh(s, s.pieces[static_cast<size_t>(seed)]);
@@ -323,7 +448,11 @@ void mesh_stacks(SweepState& s) {
           if (other < 0) continue;
           Piece& to = s.pieces[static_cast<size_t>(other)];
           if (to.meshed) continue;
-          project(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
+          if (to.premeshed) {
+            match_existing(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
+          } else {
+            project(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
+          }
           queue.push_back(other);
         }
       }

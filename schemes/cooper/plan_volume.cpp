@@ -216,6 +216,25 @@ std::string seamed_target_from_far_source(const geom::Model& model, const Volume
 }
 
 // Runs the steps for one sorting of the faces.
+// A ring of sweeps closing (NeighbourMeshes::closing): a one-to-one sweep
+// ends on its target as the ring meshed it, matched node for node to the
+// source's mesh (cap_stacks.cpp), instead of meshing it itself. Only a
+// match: the target's mesh is one piece, the image of the one source.
+void end_on_existing_mesh(const BarrelTree& tree, const std::set<int>& closing,
+                          const CapSchemeOf& scheme_of, CapRoles& roles) {
+  if (tree.barrels.size() != 1) return;
+  const BarrelNode& barrel = tree.barrels.front();
+  if (barrel.upper.size() != 1 || barrel.lower.size() != 1) return;
+  const int upper = barrel.upper.front().cap, lower = barrel.lower.front().cap;
+  if (!upper || !lower || !closing.count(lower) || !roles.scheme.count(upper)) return;
+  std::string why;
+  const std::string s = scheme_of(lower, why);
+  if (s.empty()) return;
+  roles.scheme[lower] = s;
+  roles.by_volume.erase(std::remove(roles.by_volume.begin(), roles.by_volume.end(), lower),
+                        roles.by_volume.end());
+}
+
 VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                     const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
   VolumePlan p;
@@ -255,6 +274,7 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
   p.roles =
       cap_roles(facts, p.order, p.tree, p.down ? &*p.down : nullptr, scheme_of, in.polygon_mesher);
   if (!p.roles.ok) return fail(5, p.roles.why);
+  end_on_existing_mesh(p.tree, in.neighbours.closing, scheme_of, p.roles);
   p.facts = facts;
   if (const std::string why = seamed_target_from_far_source(model, p); !why.empty())
     return fail(5, why);
@@ -321,8 +341,9 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
 int neighbour_conflicts(const VolumePlan& p, const scheme::NeighbourMeshes& n) {
   int count = 0;
   for (int s : n.made) count += p.facts.face(s) && !p.roles.scheme.count(s) ? 2 : 0;
-  for (int s : n.kept) {
-    count += std::binary_search(p.roles.by_volume.begin(), p.roles.by_volume.end(), s) ? 1 : 0;
+  for (const std::set<int>* list : {&n.kept, &n.closing}) {
+    for (int s : *list)
+      count += std::binary_search(p.roles.by_volume.begin(), p.roles.by_volume.end(), s) ? 1 : 0;
   }
   return count;
 }

@@ -1,0 +1,103 @@
+// A ring of sweeps: a solid of revolution cut in two along a meridian
+// plane, each half swept round the axis from one cut face to the other.
+// Whichever half is chosen second finds both its cut faces meshed already
+// (one is its neighbour's source, the other its neighbour's target); it
+// takes the target as it finds it (NeighbourMeshes::closing) and its mesh
+// is matched node for node to the source's (cap_stacks.cpp).
+#include "framework/geometry/occ/workbench.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+#include "support/hex_mesh_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cooperage::cooper {
+namespace {
+
+// The two cut faces (the planes at y = 0, x > 0 and x < 0).
+std::pair<int, int> cut_faces(const geom::Model& model) {
+  int plus = 0, minus = 0;
+  for (const auto& s : model.surfaces()) {
+    if (s.geometry->type() != geom::SurfaceType::Plane || s.box.size().y() > 1e-6) continue;
+    (s.box.min.x() + s.box.max.x() > 0 ? plus : minus) = s.id;
+  }
+  return {plus, minus};
+}
+
+// A ring, r in [2, 4], z in [0, 2], cut along y = 0; each half hinted to
+// sweep round the axis (unhinted, each would sweep along z). Exact volume
+// 24 pi.
+struct HalfRings {
+  geom::Model model;
+  int plus = 0, minus = 0;
+  io::MeshSettings settings;
+};
+
+HalfRings half_rings(double size) {
+  occ::Workbench wb;
+  wb.revolve("ring", {{2, 0, 0}, {4, 0, 0}, {4, 0, 2}, {2, 0, 2}}, {0, 0, 0}, {0, 0, 1}, 360);
+  wb.webcut("ring", {0, 0, 0}, {0, 1, 0});
+  HalfRings h{wb.build_model(), 0, 0, {}};
+  std::tie(h.plus, h.minus) = cut_faces(h.model);
+  h.settings.size = size;
+  h.settings.finer_retries = 0;
+  for (int v : {1, 2}) {
+    io::VolumeSetting s;
+    s.id = v;
+    s.scheme = "cooper";
+    // Volume 1 from the x > 0 face to the x < 0 one, volume 2 back.
+    s.sources = {v == 1 ? h.plus : h.minus};
+    s.targets = {v == 1 ? h.minus : h.plus};
+    h.settings.volumes.push_back(s);
+  }
+  return h;
+}
+
+TEST(CooperRing, HalvesOfARingSweptRoundTheAxisCloseTheRing) {
+  HalfRings h = half_rings(0.25);
+  ASSERT_EQ(h.model.volumes().size(), 2u);
+  ASSERT_GT(h.plus, 0);
+  ASSERT_GT(h.minus, 0);
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(h.model, h.settings, registry, selector::mesh_options());
+  const testing::HexMeshSummary s = testing::check_hex_mesh(h.model, r.mesh);
+  const double exact = 24 * M_PI;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  // As a 180-degree revolve swept alone (0.64: the half annuli's mapped
+  // meshes, not the sweep).
+  EXPECT_GT(s.min_sj, 0.6);
+  // The second half ends on the first one's source as that was meshed.
+  const auto& second = r.plan.volumes.at(2);
+  EXPECT_NE(second.reason.find("planned around shared surface " + std::to_string(h.plus)),
+            std::string::npos)
+      << second.reason;
+}
+
+TEST(CooperRing, EveryHexLayerOfTheRingIsAWholeTurn) {
+  // The two halves together: as many hex layers round the axis as the
+  // circle r = 4 has intervals, and each half's source quads reappear as
+  // its own target's (the mesh closes on itself, no seam of new nodes).
+  HalfRings h = half_rings(0.5);
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(h.model, h.settings, registry, selector::mesh_options());
+  size_t a = r.mesh.surface(h.plus).quads.size(), b = r.mesh.surface(h.minus).quads.size();
+  EXPECT_EQ(a, b);
+  size_t outer = 0;  // nodes on the outer circles at z = 0 (both halves)
+  for (const auto& c : h.model.curves()) {
+    const auto& nodes = r.mesh.curve_nodes(c.id);
+    const geom::Vec3 p = r.mesh.node(nodes[nodes.size() / 2]);
+    if (std::abs(p.head<2>().norm() - 4) < 1e-6 && std::abs(p.z()) < 1e-9)
+      outer += nodes.size() - 1;
+  }
+  EXPECT_EQ(r.mesh.hex_count(), outer * a);
+}
+
+}  // namespace
+}  // namespace cooperage::cooper
