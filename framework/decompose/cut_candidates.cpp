@@ -120,4 +120,26 @@ std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
   return out;
 }
 
+std::vector<CutCandidate> meridian_candidates(const geom::Model& model, int volume,
+                                              const CandidateOptions& options) {
+  std::vector<CutCandidate> out;
+  for (int s : model.surfaces_of(volume)) {
+    if (auto c = cylinder_of(model.surface(s))) {
+      // The meridian plane holding the coordinate direction least along the
+      // axis: any meridian halves a solid of revolution alike.
+      const geom::Vec3& a = c->axis;
+      int least = 0;
+      for (int k = 1; k < 3; ++k) {
+        if (std::abs(a[k]) < std::abs(a[least])) least = k;
+      }
+      const geom::Vec3 n = a.cross(geom::Vec3::Unit(least)).normalized();
+      add_unique(out,
+                 {{CutSurface::Kind::Plane, c->point, n, 0.0},
+                  "plane through the axis of surface " + std::to_string(s)},
+                 options.tolerance);
+    }
+  }
+  return out;
+}
+
 }  // namespace cooperage::decompose

@@ -41,6 +41,14 @@ struct CandidateOptions {
 std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
                                          const CandidateOptions& options = {});
 
+/// Meridian planes: for each distinct axis of its cylindrical faces, one
+/// plane holding it. A solid of revolution that no axial sweep takes (a
+/// concave blend, a dome) is two halves swept round the axis, each ending
+/// on the other's source (a ring of sweeps); tried only when the other
+/// candidates find nothing, since where they do their pieces sweep better.
+std::vector<CutCandidate> meridian_candidates(const geom::Model& model, int volume,
+                                              const CandidateOptions& options = {});
+
 /// The candidate sweep axes of a volume: unit normals of its planar faces
 /// and axes of its cylindrical faces, parallel ones merged (the sign of the
 /// first kept), ordered by the area of the faces behind them (largest

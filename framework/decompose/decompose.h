@@ -66,8 +66,10 @@ struct Report {
 
 /// Whether a model (the pieces of a cut) plans as a whole: "" when it does,
 /// else the reason (the pipeline passes its planner, which checks shared
-/// faces' schemes and interval feasibility).
-using ModelCheck = std::function<std::string(const geom::Model&)>;
+/// faces' schemes and interval feasibility). Without `rings`, a plan with
+/// a ring of sweeps (SchemePlan::ring_closers) does not count: the search
+/// takes one only as its last resort (CutSearch::solve_meridian).
+using ModelCheck = std::function<std::string(const geom::Model&, bool rings)>;
 
 struct Decomposed {
   geom::Model model;  ///< `model` itself when nothing was cut

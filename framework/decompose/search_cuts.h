@@ -26,7 +26,8 @@ class CutSearch {
 
   /// The decomposition of `solid`, or nullopt (then failure() says why).
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid) {
-    return solve(solid, 0, {}, nullptr);
+    if (auto plan = solve(solid, 0, {}, nullptr)) return plan;
+    return solve_meridian(solid);
   }
 
   int tried() const { return tried_; }
@@ -45,9 +46,12 @@ class CutSearch {
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid, int depth,
                                  const std::vector<CutCandidate>& inherited,
                                  const Context& context);
+  /// The last resort: one meridian cut (meridian_candidates) whose two
+  /// halves plan together.
+  std::optional<SolidPlan> solve_meridian(const occ::SolidPieces& solid);
   /// "" when `pieces` plan among the solids of `context`, else the reason.
   std::string check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
-                       const Context& context);
+                       const Context& context, bool rings = false);
 
   const scheme::Registry& registry_;
   const ModelCheck& check_;

@@ -92,7 +92,7 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   }
   if (!planner) throw MeshingError(ErrorCode::Internal, "decomposition needs a planner");
   io::MeshSettings piece_settings = settings;
-  const decompose::ModelCheck check = [&](const geom::Model& pieces) -> std::string {
+  const decompose::ModelCheck check = [&](const geom::Model& pieces, bool rings) -> std::string {
     try {
       // The planner refuses volumes one by one in an assembly (per-volume
       // verdicts): a cut is good only when no piece is refused.
@@ -100,6 +100,10 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
       if (!plan.refused_volumes.empty()) {
         const auto& [volume, refusal] = *plan.refused_volumes.begin();
         return "volume " + std::to_string(volume) + ": " + refusal.message;
+      }
+      if (!rings && !plan.ring_closers.empty()) {
+        return "volume " + std::to_string(*plan.ring_closers.begin()) +
+               " would close a ring of sweeps (a cut needing that is the last resort)";
       }
       return {};
     } catch (const MeshingError& e) {

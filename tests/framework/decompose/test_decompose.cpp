@@ -43,7 +43,7 @@ class BoxScheme final : public scheme::VolumeScheme {
 };
 
 ModelCheck always_plans() {
-  return [](const geom::Model&) { return std::string(); };
+  return [](const geom::Model&, bool) { return std::string(); };
 }
 
 Decomposed run(const occ::Workbench& bench, const scheme::Registry& registry, double size,
@@ -163,7 +163,9 @@ TEST_F(Boxes, ACutThatDoesNotPlanIsNotTaken) {
   occ::Workbench bench;
   bench.prism("l", {{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}}, {},
               {0, 0, 1});
-  const ModelCheck never = [](const geom::Model&) { return std::string("the faces disagree"); };
+  const ModelCheck never = [](const geom::Model&, bool) {
+    return std::string("the faces disagree");
+  };
   try {
     run(bench, registry_, 0.25, never);
     FAIL() << "expected a refusal";
@@ -264,7 +266,7 @@ TEST(DecomposeSearch, APieceWhoseBestCutConflictsWithItsNeighbourTakesTheNextCut
                {0, 3, 0}},
               {}, {0, 0, 1});
   // The planner's verdict: every piece keeps its scheme once imprinted.
-  const ModelCheck conformal = [&](const geom::Model& m) {
+  const ModelCheck conformal = [&](const geom::Model& m, bool) {
     const std::vector<int> lost = unmeshable_volumes(m, registry);
     return lost.empty() ? std::string()
                         : "volume " + std::to_string(lost.front()) + " lost its scheme";
@@ -283,7 +285,7 @@ TEST(DecomposeSearch, APieceWhoseBestCutConflictsWithItsNeighbourTakesTheNextCut
   EXPECT_NEAR(signed_distance(cuts[1].surface, {0.5, 1.95, 0.5}), 0.0, 1e-9);
   EXPECT_EQ(d.model.volumes().size(), 3u);
   EXPECT_NEAR(total_volume(d.model), 3.6 + 1.5 + 1.05, 1e-9);
-  EXPECT_TRUE(conformal(d.model).empty()) << conformal(d.model);
+  EXPECT_TRUE(conformal(d.model, false).empty()) << conformal(d.model, false);
 }
 
 // The built-in schemes: Fig. 3a is refused whole by every scheme, and the

@@ -60,7 +60,10 @@ INSTANTIATE_TEST_SUITE_P(Issue17, DecomposeRealCad,
                          // whole numbers, now a piece's barrel 2 gets an inverted
                          // hex after the least-squares projection: cooper's
                          // projection, not the cuts).
-                         ::testing::Values("occt_xr1-tc-lbr.stp"),
+                         // occt_OCC2368.stp: a solid of revolution with a
+                         // concave blend, cut along a meridian plane as the
+                         // last resort; the halves sweep round the axis.
+                         ::testing::Values("occt_xr1-tc-lbr.stp", "occt_OCC2368.stp"),
                          [](const ::testing::TestParamInfo<const char*>& param) {
                            std::string n = param.param;
                            for (char& c : n)
