@@ -4,4 +4,5 @@ cooperage_framework_part(mesh SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/corner_sine.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loop_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/split_poor_quads.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/improve_split_nodes.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/improve_split_nodes.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/tfi.cpp)

@@ -3,13 +3,17 @@
 #include "framework/core/error.h"
 #include "schemes/map/map_plan.h"
 #include "schemes/map/map_sides.h"
-#include "schemes/map/tfi.h"
+#include "framework/mesh/tfi.h"
 
 #include <algorithm>
 #include <limits>
 #include <unordered_map>
 
 namespace cooperage::map {
+
+using geom::Vec3;
+using mesh::Grid2;
+using mesh::tfi_2d;
 namespace {
 
 [[noreturn]] void fail(int surface_id, const std::string& message) {

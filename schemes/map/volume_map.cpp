@@ -4,7 +4,7 @@
 #include "schemes/map/block_lattice.h"
 #include "schemes/map/map_plan.h"
 #include "schemes/map/map_sides.h"
-#include "schemes/map/tfi.h"
+#include "framework/mesh/tfi.h"
 
 #include <Eigen/Geometry>
 
@@ -13,6 +13,11 @@
 #include <sstream>
 
 namespace cooperage::map {
+
+using geom::Vec3;
+using mesh::Grid3;
+using mesh::hex_min_scaled_jacobian;
+using mesh::tfi_3d;
 namespace {
 
 std::string volume_name(int id) { return "volume " + std::to_string(id); }

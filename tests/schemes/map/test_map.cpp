@@ -7,7 +7,7 @@
 #include "schemes/map/block_lattice.h"
 #include "schemes/map/map_sides.h"
 #include "schemes/map/surface_map.h"
-#include "schemes/map/tfi.h"
+#include "framework/mesh/tfi.h"
 #include "schemes/map/volume_map.h"
 
 #include <Eigen/Geometry>
@@ -294,7 +294,7 @@ TEST(Tfi, ReproducesBilinearPatch) {
     left.push_back(Vec3(0, j, 0));
     right.push_back(Vec3(4, j, 0));
   }
-  const map::Grid2 g = map::tfi_2d(bottom, top, left, right);
+  const mesh::Grid2 g = mesh::tfi_2d(bottom, top, left, right);
   for (int i = 0; i <= 4; ++i) {
     for (int j = 0; j <= 3; ++j) EXPECT_LT((g(i, j) - Vec3(i, j, 0)).norm(), 1e-12);
   }

@@ -55,6 +55,28 @@ TEST(SubmapLattice, LShapeFillIsExactOnAUniformBoundary) {
   }
 }
 
+// A half annulus, r in [2, 4] (j), angle in [0, 180] degrees (i), as
+// planar parameters: one block, filled as transfinite interpolation fills
+// it -- every interior point on its column's radius at its row's angle.
+// The row and column blend put rows on chords across the hole: a sweep
+// round the annulus's axis got hexes 0.14 off square from its ribs.
+TEST(SubmapLattice, AHalfAnnulusIsFilledAlongItsRadii) {
+  const int ni = 12, nj = 4;
+  auto loop = polygon({{0, 0}, {ni, 0}, {ni, nj}, {0, nj}}, 0);
+  auto polar = [&](int i, int j) {
+    const double a = M_PI * i / ni, r = 2.0 + 2.0 * j / nj;
+    return Vec2(r * std::cos(a), r * std::sin(a));
+  };
+  for (BoundaryPoint& b : loop) b.uv = polar(b.ij[0], b.ij[1]);
+  const LatticeFill f = fill_lattice({loop});
+  ASSERT_TRUE(f.ok) << f.why;
+  ASSERT_TRUE(fills_its_box(f));
+  for (size_t p = 0; p < f.ij.size(); ++p) {
+    const Vec2 want = polar(f.ij[p][0], f.ij[p][1]);
+    EXPECT_NEAR((f.uv[p] - want).norm(), 0.0, 1e-12) << f.ij[p][0] << ", " << f.ij[p][1];
+  }
+}
+
 // A 6 x 4 block whose left and right sides are graded the same way (v =
 // 0, 0.5, 0.7, 0.85, 1 of the height: a long first interval, as cooper
 // gives a rib leaving a tangent cap): every interior row takes the sides'

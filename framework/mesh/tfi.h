@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-namespace cooperage::map {
+namespace cooperage::mesh {
 
 using geom::Vec3;
 
@@ -68,4 +68,4 @@ void tfi_3d(Grid3& block);
 /// <= 0 for an inverted or degenerate corner). Verdict's hex scaled Jacobian.
 double hex_min_scaled_jacobian(const std::array<Vec3, 8>& x);
 
-}  // namespace cooperage::map
+}  // namespace cooperage::mesh

@@ -1,11 +1,11 @@
-#include "schemes/map/tfi.h"
+#include "framework/mesh/tfi.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 
-namespace cooperage::map {
+namespace cooperage::mesh {
 
 std::vector<double> arc_fractions(const std::vector<Vec3>& points) {
   const size_t n = points.size();
@@ -153,4 +153,4 @@ double hex_min_scaled_jacobian(const std::array<Vec3, 8>& x) {
   return worst;
 }
 
-}  // namespace cooperage::map
+}  // namespace cooperage::mesh
