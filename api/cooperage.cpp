@@ -18,6 +18,7 @@ Result run_one(const io::Job& job, int dim, const Options& options) {
   r.mesh = std::move(run.mesh.mesh);
   r.quality = std::move(run.quality);
   r.plan = std::move(run.mesh.plan);
+  r.decomposition = std::move(run.decomposition);
   r.warnings = std::move(run.mesh.warnings);
   r.written = std::move(run.written);
   r.stages = std::move(run.stages);
@@ -31,8 +32,16 @@ Result mesh_file(const std::string& path, double size, const Options& options) {
     throw MeshingError(ErrorCode::InvalidInput, "cooperage::mesh_file(): dim must be 2 or 3, got " +
                                                     std::to_string(options.dim));
   }
+  if (options.finer_retries < 0 || options.finer_retries > io::MeshSettings::kMaxFinerRetries) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "cooperage::mesh_file(): Options::finer_retries must be 0 to " +
+                           std::to_string(io::MeshSettings::kMaxFinerRetries) + ", got " +
+                           std::to_string(options.finer_retries));
+  }
   pipeline::ModelJobOptions job;
   job.size = size;
+  job.decompose = options.decompose;
+  job.finer_retries = options.finer_retries;
   job.imprint_merge = options.imprint_merge;
   job.elements = options.elements;
   job.exports = options.exports;

@@ -31,6 +31,13 @@ struct Options {
   io::ElementKind elements = io::ElementKind::Hex;  ///< every volume's (mesh_file() only)
   int threads = 0;            ///< 0: all cores; the mesh does not depend on it
   bool imprint_merge = true;  ///< touching solids share nodes (mesh_file() only)
+  /// Cut volumes no volume scheme applies to into pieces that one does
+  /// (mesh_file() only; a journal says so in <mesh decompose>).
+  io::Decompose decompose = io::Decompose::Auto;
+  /// A volume its scheme accepted and then failed on is meshed again at
+  /// half its size, at most this many times, 0 to 4 (mesh_file() only; a
+  /// journal says so in <mesh finer_retries>). Each shows as a warning.
+  int finer_retries = io::MeshSettings{}.finer_retries;
   /// Mesh files to write (.exo .msh .vtu .inp .obj .off .stl .ply), each
   /// atomically; none are written when meshing fails. run_journal() adds
   /// them to the journal's.
@@ -52,6 +59,7 @@ struct Result {
   mesh::MeshDB mesh;                        ///< nodes, per-entity elements
   pipeline::QualityReport quality;          ///< per block: scaled Jacobian, checked metrics
   pipeline::SchemePlan plan;                ///< the scheme of every volume and surface, and why
+  decompose::Report decomposition;  ///< the automatic cuts made (none when none were needed)
   std::vector<pipeline::Warning> warnings;  ///< what schemes gave up, per entity
   std::vector<std::string> written;         ///< files written
   std::vector<pipeline::StageTime> stages;  ///< wall-clock time per stage

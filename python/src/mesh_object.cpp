@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "framework/core/error.h"
+#include "framework/decompose/report_text.h"
 #include "framework/io/export/write_mesh.h"
 #include "framework/report/html_report.h"
 #include "framework/report/report_from_run.h"
@@ -179,6 +180,11 @@ Exodus). Arrays stay valid after the Mesh object is gone.)doc")
           "plan", [](const MeshObject& self) { return plan_entries(self.run.mesh.plan); },
           "The scheme of every volume and surface: dicts (entity, dim, id, scheme, reason, "
           "details).")
+      .def_property_readonly(
+          "decomposition",
+          [](const MeshObject& self) { return decompose::report_lines(self.run.decomposition); },
+          "The automatic cuts made, one line each as `cooperage mesh` prints them (empty "
+          "when none were needed).")
       .def_property_readonly(
           "stages",
           [](const MeshObject& self) {

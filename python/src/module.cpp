@@ -53,7 +53,7 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
 
 std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size, int dim,
                                  const std::string& elements, int threads, bool imprint,
-                                 int finer_retries) {
+                                 int finer_retries, const std::string& decompose) {
   if (dim != 2 && dim != 3) {
     throw MeshingError(
         ErrorCode::InvalidInput,
@@ -73,9 +73,15 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
                            std::to_string(io::MeshSettings::kMaxFinerRetries) + ", got " +
                            std::to_string(finer_retries));
   }
+  if (decompose != "auto" && decompose != "off") {
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        "cooperage.mesh(): decompose must be \"auto\" or \"off\", got \"" + decompose + "\"");
+  }
   pipeline::ModelJobOptions options;
   options.size = size;
   options.finer_retries = finer_retries;
+  options.decompose = decompose == "off" ? io::Decompose::Off : io::Decompose::Auto;
   options.imprint_merge = imprint;
   options.elements = element_kind(elements);
   options.origin = "cooperage.mesh()";
@@ -104,6 +110,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh", &mesh, py::arg("model"), py::arg("size"), py::arg("dim") = 3,
         py::arg("elements") = "hex", py::arg("threads") = 0, py::arg("imprint") = true,
         py::arg("finer_retries") = cooperage::io::MeshSettings{}.finer_retries,
+        py::arg("decompose") = "auto",
         R"doc(Meshes a CAD file with automatic schemes, as `cooperage mesh` does.
 
 model: a .step/.stp/.iges/.igs/.brep path; size: element size in the model's
@@ -111,7 +118,9 @@ units; dim: 3 volume mesh, 2 surface mesh only; elements: "hex", "wedge"
 (triangle caps swept into wedges) or "mixed"; threads: 0 for all cores (the
 mesh does not depend on it); imprint: merge touching solids so they share
 nodes; finer_retries: a volume its scheme fails on after planning is meshed
-again at half its size, at most this many times (0-4; a warning says so).
+again at half its size, at most this many times (0-4; a warning says so);
+decompose: "auto" cuts a volume no scheme applies to into pieces that one
+does (Mesh.decomposition lists the cuts), "off" refuses it instead.
 Returns a Mesh. Raises InputError or MeshingError.)doc");
   m.def("run", &run, py::arg("journal"), py::arg("threads") = 0,
         R"doc(Runs a journal (.xml) as `cooperage run` does: geometry, meshing, quality
