@@ -61,10 +61,10 @@ TEST(SubmapLattice, LShapeFillIsExactOnAUniformBoundary) {
 // The row and column blend put rows on chords across the hole: a sweep
 // round the annulus's axis got hexes 0.14 off square from its ribs.
 TEST(SubmapLattice, AHalfAnnulusIsFilledAlongItsRadii) {
-  const int ni = 12, nj = 4;
+  const int ni = 24, nj = 4;
   auto loop = polygon({{0, 0}, {ni, 0}, {ni, nj}, {0, nj}}, 0);
   auto polar = [&](int i, int j) {
-    const double a = M_PI * i / ni, r = 2.0 + 2.0 * j / nj;
+    const double a = M_PI * i / ni, r = 28.0 + 12.0 * j / nj;
     return Vec2(r * std::cos(a), r * std::sin(a));
   };
   for (BoundaryPoint& b : loop) b.uv = polar(b.ij[0], b.ij[1]);
