@@ -93,43 +93,11 @@ std::string CutSearch::failure() const {
 }
 
 std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
-                                const Context& context, bool rings) {
+                                const Context& context) {
   // The pieces of one split share their cut faces already; among other
   // solids they are imprinted and merged with them first.
-  if (!context) return check_(alone ? *alone : pieces.build_model(true), rings);
-  return check_(context(pieces).build_model(true), rings);
-}
-
-std::optional<SolidPlan> CutSearch::solve_meridian(const occ::SolidPieces& solid) {
-  const geom::Model model = solid.build_model(false);
-  if (model.volumes().size() != 1) return std::nullopt;
-  const std::vector<geom::Vec3> samples = volume_samples(model, 1);
-  for (const CutCandidate& c : meridian_candidates(model, 1)) {
-    const Span s = span(c.surface, samples);
-    if (s.below > -options_.size || s.above < options_.size) continue;
-    ++tried_;
-    occ::SolidPieces pieces;
-    geom::Model cut;
-    try {
-      pieces = solid.split(0, c.surface);
-      if (pieces.size() < 2) continue;
-      cut = pieces.build_model(false);
-    } catch (const MeshingError&) {
-      continue;
-    }
-    const double thinnest = thinnest_piece(cut, c.surface);
-    if (thinnest < options_.size) continue;
-    bool all = true;
-    for (const geom::Volume& v : cut.volumes())
-      all = all && best_scheme(cut, v.id, registry_, options_.settings).ok;
-    if (!all) continue;
-    const std::string reason = check_in(pieces, &cut, nullptr, true);
-    log::info("decompose: " + c.through +
-              (reason.empty() ? " plans" : " does not plan: " + reason));
-    if (reason.empty())
-      return SolidPlan{pieces, {{c.surface, c.through, 0, pieces.size(), thinnest}}};
-  }
-  return std::nullopt;
+  if (!context) return check_(alone ? *alone : pieces.build_model(true), last_resort_);
+  return check_(context(pieces).build_model(true), last_resort_);
 }
 
 std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int depth,
@@ -142,9 +110,14 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
 
   const double size = options_.size;
   const std::vector<geom::Vec3> samples = volume_samples(model, 1);
-  // The piece's own candidates, then those of the solids it was cut from.
-  std::vector<CutCandidate> candidates = cut_candidates(model, 1);
-  for (const CutCandidate& c : inherited) {
+  // The piece's own candidates, then those of the solids it was cut from;
+  // in the second pass the meridian planes first (the first pass spent
+  // part of the budget on the others already).
+  std::vector<CutCandidate> candidates =
+      last_resort_ ? meridian_candidates(model, 1) : std::vector<CutCandidate>();
+  std::vector<CutCandidate> more = cut_candidates(model, 1);
+  more.insert(more.end(), inherited.begin(), inherited.end());
+  for (const CutCandidate& c : more) {
     bool known = false;
     for (const CutCandidate& k : candidates)
       known = known || same_surface(k.surface, c.surface, 1e-6);

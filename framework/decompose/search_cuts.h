@@ -25,9 +25,14 @@ class CutSearch {
       : registry_(registry), check_(check), options_(options) {}
 
   /// The decomposition of `solid`, or nullopt (then failure() says why).
+  /// A second pass, within what is left of the budget of cuts, adds the
+  /// meridian planes (meridian_candidates) and takes plans with rings of
+  /// sweeps: where the first pass finds cuts, their pieces sweep better.
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid) {
+    last_resort_ = false;
     if (auto plan = solve(solid, 0, {}, nullptr)) return plan;
-    return solve_meridian(solid);
+    last_resort_ = true;
+    return solve(solid, 0, {}, nullptr);
   }
 
   int tried() const { return tried_; }
@@ -46,17 +51,15 @@ class CutSearch {
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid, int depth,
                                  const std::vector<CutCandidate>& inherited,
                                  const Context& context);
-  /// The last resort: one meridian cut (meridian_candidates) whose two
-  /// halves plan together.
-  std::optional<SolidPlan> solve_meridian(const occ::SolidPieces& solid);
   /// "" when `pieces` plan among the solids of `context`, else the reason.
   std::string check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
-                       const Context& context, bool rings = false);
+                       const Context& context);
 
   const scheme::Registry& registry_;
   const ModelCheck& check_;
   DecomposeOptions options_;
   int tried_ = 0;
+  bool last_resort_ = false;  ///< the second pass: meridian cuts, rings of sweeps
   int crossing_ = 0;          ///< candidates crossing the volume by a layer on each side
   std::string best_partial_;  ///< what the best cut at depth 0 left unmeshable
   std::string conflict_;      ///< why the first complete cut did not plan

@@ -31,15 +31,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Profile in the xz-plane (x the radius), revolved about z: bore r = 10;
-// r = 40 for z in [0, 30]; the shoulder z = 30 in to r = 28; a fillet of
-// radius 8 (centre (28, 38)) up to r = 20 at z = 38; r = 20 up to z = 80.
-std::string write_filleted_shaft() {
+// Profile in the xz-plane (x the radius), revolved about z: a bore of
+// radius `bore` (0: none); r = 40 for z in [0, 30]; the shoulder z = 30 in
+// to r = 28; a fillet of radius 8 (centre (28, 38)) up to r = 20 at z = 38;
+// r = 20 up to z = 80.
+std::string write_filleted_shaft(double bore) {
   BRepBuilderAPI_MakeWire wire;
   auto line = [&](double x0, double z0, double x1, double z1) {
     wire.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(x0, 0, z0), gp_Pnt(x1, 0, z1)).Edge());
   };
-  line(10, 0, 40, 0);
+  line(bore, 0, 40, 0);
   line(40, 0, 40, 30);
   line(40, 30, 28, 30);
   const double m = 8 / std::sqrt(2.0);
@@ -48,8 +49,8 @@ std::string write_filleted_shaft() {
                    .Value())
                .Edge());
   line(20, 38, 20, 80);
-  line(20, 80, 10, 80);
-  line(10, 80, 10, 0);
+  line(20, 80, bore, 80);
+  line(bore, 80, bore, 0);
   const TopoDS_Face profile = BRepBuilderAPI_MakeFace(wire.Wire(), true).Face();
   const TopoDS_Shape shaft =
       BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2 * M_PI).Shape();
@@ -61,7 +62,7 @@ std::string write_filleted_shaft() {
 
 // The exact volume by Pappus: the profile's area times the path of its
 // centroid, summed over a rectangle decomposition less the fillet's cove.
-double exact_volume() {
+double exact_volume(double bore) {
   auto ring = [](double r0, double r1, double h) { return M_PI * (r1 * r1 - r0 * r0) * h; };
   // Bore to r = 40 below the shoulder, to r = 20 above it, and the 8 x 8
   // corner square at r in [20, 28], z in [30, 38] less its quarter disc.
@@ -71,14 +72,14 @@ double exact_volume() {
   // lies 4 r / (3 pi) from the centre along each axis.
   const double centroid_r = 28 - 4 * 8 / (3 * M_PI);
   const double quarter = 2 * M_PI * centroid_r * quarter_area;
-  return ring(10, 40, 30) + ring(10, 20, 50) + square - quarter;
+  return ring(bore, 40, 30) + ring(bore, 20, 50) + square - quarter;
 }
 
 TEST(DecomposeRevolved, AFilletedShaftIsCutAlongAMeridianAndSweptRoundItsAxis) {
-  const std::string path = write_filleted_shaft();
+  const std::string path = write_filleted_shaft(10);
   const geom::Model part = load_any(path);
   ASSERT_EQ(part.volumes().size(), 1u);
-  const double exact = exact_volume();
+  const double exact = exact_volume(10);
   EXPECT_NEAR(part.volume(1).volume, exact, 1e-6 * exact);  // the formula is the part
   ModelJobOptions options;
   options.size = part.box().diagonal() / 40.0;
@@ -97,6 +98,36 @@ TEST(DecomposeRevolved, AFilletedShaftIsCutAlongAMeridianAndSweptRoundItsAxis) {
   EXPECT_NE(cuts.front().through.find("plane through the axis"), std::string::npos)
       << cuts.front().through;
   EXPECT_EQ(r.model.volumes().size(), 2u);
+}
+
+// Without the bore the halves of a meridian cut hold the axis, which no
+// sweep round it takes; the second pass also cuts the pieces the first
+// cuts leave (here at the shoulder's plane, then the meridian and the
+// cylinder r = 20 through the fillet's upper rim). The fillet's ring then
+// has two cusps in its section (the fillet tangent to the shoulder and to
+// the cut cylinder): valid, but its worst hexes are near flat (0.017).
+TEST(DecomposeRevolved, ASolidFilletedShaftMeshesAllHex) {
+  const std::string path = write_filleted_shaft(0);
+  const geom::Model part = load_any(path);
+  ASSERT_EQ(part.volumes().size(), 1u);
+  const double exact = exact_volume(0);
+  EXPECT_NEAR(part.volume(1).volume, exact, 1e-6 * exact);
+  ModelJobOptions options;
+  options.size = part.box().diagonal() / 40.0;
+  const io::Job job = model_job(path, options);
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const RunResult r = run_job(job, registry, selector::mesh_options());
+  fs::remove(path);
+  const testing::HexMeshSummary s = testing::check_hex_mesh(r.model, r.mesh.mesh);
+  EXPECT_EQ(r.mesh.mesh.wedge_count(), 0u);
+  EXPECT_GT(s.min_sj, 0.0);
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);
+  ASSERT_EQ(r.decomposition.volumes.size(), 1u) << "not cut";
+  bool meridian = false;
+  for (const auto& c : r.decomposition.volumes.front().cuts)
+    meridian = meridian || c.through.find("plane through the axis") != std::string::npos;
+  EXPECT_TRUE(meridian);
 }
 
 }  // namespace
