@@ -36,19 +36,26 @@ std::vector<LatticePoint> walk_loop(const std::vector<int>& directions,
 
 namespace {
 
+// The (i, j) box of a fill's points: {imin, imax, jmin, jmax}.
+std::array<int, 4> box_of(const LatticeFill& fill) {
+  std::array<int, 4> b{fill.ij[0][0], fill.ij[0][0], fill.ij[0][1], fill.ij[0][1]};
+  for (const LatticePoint& p : fill.ij) {
+    b[0] = std::min(b[0], p[0]);
+    b[1] = std::max(b[1], p[0]);
+    b[2] = std::min(b[2], p[1]);
+    b[3] = std::max(b[3], p[1]);
+  }
+  return b;
+}
+
 // One block (the lattice fills its box): its interior by transfinite
 // interpolation of its four sides, as the map scheme fills it. The row and
 // column blend is not TFI: across a half annulus its rows run as chords
 // through the hole, and a sweep round the annulus's axis took ribs 0.14
 // off square from them (issue 16).
 void fill_box_by_tfi(LatticeFill& fill) {
-  int imin = fill.ij[0][0], imax = imin, jmin = fill.ij[0][1], jmax = jmin;
-  for (const LatticePoint& p : fill.ij) {
-    imin = std::min(imin, p[0]);
-    imax = std::max(imax, p[0]);
-    jmin = std::min(jmin, p[1]);
-    jmax = std::max(jmax, p[1]);
-  }
+  const std::array<int, 4> box = box_of(fill);
+  const int imin = box[0], imax = box[1], jmin = box[2], jmax = box[3];
   const int ni = imax - imin, nj = jmax - jmin;
   if (ni < 2 || nj < 2) return;
   std::vector<int> at(static_cast<size_t>(ni + 1) * static_cast<size_t>(nj + 1), -1);
@@ -396,13 +403,7 @@ LatticeFill fill_lattice(const std::vector<std::vector<BoundaryPoint>>& loops,
 
 bool fills_its_box(const LatticeFill& fill) {
   if (!fill.ok || fill.ij.empty()) return false;
-  int imin = fill.ij[0][0], imax = imin, jmin = fill.ij[0][1], jmax = jmin;
-  for (const LatticePoint& p : fill.ij) {
-    imin = std::min(imin, p[0]);
-    imax = std::max(imax, p[0]);
-    jmin = std::min(jmin, p[1]);
-    jmax = std::max(jmax, p[1]);
-  }
+  const auto [imin, imax, jmin, jmax] = box_of(fill);
   return fill.cells.size() == static_cast<size_t>(imax - imin) * static_cast<size_t>(jmax - jmin);
 }
 

@@ -75,23 +75,38 @@ double exact_volume(double bore) {
   return ring(bore, 40, 30) + ring(bore, 20, 50) + square - quarter;
 }
 
-TEST(DecomposeRevolved, AFilletedShaftIsCutAlongAMeridianAndSweptRoundItsAxis) {
-  const std::string path = write_filleted_shaft(10);
+// The shaft with a bore of radius `bore` meshed as `cooperage mesh` would
+// at D/40, with the independent hex checks; `exact` is its volume.
+struct Meshed {
+  RunResult run;
+  testing::HexMeshSummary summary;
+  double exact = 0;
+};
+
+Meshed mesh_shaft(double bore) {
+  const std::string path = write_filleted_shaft(bore);
   const geom::Model part = load_any(path);
-  ASSERT_EQ(part.volumes().size(), 1u);
-  const double exact = exact_volume(10);
-  EXPECT_NEAR(part.volume(1).volume, exact, 1e-6 * exact);  // the formula is the part
+  EXPECT_EQ(part.volumes().size(), 1u);
+  Meshed m;
+  m.exact = exact_volume(bore);
+  EXPECT_NEAR(part.volume(1).volume, m.exact, 1e-6 * m.exact);  // the formula is the part
   ModelJobOptions options;
   options.size = part.box().diagonal() / 40.0;
   const io::Job job = model_job(path, options);
   scheme::Registry registry;
   register_builtin_schemes(registry);
-  const RunResult r = run_job(job, registry, selector::mesh_options());
+  m.run = run_job(job, registry, selector::mesh_options());
   fs::remove(path);
-  const testing::HexMeshSummary s = testing::check_hex_mesh(r.model, r.mesh.mesh);
-  EXPECT_EQ(r.mesh.mesh.wedge_count(), 0u);
-  EXPECT_GE(s.min_sj, 0.2);
-  EXPECT_NEAR(s.volume, exact, 0.01 * exact);
+  m.summary = testing::check_hex_mesh(m.run.model, m.run.mesh.mesh);
+  EXPECT_EQ(m.run.mesh.mesh.wedge_count(), 0u);
+  EXPECT_NEAR(m.summary.volume, m.exact, 0.01 * m.exact);
+  return m;
+}
+
+TEST(DecomposeRevolved, AFilletedShaftIsCutAlongAMeridianAndSweptRoundItsAxis) {
+  const Meshed m = mesh_shaft(10);
+  const RunResult& r = m.run;
+  EXPECT_GE(m.summary.min_sj, 0.2);
   ASSERT_EQ(r.decomposition.volumes.size(), 1u) << "not cut";
   const auto& cuts = r.decomposition.volumes.front().cuts;
   ASSERT_EQ(cuts.size(), 1u);
@@ -107,22 +122,9 @@ TEST(DecomposeRevolved, AFilletedShaftIsCutAlongAMeridianAndSweptRoundItsAxis) {
 // has two cusps in its section (the fillet tangent to the shoulder and to
 // the cut cylinder): valid, but its worst hexes are near flat (0.017).
 TEST(DecomposeRevolved, ASolidFilletedShaftMeshesAllHex) {
-  const std::string path = write_filleted_shaft(0);
-  const geom::Model part = load_any(path);
-  ASSERT_EQ(part.volumes().size(), 1u);
-  const double exact = exact_volume(0);
-  EXPECT_NEAR(part.volume(1).volume, exact, 1e-6 * exact);
-  ModelJobOptions options;
-  options.size = part.box().diagonal() / 40.0;
-  const io::Job job = model_job(path, options);
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
-  const RunResult r = run_job(job, registry, selector::mesh_options());
-  fs::remove(path);
-  const testing::HexMeshSummary s = testing::check_hex_mesh(r.model, r.mesh.mesh);
-  EXPECT_EQ(r.mesh.mesh.wedge_count(), 0u);
-  EXPECT_GT(s.min_sj, 0.0);
-  EXPECT_NEAR(s.volume, exact, 0.01 * exact);
+  const Meshed m = mesh_shaft(0);
+  const RunResult& r = m.run;
+  EXPECT_GT(m.summary.min_sj, 0.0);
   ASSERT_EQ(r.decomposition.volumes.size(), 1u) << "not cut";
   bool meridian = false;
   for (const auto& c : r.decomposition.volumes.front().cuts)
