@@ -215,7 +215,6 @@ std::string seamed_target_from_far_source(const geom::Model& model, const Volume
   return {};
 }
 
-// Runs the steps for one sorting of the faces.
 // A ring of sweeps closing (NeighbourMeshes::closing): a one-to-one sweep
 // ends on its target as the ring meshed it, matched node for node to the
 // source's mesh (cap_stacks.cpp), instead of meshing it itself. Only a
@@ -235,6 +234,7 @@ void end_on_existing_mesh(const BarrelTree& tree, const std::set<int>& closing,
                         roles.by_volume.end());
 }
 
+// Runs the steps for one sorting of the faces.
 VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
                     const VolumeFacts& facts, const PlanInputs& in, const CapCandidate& cand) {
   VolumePlan p;
