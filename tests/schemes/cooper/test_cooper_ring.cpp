@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <vector>
 
 namespace cooperage::cooper {
 namespace {
@@ -95,6 +97,47 @@ TEST(CooperRing, EveryHexLayerOfTheRingIsAWholeTurn) {
       outer += nodes.size() - 1;
   }
   EXPECT_EQ(r.mesh.hex_count(), outer * a);
+}
+
+TEST(CooperRing, FourQuartersEachSweptRoundTheAxisCloseTheRing) {
+  // Cut along y = 0 and x = 0; every quarter hinted from its cut face at
+  // the smaller angle to the one 90 degrees on: a ring of four sweeps,
+  // whichever is chosen last ends on the first one's source.
+  occ::Workbench wb;
+  wb.revolve("ring", {{2, 0, 0}, {4, 0, 0}, {4, 0, 2}, {2, 0, 2}}, {0, 0, 0}, {0, 0, 1}, 360);
+  wb.webcut("ring", {0, 0, 0}, {0, 1, 0});
+  wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 4u);
+  std::map<int, std::vector<std::pair<double, int>>> cut_faces_of;  // volume -> (angle, face)
+  for (const auto& s : model.surfaces()) {
+    if (s.geometry->type() != geom::SurfaceType::Plane || s.volumes.size() != 2) continue;
+    const geom::Vec3 c = 0.5 * (s.box.min + s.box.max);
+    const double deg = std::fmod(std::atan2(c.y(), c.x()) * 180 / M_PI + 360, 360);
+    for (int v : s.volumes) cut_faces_of[v].push_back({std::round(deg), s.id});
+  }
+  io::MeshSettings settings;
+  settings.size = 0.25;
+  settings.finer_retries = 0;
+  for (const auto& [v, faces] : cut_faces_of) {
+    ASSERT_EQ(faces.size(), 2u);
+    const bool first_leads = std::fmod(faces[0].first + 90, 360) == faces[1].first;
+    io::VolumeSetting h;
+    h.id = v;
+    h.scheme = "cooper";
+    h.sources = {first_leads ? faces[0].second : faces[1].second};
+    h.targets = {first_leads ? faces[1].second : faces[0].second};
+    settings.volumes.push_back(h);
+  }
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, settings, registry, selector::mesh_options());
+  const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
+  const double exact = 24 * M_PI;
+  EXPECT_NEAR(s.volume, exact, 0.005 * exact);
+  EXPECT_GT(s.min_sj, 0.95);
+  EXPECT_EQ(r.plan.ring_closers.size(), 1u);
 }
 
 }  // namespace
