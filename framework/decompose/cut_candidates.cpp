@@ -40,6 +40,18 @@ bool is_feature(const geom::Model& model, int volume, int c, double angle_deg) {
   return normals[0].dot(normals[1]) < std::cos(angle_deg * M_PI / 180.0);
 }
 
+// The meridian plane of a cylinder's axis holding the coordinate direction
+// least along it: any meridian halves a solid of revolution alike.
+CutCandidate meridian_of(const Cylinder& c, int surface) {
+  int least = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(c.axis[k]) < std::abs(c.axis[least])) least = k;
+  }
+  const geom::Vec3 n = c.axis.cross(geom::Vec3::Unit(least)).normalized();
+  return {{CutSurface::Kind::Plane, c.point, n, 0.0},
+          "plane through the axis of surface " + std::to_string(surface)};
+}
+
 }  // namespace
 
 std::vector<geom::Vec3> sweep_axes(const geom::Model& model, int volume) {
@@ -124,20 +136,47 @@ std::vector<CutCandidate> meridian_candidates(const geom::Model& model, int volu
                                               const CandidateOptions& options) {
   std::vector<CutCandidate> out;
   for (int s : model.surfaces_of(volume)) {
-    if (auto c = cylinder_of(model.surface(s))) {
-      // The meridian plane holding the coordinate direction least along the
-      // axis: any meridian halves a solid of revolution alike.
-      const geom::Vec3& a = c->axis;
-      int least = 0;
-      for (int k = 1; k < 3; ++k) {
-        if (std::abs(a[k]) < std::abs(a[least])) least = k;
-      }
-      const geom::Vec3 n = a.cross(geom::Vec3::Unit(least)).normalized();
-      add_unique(out,
-                 {{CutSurface::Kind::Plane, c->point, n, 0.0},
-                  "plane through the axis of surface " + std::to_string(s)},
-                 options.tolerance);
+    if (auto c = cylinder_of(model.surface(s)))
+      add_unique(out, meridian_of(*c, s), options.tolerance);
+  }
+  return out;
+}
+
+std::vector<CoreCut> core_candidates(const geom::Model& model, int volume,
+                                     const CandidateOptions& options) {
+  // Coaxial cylinders: one entry per axis line, with the smallest radius.
+  struct Axis {
+    Cylinder smallest;
+    int surface = 0;
+  };
+  std::vector<Axis> axes;
+  for (int s : model.surfaces_of(volume)) {
+    const auto c = cylinder_of(model.surface(s));
+    if (!c) continue;
+    bool known = false;
+    for (Axis& a : axes) {
+      const geom::Vec3 d = c->point - a.smallest.point;
+      const bool parallel = std::abs(c->axis.dot(a.smallest.axis)) >= kParallel;
+      if (!parallel || (d - d.dot(a.smallest.axis) * a.smallest.axis).norm() > options.tolerance)
+        continue;
+      known = true;
+      if (c->radius < a.smallest.radius) a = {*c, s};
     }
+    if (!known) axes.push_back({*c, s});
+  }
+  std::vector<CoreCut> out;
+  for (const Axis& a : axes) {
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%.4g", 0.5 * a.smallest.radius);
+    CoreCut cut;
+    cut.core.surface.kind = CutSurface::Kind::Cylinder;
+    cut.core.surface.origin = a.smallest.point;
+    cut.core.surface.direction = a.smallest.axis;
+    cut.core.surface.radius = 0.5 * a.smallest.radius;
+    cut.core.through = "core cylinder r = " + std::string(radius) +
+                       ", half the radius of surface " + std::to_string(a.surface);
+    cut.meridian = meridian_of(a.smallest, a.surface);
+    out.push_back(std::move(cut));
   }
   return out;
 }

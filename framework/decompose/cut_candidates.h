@@ -49,6 +49,18 @@ std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
 std::vector<CutCandidate> meridian_candidates(const geom::Model& model, int volume,
                                               const CandidateOptions& options = {});
 
+/// A turned part solid at its axis: a core cylinder about the axis of its
+/// cylindrical faces, of half the smallest of their radii (swept along the
+/// axis), and a meridian plane for the tube left around it (its halves
+/// swept round the axis). Their halves of a meridian cut alone would hold
+/// the axis, which no sweep round it takes.
+struct CoreCut {
+  CutCandidate core;
+  CutCandidate meridian;
+};
+std::vector<CoreCut> core_candidates(const geom::Model& model, int volume,
+                                     const CandidateOptions& options = {});
+
 /// The candidate sweep axes of a volume: unit normals of its planar faces
 /// and axes of its cylindrical faces, parallel ones merged (the sign of the
 /// first kept), ordered by the area of the faces behind them (largest

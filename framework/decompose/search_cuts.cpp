@@ -100,6 +100,51 @@ std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Mode
   return check_(context(pieces).build_model(true), last_resort_);
 }
 
+std::optional<SolidPlan> CutSearch::solve_turned(const occ::SolidPieces& solid) {
+  const geom::Model model = solid.build_model(false);
+  if (model.volumes().size() != 1) return std::nullopt;
+  const double size = options_.size;
+  for (const CoreCut& c : core_candidates(model, 1)) {
+    if (tried_ + 2 > options_.max_cuts) break;
+    tried_ += 2;
+    try {
+      const occ::SolidPieces cored = solid.split(0, c.core.surface);
+      if (cored.size() != 2) continue;  // the core misses the solid: a bore
+      const geom::Model two = cored.build_model(false);
+      // The tube: the piece no scheme takes (the core sweeps along the axis).
+      int tube = -1;
+      for (const geom::Volume& v : two.volumes()) {
+        if (!best_scheme(two, v.id, registry_, options_.settings).ok) {
+          if (tube >= 0) tube = -2;
+          if (tube == -1) tube = v.id - 1;
+        }
+      }
+      if (tube < 0) continue;
+      const occ::SolidPieces halves = cored.split(tube, c.meridian.surface);
+      if (halves.size() < 2) continue;
+      const occ::SolidPieces pieces = cored.replace(tube, halves);
+      const geom::Model all = pieces.build_model(false);
+      bool ok = true;
+      for (const geom::Volume& v : all.volumes())
+        ok = ok && best_scheme(all, v.id, registry_, options_.settings).ok;
+      // The core is as thick as its radius (its samples lie on the cut).
+      const double thin_core = c.core.surface.radius;
+      const double thin_half = thinnest_piece(all, c.meridian.surface);
+      if (!ok || thin_core < size || thin_half < size) continue;
+      const std::string reason = check_in(pieces, &all, nullptr);
+      log::info("decompose: " + c.core.through + " and " + c.meridian.through +
+                (reason.empty() ? " plan" : " do not plan: " + reason));
+      if (!reason.empty()) continue;
+      return SolidPlan{pieces,
+                       {{c.core.surface, c.core.through, 0, 2, thin_core},
+                        {c.meridian.surface, c.meridian.through, 1, halves.size(), thin_half}}};
+    } catch (const MeshingError&) {
+      continue;  // the kernel could not make a cut
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int depth,
                                           const std::vector<CutCandidate>& inherited,
                                           const Context& context) {

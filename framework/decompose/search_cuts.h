@@ -32,6 +32,7 @@ class CutSearch {
     last_resort_ = false;
     if (auto plan = solve(solid, 0, {}, nullptr)) return plan;
     last_resort_ = true;
+    if (auto plan = solve_turned(solid)) return plan;
     return solve(solid, 0, {}, nullptr);
   }
 
@@ -51,6 +52,10 @@ class CutSearch {
   std::optional<SolidPlan> solve(const occ::SolidPieces& solid, int depth,
                                  const std::vector<CutCandidate>& inherited,
                                  const Context& context);
+  /// A turned part solid at its axis (core_candidates): the core cylinder,
+  /// then a meridian cut of the tube around it, when all three pieces have
+  /// a scheme and plan together.
+  std::optional<SolidPlan> solve_turned(const occ::SolidPieces& solid);
   /// "" when `pieces` plan among the solids of `context`, else the reason.
   std::string check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
                        const Context& context);
