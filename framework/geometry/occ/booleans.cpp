@@ -7,10 +7,18 @@
 #include <BRepAlgoAPI_Splitter.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopTools_MapOfShape.hxx>
+#include <TopoDS.hxx>
 #include <gp_Pln.hxx>
+
+#include <cmath>
 
 #include <set>
 
@@ -26,6 +34,45 @@ const char* op_name(Op op) {
     case Op::Common: return "common";
   }
   return "boolean";
+}
+
+/// A face narrower than this fraction of the shape's diagonal (twice its
+/// area over its perimeter) is a sliver.
+constexpr double kSliverWidth = 0.01;
+
+/// The faces of one surface that meet along an edge, one face again. A fuse
+/// unifies them all (its coplanar faces). A cut or a common unifies only
+/// slivers into their neighbours: where a second hole meets a hole's wall
+/// just beside the wall's own seam, the kernel leaves a strip 0.05 wide as a
+/// face of its own; its short rims graded the curves round it and twisted a
+/// sweep's ribs into inverted hexes (plan => mesh campaign seed 3 case 45).
+/// A wall split at its seam into two wide faces stays split: unified, such
+/// walls swept worse in as many campaign parts as they swept better.
+TopoDS_Shape unify_same_domain(const TopoDS_Shape& shape, bool slivers_only) {
+  ShapeUpgrade_UnifySameDomain unify(shape, Standard_True, Standard_True, Standard_False);
+  if (slivers_only) {
+    Bnd_Box box;
+    BRepBndLib::Add(shape, box);
+    const double diagonal = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+    TopTools_IndexedDataMapOfShapeListOfShape faces_of_edge;
+    TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of_edge);
+    TopTools_MapOfShape keep;
+    for (int i = 1; i <= faces_of_edge.Extent(); ++i) {
+      bool beside_sliver = false;
+      for (const TopoDS_Shape& f : faces_of_edge(i)) {
+        GProp_GProps area, perimeter;
+        BRepGProp::SurfaceProperties(f, area);
+        BRepGProp::LinearProperties(f, perimeter);
+        const double width =
+            perimeter.Mass() > 0 ? 2.0 * std::abs(area.Mass()) / perimeter.Mass() : 0.0;
+        beside_sliver = beside_sliver || width < kSliverWidth * diagonal;
+      }
+      if (!beside_sliver) keep.Add(faces_of_edge.FindKey(i));
+    }
+    unify.KeepShapes(keep);
+  }
+  unify.Build();
+  return unify.Shape();
 }
 
 void boolean(Workbench::Impl& impl, Op op, const std::string& name,
@@ -59,9 +106,6 @@ void boolean(Workbench::Impl& impl, Op op, const std::string& name,
     if (op == Op::Fuse) {
       BRepAlgoAPI_Fuse algo;
       s = run(algo);
-      ShapeUpgrade_UnifySameDomain unify(s, Standard_True, Standard_True, Standard_False);
-      unify.Build();
-      s = unify.Shape();
     } else if (op == Op::Cut) {
       BRepAlgoAPI_Cut algo;
       s = run(algo);
@@ -69,6 +113,7 @@ void boolean(Workbench::Impl& impl, Op op, const std::string& name,
       BRepAlgoAPI_Common algo;
       s = run(algo);
     }
+    s = unify_same_domain(s, op != Op::Fuse);
     if (!detail::contains_solid(s))
       throw MeshingError(ErrorCode::GeometryError, context + " gives an empty result");
     return s;

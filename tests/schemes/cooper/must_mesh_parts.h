@@ -64,6 +64,19 @@ inline void blind_holes_offset_axes(occ::Workbench& wb) {
   wb.cut("part", {"b", "h", "g"});
 }
 
+// Two overlapping blind holes from the bottom, 0.93 and 0.48 deep (plan =>
+// mesh campaign seed 3 case 45, scaled by 0.1): the shallow hole's wall,
+// outside the deep one, crosses its own seam 0.005 from where the walls
+// meet. The cut left that sliver of wall as a face of its own, its rims
+// graded the ring round the deep hole, and the sweep's ribs there twisted
+// by 66 degrees into inverted hexes at every size.
+inline void overlapping_blind_holes(occ::Workbench& wb) {
+  wb.brick("b", {0, 0, 0}, {2.403, 5.445, 2.043});
+  wb.cylinder("deep", {1.262, 1.212, -2.043}, {0, 0, 1}, 0.537, 2.972);
+  wb.cylinder("shallow", {1.019, 1.744, -2.043}, {0, 0, 1}, 0.348, 2.524);
+  wb.cut("part", {"b", "deep", "shallow"});
+}
+
 // Two prongs standing on a plate with a hole between them (the fork of
 // occt_bm2_ec_lever-A): the prongs' walls at y = 0 and y = 2 are one face
 // each with the plate's, so both prongs are one barrel, whose lower
@@ -188,6 +201,7 @@ inline std::vector<std::pair<std::string, Build>> all() {
           {"blind_holes_both_ends", blind_holes_both_ends},
           {"blind_holes_coaxial", blind_holes_coaxial},
           {"blind_holes_offset_axes", blind_holes_offset_axes},
+          {"overlapping_blind_holes", overlapping_blind_holes},
           {"fork_over_plate", fork_over_plate},
           {"pocket", pocket},
           {"stepped_shaft", stepped_shaft},

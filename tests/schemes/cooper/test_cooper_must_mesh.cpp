@@ -113,6 +113,13 @@ TEST(CooperMustMesh, CoaxialBlindHolesFromBothEnds) {
 TEST(CooperMustMesh, BlindHolesWhoseAxesAreAHairApart) {
   check("blind_holes_offset_axes", blind_holes_offset_axes, 0.25, 115, 3);
 }
+// From the plan => mesh campaign (issue 15): refused with an inverted hex
+// at sizes 0.66 to 0.16 before a cut's faces of one surface were unified.
+TEST(CooperMustMesh, OverlappingBlindHolesOfTwoDepths) {
+  for (double size : {0.33, 0.25, 0.164})
+    expect_must_mesh("overlapping_blind_holes", overlapping_blind_holes, size, 3);
+  expect_rotation_invariant("overlapping_blind_holes", overlapping_blind_holes, 0.25, 117);
+}
 // Also from the lever: the prongs' virtual cap was one subcap with the
 // second prong as a "hole", and imprinting failed.
 TEST(CooperMustMesh, ForkOfTwoProngsOverAPlate) {

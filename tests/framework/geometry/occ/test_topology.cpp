@@ -95,6 +95,41 @@ TEST(OccTopology, PlateWithThreeHoles) {
   EXPECT_EQ(with_holes, 2);
 }
 
+TEST(OccTopology, ACutLeavesNoSliverOfAHoleWallBesideItsSeam) {
+  // Overlapping blind holes (plan => mesh campaign seed 3 case 45, scaled):
+  // the shallow hole's wall, outside the deep one, crosses its own seam
+  // (at +x of its axis) 0.005 from where the walls meet. The kernel splits
+  // the wall there; the cut gives the 0.005 wide strip back to the wall.
+  Workbench wb;
+  wb.brick("b", Vec3(0, 0, 0), Vec3(2.403, 5.445, 2.043));
+  wb.cylinder("deep", Vec3(1.262, 1.212, -2.043), Vec3(0, 0, 1), 0.537, 2.972);
+  wb.cylinder("shallow", Vec3(1.019, 1.744, -2.043), Vec3(0, 0, 1), 0.348, 2.524);
+  wb.cut("part", {"b", "deep", "shallow"});
+  const Model m = wb.build_model();
+  ASSERT_EQ(m.volumes().size(), 1u);
+  int shallow_walls = 0;
+  for (const auto& s : m.surfaces()) {
+    const auto [lo, hi] = s.geometry->uv_bounds();
+    const Vec3 p = s.geometry->point(0.5 * (lo + hi));
+    const double r = std::hypot(p.x() - 1.019, p.y() - 1.744);
+    if (s.geometry->type() == geom::SurfaceType::Cylinder && std::abs(r - 0.348) < 1e-6)
+      ++shallow_walls;
+  }
+  EXPECT_EQ(shallow_walls, 1);
+  // 6 brick faces, 2 walls, 2 floors.
+  EXPECT_EQ(m.surfaces().size(), 10u);
+  // The block less the deep hole and the shallow one's part outside it.
+  const double r0 = 0.537, r1 = 0.348;
+  const double d = std::hypot(1.262 - 1.019, 1.212 - 1.744);
+  const double a0 = std::acos((d * d + r0 * r0 - r1 * r1) / (2 * d * r0));
+  const double a1 = std::acos((d * d + r1 * r1 - r0 * r0) / (2 * d * r1));
+  const double lens =
+      r0 * r0 * (a0 - 0.5 * std::sin(2 * a0)) + r1 * r1 * (a1 - 0.5 * std::sin(2 * a1));
+  const double exact =
+      2.403 * 5.445 * 2.043 - kPi * r0 * r0 * 0.929 - (kPi * r1 * r1 - lens) * 0.481;
+  EXPECT_TRUE(near_rel(m.volume(1).volume, exact, 1e-6));
+}
+
 TEST(OccTopology, PrismWithHoleAndRevolve) {
   Workbench wb;
   wb.prism("p", {Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(4, 4, 0), Vec3(0, 4, 0)},
