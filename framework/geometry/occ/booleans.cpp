@@ -12,6 +12,7 @@
 #include <GProp_GProps.hxx>
 #include <ShapeUpgrade_UnifySameDomain.hxx>
 #include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopTools_MapOfShape.hxx>
@@ -54,19 +55,21 @@ TopoDS_Shape unify_same_domain(const TopoDS_Shape& shape, bool slivers_only) {
     Bnd_Box box;
     BRepBndLib::Add(shape, box);
     const double diagonal = box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+    TopTools_MapOfShape slivers;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+      GProp_GProps area, perimeter;
+      BRepGProp::SurfaceProperties(f.Current(), area);
+      BRepGProp::LinearProperties(f.Current(), perimeter);
+      const double width =
+          perimeter.Mass() > 0 ? 2.0 * std::abs(area.Mass()) / perimeter.Mass() : 0.0;
+      if (width < kSliverWidth * diagonal) slivers.Add(f.Current());
+    }
     TopTools_IndexedDataMapOfShapeListOfShape faces_of_edge;
     TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, faces_of_edge);
-    TopTools_MapOfShape keep;
+    TopTools_MapOfShape keep;  // every edge no sliver borders
     for (int i = 1; i <= faces_of_edge.Extent(); ++i) {
       bool beside_sliver = false;
-      for (const TopoDS_Shape& f : faces_of_edge(i)) {
-        GProp_GProps area, perimeter;
-        BRepGProp::SurfaceProperties(f, area);
-        BRepGProp::LinearProperties(f, perimeter);
-        const double width =
-            perimeter.Mass() > 0 ? 2.0 * std::abs(area.Mass()) / perimeter.Mass() : 0.0;
-        beside_sliver = beside_sliver || width < kSliverWidth * diagonal;
-      }
+      for (const TopoDS_Shape& f : faces_of_edge(i)) beside_sliver = beside_sliver || slivers.Contains(f);
       if (!beside_sliver) keep.Add(faces_of_edge.FindKey(i));
     }
     unify.KeepShapes(keep);
