@@ -16,11 +16,9 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopTools_MapOfShape.hxx>
-#include <TopoDS.hxx>
 #include <gp_Pln.hxx>
 
 #include <cmath>
-
 #include <set>
 
 namespace cooperage::occ {
@@ -69,7 +67,8 @@ TopoDS_Shape unify_same_domain(const TopoDS_Shape& shape, bool slivers_only) {
     TopTools_MapOfShape keep;  // every edge no sliver borders
     for (int i = 1; i <= faces_of_edge.Extent(); ++i) {
       bool beside_sliver = false;
-      for (const TopoDS_Shape& f : faces_of_edge(i)) beside_sliver = beside_sliver || slivers.Contains(f);
+      for (const TopoDS_Shape& f : faces_of_edge(i))
+        beside_sliver = beside_sliver || slivers.Contains(f);
       if (!beside_sliver) keep.Add(faces_of_edge.FindKey(i));
     }
     unify.KeepShapes(keep);
