@@ -134,23 +134,4 @@ void tfi_3d(Grid3& g) {
   }
 }
 
-double hex_min_scaled_jacobian(const std::array<Vec3, 8>& x) {
-  // Neighbours of each corner, ordered so the determinant is positive for a
-  // valid hex (Verdict, hex scaled Jacobian).
-  static constexpr int kNeighbours[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
-                                            {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
-  double worst = 1.0;
-  for (int c = 0; c < 8; ++c) {
-    Vec3 e[3];
-    for (int a = 0; a < 3; ++a) {
-      e[a] = x[static_cast<size_t>(kNeighbours[c][a])] - x[static_cast<size_t>(c)];
-      const double len = e[a].norm();
-      if (len <= 0.0) return -1.0;
-      e[a] /= len;
-    }
-    worst = std::min(worst, e[0].dot(e[1].cross(e[2])));
-  }
-  return worst;
-}
-
 }  // namespace cooperage::mesh

@@ -8,7 +8,6 @@
 
 #include "framework/geometry/types.h"
 
-#include <array>
 #include <vector>
 
 namespace cooperage::mesh {
@@ -62,10 +61,5 @@ struct Grid3 {
 /// parameter u at (i, j, k) blends the arc-length fractions of the four
 /// boundary i-lines through the faces j = 0, nJ and k = 0, nK; v, w likewise.
 void tfi_3d(Grid3& block);
-
-/// Minimum over the 8 corners of the scaled Jacobian of a hex in Exodus
-/// order: det of the three unit edge vectors at the corner (1 for a cube,
-/// <= 0 for an inverted or degenerate corner). Verdict's hex scaled Jacobian.
-double hex_min_scaled_jacobian(const std::array<Vec3, 8>& x);
 
 }  // namespace cooperage::mesh

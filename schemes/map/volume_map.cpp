@@ -5,6 +5,7 @@
 #include "schemes/map/map_plan.h"
 #include "schemes/map/map_sides.h"
 #include "framework/mesh/tfi.h"
+#include "framework/quality/hex_metrics.h"
 
 #include <Eigen/Geometry>
 
@@ -16,7 +17,6 @@ namespace cooperage::map {
 
 using geom::Vec3;
 using mesh::Grid3;
-using mesh::hex_min_scaled_jacobian;
 using mesh::tfi_3d;
 namespace {
 
@@ -183,7 +183,7 @@ scheme::EntityMesh VolumeMap::mesh(const scheme::VolumeView& view,
           hex[c] = local[ids[c]];
           x[c] = grid.at[ids[c]];
         }
-        const double sj = hex_min_scaled_jacobian(x);
+        const double sj = quality::hex_scaled_jacobian(x);
         if (sj < worst) {
           worst = sj;
           worst_at = {i, j, k};
