@@ -97,6 +97,38 @@ TEST(CooperHints, ADirectionHintThatCannotBeHonouredIsRefusedNamingItsLine) {
   }
 }
 
+// Campaign seed 4 case 118 swept upwards by a hint: imprinting left a rib
+// ending on no subcap and the run reported "map::at". Meshed or refused
+// with the barrel named and the reason in words, never a library's text.
+TEST(CooperHints, AnImprintingInconsistencyIsAMeshingErrorNamingTheBarrel) {
+  const TempJournal j("rib.xml", R"(<cooperage version="1">
+  <geometry>
+    <brick name="block" origin="0 0 0" size="53.49 25.97 31.67"/>
+    <brick name="f0" origin="10.24 6.2 31.67" size="14.72 2.66 12.06"/>
+    <cylinder name="f1" base="16.39 10.99 -31.67" axis="0 0 1" radius="3.44" height="46.81"/>
+    <cylinder name="f2" base="22.95 13.84 -31.67" axis="0 0 1" radius="3.07" height="95.01"/>
+    <cylinder name="f3" base="20.13 4.28 22.04" axis="0 0 1" radius="5.3" height="41.3"/>
+    <fuse name="body" inputs="block f0"/>
+    <cut name="part" inputs="body f1 f2 f3"/>
+  </geometry>
+  <mesh size="4.41" decompose="off" finer_retries="0">
+    <volume id="1" direction="0 0 1"/>
+  </mesh>
+</cooperage>
+)");
+  const io::Job job = io::read_journal(j.path.string());
+  auto registry = std::make_unique<scheme::Registry>();
+  register_builtin_schemes(*registry);
+  try {
+    pipeline::run_job(job, *registry, selector::mesh_options());
+  } catch (const MeshingError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.code(), ErrorCode::MeshingFailed) << what;
+    EXPECT_EQ(what.find("map::at"), std::string::npos) << what;
+    EXPECT_NE(what.find("barrel "), std::string::npos) << what;
+  }
+}
+
 TEST(CooperHints, SourceAndTargetHintsAreHonouredOrRefusedNamingTheirLine) {
   const std::string body = R"(<cooperage version="1">
   <geometry>
