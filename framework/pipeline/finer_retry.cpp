@@ -31,6 +31,12 @@ std::string fraction(double asked, double size) {
   return "1/" + std::to_string(n);
 }
 
+// "(0, 0, -1)", as `cooperage plan` writes a sweep direction.
+std::string vector_text(const geom::Vec3& v) {
+  auto c = [](double x) { return number_text(std::abs(x) < 5e-4 ? 0.0 : x); };
+  return "(" + c(v.x()) + ", " + c(v.y()) + ", " + c(v.z()) + ")";
+}
+
 }  // namespace
 
 std::vector<int> halve_failed_volumes(const std::vector<Verdict>& verdicts,
@@ -53,12 +59,59 @@ std::vector<int> halve_failed_volumes(const std::vector<Verdict>& verdicts,
   return halved;
 }
 
+void note_planned_sweeps(const SchemePlan& plan, const io::MeshSettings& settings,
+                         std::map<int, FinerRetry>& retries) {
+  for (auto& [id, r] : retries) {
+    bool hinted = false;
+    for (const io::VolumeSetting& v : settings.volumes)
+      hinted = hinted || (v.id == id && (v.direction || !v.sources.empty() || !v.targets.empty()));
+    const auto entry = plan.volumes.find(id);
+    if (hinted || entry == plan.volumes.end() || !entry->second.data) continue;
+    if (const auto d = entry->second.data->straight_sweep())
+      r.planned_sweep = geom::Vec3((*d)[0], (*d)[1], (*d)[2]);
+  }
+}
+
+std::vector<int> turn_failed_sweeps(const std::vector<Verdict>& verdicts,
+                                    io::MeshSettings& settings,
+                                    std::map<int, FinerRetry>& retries) {
+  std::vector<int> turned;
+  for (const Verdict& v : verdicts) {
+    if (v.state != Verdict::State::Refused || !v.finer_may_help || v.entity.dim != 3) continue;
+    const auto it = retries.find(v.entity.id);
+    if (it == retries.end() || !it->second.planned_sweep || it->second.turned) continue;
+    FinerRetry& r = it->second;
+    r.turned = true;
+    r.size = r.asked;
+    io::VolumeSetting& s = setting_of(settings, v.entity.id);
+    s.sizing.size = r.asked;
+    s.direction = -*r.planned_sweep;
+    turned.push_back(v.entity.id);
+  }
+  return turned;
+}
+
 void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& result) {
   std::vector<Warning> warnings;
   for (Verdict& v : result.verdicts) {
     const auto it = retries.find(v.entity.id);
     if (v.entity.dim != 3 || it == retries.end()) continue;
     const FinerRetry& r = it->second;
+    const std::string other_way =
+        r.planned_sweep ? "sweeping it the other way, along " + vector_text(-*r.planned_sweep)
+                        : std::string();
+    if (r.turned && v.state == Verdict::State::Refused) {
+      v.hint = "meshing it again at smaller sizes, and " + other_way + ", failed too; " + v.hint;
+      continue;
+    }
+    if (r.turned) {
+      warnings.push_back(
+          {v.entity,
+           "meshed " + other_way + ", at the size asked for (" + number_text(r.asked) +
+               "); along " + vector_text(*r.planned_sweep) +
+               " it failed at that size and at smaller ones: " + clip(r.first_reason, 240)});
+      continue;
+    }
     if (v.state == Verdict::State::Refused) {
       v.hint = "meshing it again at " + fraction(r.asked, r.size) + " the size (" +
                number_text(r.size) + ") failed too; " + v.hint;

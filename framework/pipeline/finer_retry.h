@@ -2,14 +2,20 @@
 // its size (issue 16 item 4: small features adapt the size rather than
 // fail). In the plan => mesh campaign such failures are mostly features
 // closer than an element: half the size meshed 47 of 106, a quarter 59
-// (bench/RESULTS.md, session 22). Every retry that meshes is a warning
-// naming the volume, both sizes and why the first failed.
+// (bench/RESULTS.md, session 22). A straight sweep that fails at every
+// size is then swept the other way at the size asked for (the caps it
+// ended on become those it starts from, and the subcaps are imprinted in
+// the other order): 15 of the campaign's 103 failures at their own size
+// mesh so, 5 of them failing at every finer size (session 25). Every retry
+// that meshes is a warning naming the volume, what changed and why the
+// first attempt failed.
 #pragma once
 
 #include "framework/io/job.h"
 #include "framework/pipeline/mesher.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +26,10 @@ struct FinerRetry {
   double asked = 0;          ///< the size the settings gave it
   double size = 0;           ///< the size of its latest attempt
   std::string first_reason;  ///< why the attempt at `asked` failed
+  /// The straight sweep its first plan made (no journal hint), and whether
+  /// the latest attempt swept it the other way (at `asked`).
+  std::optional<geom::Vec3> planned_sweep;
+  bool turned = false;
 };
 
 /// Halves, in `settings`, the size of every volume of `verdicts` a smaller
@@ -30,8 +40,19 @@ std::vector<int> halve_failed_volumes(const std::vector<Verdict>& verdicts,
                                       io::MeshSettings& settings,
                                       std::map<int, FinerRetry>& retries);
 
+/// Records, for the volumes of `retries`, the straight sweep `plan` (the
+/// first attempt's) made where the journal gave no sweep hint.
+void note_planned_sweeps(const SchemePlan& plan, const io::MeshSettings& settings,
+                         std::map<int, FinerRetry>& retries);
+
+/// Sets, in `settings`, every volume of `verdicts` still refused after the
+/// finer retries and swept straight by its first plan back to the size
+/// asked for, with a direction hint the other way. Returns those volumes.
+std::vector<int> turn_failed_sweeps(const std::vector<Verdict>& verdicts,
+                                    io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
+
 /// A warning for every retried volume that meshed; for one that still
-/// failed, its hint says which sizes were tried.
+/// failed, its hint says which sizes (and which direction) were tried.
 void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& result);
 
 }  // namespace cooperage::pipeline

@@ -505,7 +505,12 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
   if (options.dim == 3 && settings.finer_retries > 0) {
     io::MeshSettings finer = settings;
     std::map<int, FinerRetry> retries;
+    const SchemePlan first_plan = result.plan;
     double earlier = 0;  // seconds of the attempts that failed
+    const auto seconds = [](const MeshResult& r) {
+      return std::accumulate(r.stages.begin(), r.stages.end(), 0.0,
+                             [](double t, const StageTime& st) { return t + st.seconds; });
+    };
     for (int round = 0; round < settings.finer_retries; ++round) {
       const std::vector<int> halved = halve_failed_volumes(result.verdicts, finer, retries);
       if (halved.empty()) break;
@@ -513,11 +518,30 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         log::info("volume " + std::to_string(volume) + " failed at size " +
                   number_text(2 * retries.at(volume).size) + "; meshing again at " +
                   number_text(retries.at(volume).size));
-      const double failed =
-          std::accumulate(result.stages.begin(), result.stages.end(), 0.0,
-                          [](double t, const StageTime& st) { return t + st.seconds; });
+      earlier += seconds(result);
       result = mesh_attempt(model, finer, registry, options);
-      earlier += failed;
+    }
+    // Straight sweeps that failed at every size, the other way at the size
+    // asked for; kept when fewer volumes are refused than before.
+    note_planned_sweeps(first_plan, settings, retries);
+    std::map<int, FinerRetry> turned_retries = retries;
+    const std::vector<int> turned = turn_failed_sweeps(result.verdicts, finer, turned_retries);
+    if (!turned.empty()) {
+      for (int volume : turned)
+        log::info("volume " + std::to_string(volume) + " failed at every size; sweeping it the " +
+                  "other way at size " + number_text(turned_retries.at(volume).asked));
+      MeshResult other = mesh_attempt(model, finer, registry, options);
+      const auto refused = [](const MeshResult& r) {
+        return std::count_if(r.verdicts.begin(), r.verdicts.end(),
+                             [](const Verdict& v) { return v.state == Verdict::State::Refused; });
+      };
+      if (refused(other) < refused(result)) {
+        earlier += seconds(result);
+        result = std::move(other);
+      } else {
+        earlier += seconds(other);
+      }
+      retries = std::move(turned_retries);
     }
     if (earlier > 0) result.stages.insert(result.stages.begin(), {"failed attempts", earlier});
     report_finer_retries(retries, result);

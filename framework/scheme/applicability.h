@@ -3,7 +3,9 @@
 // the scheme computed to decide (docs/design.md, "Plans and settings").
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace cooperage::scheme {
@@ -20,6 +22,10 @@ namespace cooperage::scheme {
 class PlanData {
  public:
   virtual ~PlanData() = default;
+  /// The direction (x, y, z) of the straight sweep this plan makes, if it
+  /// is one: the pipeline tries a volume that failed sweeping one way the
+  /// other way (pipeline/finer_retry.h) without knowing the scheme.
+  virtual std::optional<std::array<double, 3>> straight_sweep() const { return std::nullopt; }
 };
 
 struct Applicability {

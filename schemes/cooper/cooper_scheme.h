@@ -42,6 +42,10 @@ struct CooperOptions {
 /// Cooper's plan of one volume for one job, as applicable() returns it.
 struct CooperPlan final : scheme::PlanData {
   VolumePlan plan;
+  std::optional<std::array<double, 3>> straight_sweep() const override {
+    if (!plan.ok || !plan.down) return std::nullopt;
+    return std::array<double, 3>{plan.down->x(), plan.down->y(), plan.down->z()};
+  }
 };
 
 /// The element kind a job asks of a volume (Settings::elements()).

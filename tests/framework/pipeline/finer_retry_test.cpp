@@ -40,10 +40,47 @@ class FailsWhenCoarse final : public testing::PlansLikeMap {
   std::size_t least_;
 };
 
+// Plans a straight sweep along the journal's direction hint, else along
+// +z, and meshes (as the volume map does) only along -z: a sweep that fails
+// one way at every size and meshes the other way.
+class MeshesOnlyDownwards final : public testing::PlansLikeMap {
+ public:
+  explicit MeshesOnlyDownwards(const scheme::VolumeScheme& map) : PlansLikeMap(map) {}
+  std::string_view name() const override { return "meshes_only_downwards"; }
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
+    scheme::Applicability a = map_.applicable(view);
+    if (!a.ok) return a;
+    auto plan = std::make_shared<Along>();
+    plan->d = {0.0, 0.0, downwards(view.settings(), view.volume_id) ? -1.0 : 1.0};
+    a.plan = plan;
+    return a;
+  }
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override {
+    if (!downwards(settings, view.volume_id))
+      throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(view.volume_id),
+                         "hex 3 of layer 0 is inverted");
+    return map_.mesh(view, settings);
+  }
+
+ private:
+  struct Along final : scheme::PlanData {
+    std::array<double, 3> d{};
+    std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
+  };
+  static bool downwards(const scheme::Settings& settings, int volume) {
+    const io::VolumeSetting* v = settings.volume(volume);
+    return v && v->direction && v->direction->z() < 0;
+  }
+};
+
 class FinerRetries : public testing::JournalFixture {
  protected:
   void use_scheme(std::size_t least) {
     registry_.add(std::make_unique<FailsWhenCoarse>(*registry_.volume_scheme("map"), least));
+  }
+  void use_downwards_scheme() {
+    registry_.add(std::make_unique<MeshesOnlyDownwards>(*registry_.volume_scheme("map")));
   }
   bool written(const char* file) const { return std::filesystem::exists(dir_ / file); }
   static double hex_volume(const mesh::MeshDB& db) {
@@ -134,6 +171,48 @@ TEST_F(FinerRetries, OnlyTheFailedVolumeIsRefined) {
   EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0 + 8.0, 1e-9);
 }
 
+// A straight sweep that fails at its size and at half and a quarter of it
+// is swept the other way at the size asked for, and says so.
+TEST_F(FinerRetries, AStraightSweepFailingAtEverySizeIsSweptTheOtherWay) {
+  use_downwards_scheme();
+  const RunResult r =
+      run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="meshes_only_downwards"/></mesh>
+  <export file="out.vtu"/>
+)"),
+              registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 64u);  // the size asked for
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0, 1e-9);
+  ASSERT_FALSE(r.mesh.warnings.empty());
+  EXPECT_EQ(r.mesh.warnings.front().text(),
+            "volume 1: meshed sweeping it the other way, along (0, 0, -1), at the size asked for "
+            "(1); along (0, 0, 1) it failed at that size and at smaller ones: hex 3 of layer 0 "
+            "is inverted");
+  EXPECT_TRUE(written("out.vtu"));
+  ASSERT_FALSE(r.mesh.stages.empty());
+  EXPECT_EQ(r.mesh.stages.front().stage, "failed attempts");
+}
+
+// A direction the journal gives is binding: no turning, and the error says
+// what was tried.
+TEST_F(FinerRetries, AHintedSweepIsNotTurned) {
+  use_downwards_scheme();
+  try {
+    run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="meshes_only_downwards" direction="0 0 1"/></mesh>
+  <export file="out.vtu"/>
+)"),
+            registry_, selector::mesh_options());
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.hint().rfind("meshing it again at a quarter the size (0.25) failed too; ", 0), 0u)
+        << e.hint();
+    EXPECT_EQ(e.hint().find("other way"), std::string::npos) << e.hint();
+  }
+  EXPECT_FALSE(written("out.vtu"));
+}
+
 TEST(FinerRetryAttribute, IsCheckedInTheJournal) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("cooperage-finer-" + std::to_string(::getpid()));
@@ -208,8 +287,8 @@ TEST(ReportFinerRetries, WarnsForWhatMeshedAndExtendsTheHintOfWhatDidNot) {
                 refused(2, true)};
   r.warnings = {{EntityRef::surface(5), "pave fell back"}};
   std::map<int, FinerRetry> retries;
-  retries[1] = {3.0, 0.75, "quad 3 is folded"};
-  retries[2] = {1.0, 0.5, "hex 9 is inverted"};
+  retries[1] = {3.0, 0.75, "quad 3 is folded", std::nullopt, false};
+  retries[2] = {1.0, 0.5, "hex 9 is inverted", std::nullopt, false};
   report_finer_retries(retries, r);
   ASSERT_EQ(r.warnings.size(), 2u);
   EXPECT_EQ(r.warnings[0].text(),
