@@ -248,8 +248,8 @@ int main(int argc, char** argv) {
   int mesh_finer_retries = io::MeshSettings{}.finer_retries;
   mesh->add_option("--finer-retries", mesh_finer_retries,
                    "A volume its scheme fails on after planning is meshed again at half its size, "
-                   "at most this many times, then (a straight sweep) swept the other way at its "
-                   "size (default 2; 0: never)")
+                   "at most this many times, then (a straight sweep) swept the other way, from its "
+                   "size down (default 2; 0: never)")
       ->check(CLI::Range(0, io::MeshSettings::kMaxFinerRetries));
 
   std::string plan_file;

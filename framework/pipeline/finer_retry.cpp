@@ -2,6 +2,7 @@
 
 #include "framework/core/text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -41,10 +42,12 @@ std::string vector_text(const geom::Vec3& v) {
 
 std::vector<int> halve_failed_volumes(const std::vector<Verdict>& verdicts,
                                       io::MeshSettings& settings,
-                                      std::map<int, FinerRetry>& retries) {
+                                      std::map<int, FinerRetry>& retries,
+                                      const std::vector<int>* only) {
   std::vector<int> halved;
   for (const Verdict& v : verdicts) {
     if (v.state != Verdict::State::Refused || !v.finer_may_help || v.entity.dim != 3) continue;
+    if (only && std::find(only->begin(), only->end(), v.entity.id) == only->end()) continue;
     const std::optional<double> size = size_of(settings, v.entity.id);
     if (!size) continue;  // sized by interval counts only: nothing to halve
     auto [it, first] = retries.try_emplace(v.entity.id);
@@ -105,11 +108,14 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
       continue;
     }
     if (r.turned) {
-      warnings.push_back(
-          {v.entity,
-           "meshed " + other_way + ", at the size asked for (" + number_text(r.asked) +
-               "); along " + vector_text(*r.planned_sweep) +
-               " it failed at that size and at smaller ones: " + clip(r.first_reason, 240)});
+      const std::string at =
+          r.size == r.asked ? "at the size asked for (" + number_text(r.asked) + ")"
+                            : "at size " + number_text(r.size) + ", " + fraction(r.asked, r.size) +
+                                  " the size asked for (" + number_text(r.asked) + ")";
+      warnings.push_back({v.entity, "meshed " + other_way + ", " + at + "; along " +
+                                        vector_text(*r.planned_sweep) +
+                                        " it failed at the size asked for and at smaller ones: " +
+                                        clip(r.first_reason, 240)});
       continue;
     }
     if (v.state == Verdict::State::Refused) {

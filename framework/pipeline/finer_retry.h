@@ -35,10 +35,12 @@ struct FinerRetry {
 /// Halves, in `settings`, the size of every volume of `verdicts` a smaller
 /// size may mesh (Verdict::finer_may_help) whose size the settings give
 /// (its own, else the global one), and records it in `retries` (volume id
-/// -> retry). Returns the volumes halved (none: nothing to retry).
+/// -> retry). Returns the volumes halved (none: nothing to retry). With
+/// `only`, just the volumes it holds.
 std::vector<int> halve_failed_volumes(const std::vector<Verdict>& verdicts,
                                       io::MeshSettings& settings,
-                                      std::map<int, FinerRetry>& retries);
+                                      std::map<int, FinerRetry>& retries,
+                                      const std::vector<int>* only = nullptr);
 
 /// Records, for the volumes of `retries`, the straight sweep `plan` (the
 /// first attempt's) made where the journal gave no sweep hint.
@@ -47,7 +49,8 @@ void note_planned_sweeps(const SchemePlan& plan, const io::MeshSettings& setting
 
 /// Sets, in `settings`, every volume of `verdicts` still refused after the
 /// finer retries and swept straight by its first plan back to the size
-/// asked for, with a direction hint the other way. Returns those volumes.
+/// asked for, with a direction hint the other way (then halved again as
+/// before, that way). Returns those volumes.
 std::vector<int> turn_failed_sweeps(const std::vector<Verdict>& verdicts,
                                     io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
 

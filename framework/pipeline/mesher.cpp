@@ -522,7 +522,8 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       result = mesh_attempt(model, finer, registry, options);
     }
     // Straight sweeps that failed at every size, the other way at the size
-    // asked for; kept when fewer volumes are refused than before.
+    // asked for and then finer again; kept when fewer volumes are refused
+    // than before.
     note_planned_sweeps(first_plan, settings, retries);
     std::map<int, FinerRetry> turned_retries = retries;
     const std::vector<int> turned = turn_failed_sweeps(result.verdicts, finer, turned_retries);
@@ -531,6 +532,11 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
         log::info("volume " + std::to_string(volume) + " failed at every size; sweeping it the " +
                   "other way at size " + number_text(turned_retries.at(volume).asked));
       MeshResult other = mesh_attempt(model, finer, registry, options);
+      for (int round = 0; round < settings.finer_retries; ++round) {
+        if (halve_failed_volumes(other.verdicts, finer, turned_retries, &turned).empty()) break;
+        earlier += seconds(other);
+        other = mesh_attempt(model, finer, registry, options);
+      }
       const auto refused = [](const MeshResult& r) {
         return std::count_if(r.verdicts.begin(), r.verdicts.end(),
                              [](const Verdict& v) { return v.state == Verdict::State::Refused; });

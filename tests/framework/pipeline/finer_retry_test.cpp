@@ -41,11 +41,13 @@ class FailsWhenCoarse final : public testing::PlansLikeMap {
 };
 
 // Plans a straight sweep along the journal's direction hint, else along
-// +z, and meshes (as the volume map does) only along -z: a sweep that fails
-// one way at every size and meshes the other way.
+// +z, and meshes (as the volume map does) only along -z and with at least
+// `least` hexes: a sweep that fails one way at every size and meshes the
+// other way.
 class MeshesOnlyDownwards final : public testing::PlansLikeMap {
  public:
-  explicit MeshesOnlyDownwards(const scheme::VolumeScheme& map) : PlansLikeMap(map) {}
+  MeshesOnlyDownwards(const scheme::VolumeScheme& map, std::size_t least)
+      : PlansLikeMap(map), least_(least) {}
   std::string_view name() const override { return "meshes_only_downwards"; }
   scheme::Applicability applicable(const scheme::VolumeView& view) const override {
     scheme::Applicability a = map_.applicable(view);
@@ -57,13 +59,15 @@ class MeshesOnlyDownwards final : public testing::PlansLikeMap {
   }
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& settings) const override {
-    if (!downwards(settings, view.volume_id))
+    scheme::EntityMesh m = map_.mesh(view, settings);
+    if (!downwards(settings, view.volume_id) || m.hexes.size() < least_)
       throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(view.volume_id),
                          "hex 3 of layer 0 is inverted");
-    return map_.mesh(view, settings);
+    return m;
   }
 
  private:
+  std::size_t least_;
   struct Along final : scheme::PlanData {
     std::array<double, 3> d{};
     std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
@@ -79,8 +83,8 @@ class FinerRetries : public testing::JournalFixture {
   void use_scheme(std::size_t least) {
     registry_.add(std::make_unique<FailsWhenCoarse>(*registry_.volume_scheme("map"), least));
   }
-  void use_downwards_scheme() {
-    registry_.add(std::make_unique<MeshesOnlyDownwards>(*registry_.volume_scheme("map")));
+  void use_downwards_scheme(std::size_t least = 0) {
+    registry_.add(std::make_unique<MeshesOnlyDownwards>(*registry_.volume_scheme("map"), least));
   }
   bool written(const char* file) const { return std::filesystem::exists(dir_ / file); }
   static double hex_volume(const mesh::MeshDB& db) {
@@ -187,11 +191,29 @@ TEST_F(FinerRetries, AStraightSweepFailingAtEverySizeIsSweptTheOtherWay) {
   ASSERT_FALSE(r.mesh.warnings.empty());
   EXPECT_EQ(r.mesh.warnings.front().text(),
             "volume 1: meshed sweeping it the other way, along (0, 0, -1), at the size asked for "
-            "(1); along (0, 0, 1) it failed at that size and at smaller ones: hex 3 of layer 0 "
-            "is inverted");
+            "(1); along (0, 0, 1) it failed at the size asked for and at smaller ones: hex 3 of "
+            "layer 0 is inverted");
   EXPECT_TRUE(written("out.vtu"));
   ASSERT_FALSE(r.mesh.stages.empty());
   EXPECT_EQ(r.mesh.stages.front().stage, "failed attempts");
+}
+
+// Swept the other way, it is halved again as before.
+TEST_F(FinerRetries, TheOtherWayIsTriedAtSmallerSizesToo) {
+  use_downwards_scheme(100);
+  const RunResult r =
+      run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="meshes_only_downwards"/></mesh>
+)"),
+              registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 512u);
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0, 1e-9);
+  ASSERT_FALSE(r.mesh.warnings.empty());
+  EXPECT_EQ(r.mesh.warnings.front().text(),
+            "volume 1: meshed sweeping it the other way, along (0, 0, -1), at size 0.5, half the "
+            "size asked for (1); along (0, 0, 1) it failed at the size asked for and at smaller "
+            "ones: hex 3 of layer 0 is inverted");
 }
 
 // A direction the journal gives is binding: no turning, and the error says

@@ -175,7 +175,7 @@ TEST(CooperMustMesh, ASweepFailingTheWayItWasPlannedIsSweptTheOtherWay) {
   ASSERT_FALSE(r.warnings.empty());
   EXPECT_EQ(r.warnings.front().message.rfind(
                 "meshed sweeping it the other way, along (0, 0, 1), at the size asked for "
-                "(0.2743); along (0, 0, -1) it failed at that size and at smaller ones: ",
+                "(0.2743); along (0, 0, -1) it failed at the size asked for and at smaller ones: ",
                 0),
             0u)
       << r.warnings.front().message;
