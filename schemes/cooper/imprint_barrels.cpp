@@ -196,7 +196,12 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
   if (ribs != st.rib_pairs) changed = true;
   st.rib_pairs = std::move(ribs);
   st.matches.clear();
-  for (const auto& [a, z] : r.matches) st.matches.push_back({new_piece.at(a), new_piece.at(z)});
+  for (const auto& [a, z] : r.matches) {
+    const auto u = new_piece.find(a), l = new_piece.find(z);
+    if (u == new_piece.end() || l == new_piece.end())
+      fail(s.vid, s.barrel_name(b) + ": subcap imprinting matched a subcap it did not keep");
+    st.matches.push_back({u->second, l->second});
+  }
   st.steps.insert(st.steps.end(), r.steps.begin(), r.steps.end());
   return changed;
 }
