@@ -295,6 +295,27 @@ std::optional<std::vector<int>> uniform_start(const std::vector<detail::Column>&
   return std::nullopt;
 }
 
+/// The caller's start (SolveOptions::start) as column values, if it names
+/// every curve of the component and satisfies its rows.
+std::optional<std::vector<int>> given_start(const Component& comp, const std::vector<int>& class_of,
+                                            const std::vector<detail::Column>& columns,
+                                            const std::vector<detail::Row>& rows,
+                                            const SolveOptions& options) {
+  if (!options.start) return std::nullopt;
+  std::vector<int> x(columns.size(), 0);
+  for (size_t j = 0; j < comp.curves.size(); ++j) {
+    const auto it = options.start->find(comp.curves[j]->id);
+    if (it == options.start->end()) return std::nullopt;
+    if (x[class_of[j]] != 0 && x[class_of[j]] != it->second) return std::nullopt;  // unequal pair
+    x[class_of[j]] = it->second;
+  }
+  for (size_t k = 0; k < columns.size(); ++k) {
+    if (x[k] < columns[k].lo || (columns[k].hi && x[k] > *columns[k].hi)) return std::nullopt;
+  }
+  if (!detail::satisfies(columns, rows, x)) return std::nullopt;
+  return x;
+}
+
 std::vector<int> solve_component(const Component& comp, const SolveOptions& options) {
   const std::vector<Item> items = items_of(comp);
   std::vector<int> class_of;
@@ -303,7 +324,8 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   if (!build_model(comp, items, std::vector<bool>(items.size(), true), true, options, class_of,
                    columns, rows))
     throw_infeasible(comp, options);
-  std::optional<std::vector<int>> start = uniform_start(columns, rows);
+  std::optional<std::vector<int>> start = given_start(comp, class_of, columns, rows, options);
+  if (!start) start = uniform_start(columns, rows);
   if (!start) {
     // No uniform start (minimum counts from curve_sizing.h, e.g. a circle's
     // 6 opposite a line's 1 on a mapped face): a feasibility solve (no
@@ -349,6 +371,23 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   std::vector<int> x(comp.curves.size());
   for (size_t j = 0; j < x.size(); ++j) x[j] = result.x[class_of[j]];
   return x;
+}
+
+/// Everything solve_component's answer depends on, as text (goals exact,
+/// in hexadecimal floating point).
+std::string memo_key(const Component& comp) {
+  std::ostringstream key;
+  key << std::hexfloat;
+  for (const Curve* c : comp.curves) {
+    key << 'c' << c->id << ' ' << c->goal << ' ' << static_cast<int>(c->firmness) << ' '
+        << (c->fixed ? *c->fixed : -1) << ' ' << c->min << ' ' << (c->max ? *c->max : -1) << ';';
+  }
+  for (const Canonical& k : comp.constraints) {
+    key << 'k' << static_cast<int>(k.kind) << ' ' << static_cast<int>(k.sense) << ' ' << k.rhs;
+    for (auto [id, coeff] : k.terms) key << ' ' << id << '*' << coeff;
+    key << ' ' << k.label << ';';
+  }
+  return key.str();
 }
 
 }  // namespace
@@ -400,7 +439,15 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     }
     std::sort(comp.constraints.begin(), comp.constraints.end(),
               [](const Canonical& a, const Canonical& b) { return a.key() < b.key(); });
-    const std::vector<int> x = solve_component(comp, options);
+    std::vector<int> x;
+    if (options.memo) {
+      const std::string key = memo_key(comp);
+      const auto known = options.memo->counts.find(key);
+      x = known != options.memo->counts.end() ? known->second : solve_component(comp, options);
+      options.memo->counts.emplace(key, x);
+    } else {
+      x = solve_component(comp, options);
+    }
     for (size_t j = 0; j < comp.curves.size(); ++j) solution.intervals[comp.curves[j]->id] = x[j];
   }
 

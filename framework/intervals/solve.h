@@ -62,6 +62,7 @@
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/intervals/interval_problem.h"
@@ -82,6 +83,16 @@ class IntervalConflict : public MeshingError {
   std::set<int> curves_;
 };
 
+/// Counts of components solved before, keyed by everything that defines a
+/// component (its curves' ids, goals, firmness and bounds, its canonical
+/// constraints with their labels). A caller that solves many problems
+/// differing in a few constraints (the selector's relaxations and trials)
+/// passes one memo and solves only the components that changed; an
+/// unchanged component gets the counts it got before. Not thread-safe.
+struct SolveMemo {
+  std::map<std::string, std::vector<int>> counts;
+};
+
 struct SolveOptions {
   double soft_weight = 10.0;     ///< objective weight of Soft curves (Default = 1)
   double objective_scale = 100;  ///< multiplies the costs for CBC's tolerances
@@ -90,6 +101,11 @@ struct SolveOptions {
   double iis_check_seconds =
       2;                    ///< CBC time limit per narrowing check [s]; unproven keeps the item
   int random_seed = 12345;  ///< CBC/CLP seed (fixed: deterministic)
+  SolveMemo* memo = nullptr;  ///< reuse components solved before (nullptr: none)
+  /// Counts per curve to give CBC as its first solution where they satisfy
+  /// a component (a caller re-solving after relaxing constraints: the old
+  /// answer still holds and spares the search for a feasible start).
+  const std::map<int, int>* start = nullptr;
 };
 
 struct IntervalSolution {
