@@ -4,6 +4,7 @@
 #include "framework/intervals/solve.h"
 #include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/interval_setup.h"
+#include "selector/starved_curves.h"
 
 #include <algorithm>
 #include <functional>
@@ -539,7 +540,10 @@ class Selector {
     for (int round = 0;; ++round) {
       try {
         selection_.intervals = intervals::solve(
-            pipeline::build_interval_problem(model_, registry_, selection_.plan(), settings_));
+            pipeline::build_interval_problem(model_, registry_, selection_.plan(), settings_),
+            memoised());
+        if (options_.pave_starved_curves)
+          pave_where_curves_starve(model_, registry_, settings_, selection_, memo_);
         return;
       } catch (const intervals::IntervalConflict& e) {
         Choice* c = round < options_.max_relaxations ? relaxable(e.curves()) : nullptr;
@@ -561,6 +565,14 @@ class Selector {
     }
   }
 
+  // Relaxations change a few surfaces' constraints: only the components
+  // they touch are solved again.
+  intervals::SolveOptions memoised() {
+    intervals::SolveOptions options;
+    options.memo = &memo_;
+    return options;
+  }
+
   const geom::Model& model_;
   const scheme::Registry& registry_;
   const io::MeshSettings& settings_;
@@ -580,6 +592,7 @@ class Selector {
   std::map<std::tuple<int, std::set<int>, std::set<int>, std::set<int>>, std::vector<Candidate>>
       evaluated_;
   Selection selection_;
+  intervals::SolveMemo memo_;
 };
 
 }  // namespace

@@ -20,6 +20,11 @@ struct SelectOptions {
   /// out of the plan) instead of failing the whole selection, so an
   /// assembly can report every volume (issue 16 item 5).
   bool refuse_per_volume = false;
+  /// After a feasible solve: a graded curve (a thin face's, a small
+  /// feature's) that map/submap constraints hold at half its goal or less
+  /// has the automatic map/submap choices on it paved, when that frees it
+  /// without starving another graded curve more (issue 16, item 1).
+  bool pave_starved_curves = true;
 };
 
 /// Volumes first, in id order: the applicable scheme with the best score
@@ -29,7 +34,10 @@ struct SelectOptions {
 /// scheme. Finally the interval problem is solved; when it is infeasible the
 /// automatic surface choice with the lowest score among the surfaces whose
 /// curves are in conflict moves to its next candidate, and the problem is
-/// solved again (bounded, deterministic).
+/// solved again (bounded, deterministic). Then a curve held far below the
+/// small intervals its sizing asks (SelectOptions::pave_starved_curves) has
+/// the map/submap surfaces that hold it paved; both kinds of change are
+/// listed in Selection::relaxations.
 /// Throws MeshingError: InvalidInput for a pin naming no registered scheme
 /// (pipeline::check_scheme_names); NotApplicable naming the entity and every scheme's
 /// reason; InvalidInput for contradictory pins (naming both); Infeasible
