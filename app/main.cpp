@@ -261,6 +261,10 @@ int main(int argc, char** argv) {
   plan->add_option("--size", plan_size, "Element size (overrides the journal's)")
       ->check(CLI::PositiveNumber);
   plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
+  int plan_dim = 3;
+  plan->add_option("--dim", plan_dim,
+                   "3: volumes and surfaces (default); 2: surfaces only, as `mesh --dim 2` plans")
+      ->check(CLI::IsMember({2, 3}));
 
   bool schemes_json = false;
   CLI::App* schemes =
@@ -306,7 +310,7 @@ int main(int argc, char** argv) {
     if (*plan) {
       return app::run_plan(plan_file,
                            plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
-                           plan_json, plugins, std::cout);
+                           plan_json, plugins, std::cout, plan_dim);
     }
     if (*mesh) {
       const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge

@@ -286,7 +286,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
 }  // namespace
 
 int run_plan(const std::string& file, std::optional<double> size, bool json,
-             const std::vector<std::string>& plugins, std::ostream& out) {
+             const std::vector<std::string>& plugins, std::ostream& out, int dim) {
   // The decomposition's registry: the command line's plug-ins take part in
   // it (a journal's are known only once it is read).
   scheme::Registry defaults;
@@ -296,7 +296,8 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   pipeline::PlanInput input;
   std::string decomposition_failed;
   try {
-    input = pipeline::plan_input(file, size, &defaults, selector::planner());
+    input = dim == 3 ? pipeline::plan_input(file, size, &defaults, selector::planner())
+                     : pipeline::plan_input(file, size, nullptr, {});
   } catch (const MeshingError& e) {
     if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
     decomposition_failed = "volume " + std::to_string(e.entity().id) + ": " + e.message();
@@ -308,6 +309,7 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   register_schemes(registry, run_plugins(plugins, input.plugins));
   const scheme::Settings job = scheme::Settings::of(settings);
   selector::SelectOptions options;
+  options.dim = dim;
   options.check_intervals = settings.size.has_value();
   // A volume no scheme fits is listed with every scheme's reason (what
   // `plan` is for); any other planning error stays an error.

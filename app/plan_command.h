@@ -15,9 +15,11 @@ namespace cooperage::app {
 /// Plans the model of FILE (a journal, or a CAD file with automatic schemes).
 /// `size` overrides the journal's global size; without any size the interval
 /// feasibility check is skipped (and said so). `plugins` (--plugin) are
-/// loaded before the journal's. Returns the exit code: 2 when a volume is
-/// refused (listed with every scheme's reason, and named on stderr), else 0.
+/// loaded before the journal's. `dim` 2 plans the surfaces alone, as a
+/// surface mesh (`mesh --dim 2`) does: no volume, no decomposition. Returns
+/// the exit code: 2 when a volume is refused (listed with every scheme's
+/// reason, and named on stderr), else 0.
 int run_plan(const std::string& file, std::optional<double> size, bool json,
-             const std::vector<std::string>& plugins, std::ostream& out);
+             const std::vector<std::string>& plugins, std::ostream& out, int dim = 3);
 
 }  // namespace cooperage::app

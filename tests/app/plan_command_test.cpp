@@ -53,5 +53,35 @@ TEST_F(PlanCommand, JsonCarriesTheBarrelTree) {
   EXPECT_EQ(check.out, "2 [0, 0, -1] match subtract ['pave', 1] ['cooper']\n") << j.out;
 }
 
+// `plan --dim 2` plans the surfaces alone, as `mesh --dim 2` does: no
+// volume section, and the selector's surface-only changes are listed (the
+// square boss 0.05 from the block's edge of
+// tests/selector/starved_curves_test.cpp: its mapped faces are paved to
+// free the thin strip's curves). In 3D the same faces are the sweep's.
+TEST_F(PlanCommand, DimTwoPlansTheSurfacesAlone) {
+  std::ofstream(path("thin.xml")) << R"(<?xml version="1.0"?>
+<cooperage version="1">
+  <geometry>
+    <brick name="block" origin="0 0 0" size="10 10 3"/>
+    <brick name="boss" origin="3 0.05 3" size="4 4 2"/>
+    <fuse name="part" inputs="block boss"/>
+  </geometry>
+  <mesh size="1"/>
+</cooperage>
+)";
+  const auto two = run_command(kCli + " plan --dim 2 " + path("thin.xml"));
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_EQ(two.out.find("volumes\n"), std::string::npos) << two.out;
+  EXPECT_EQ(two.out.find("cooper plan"), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find("relaxed surface "), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find(" -> pave (curve "), std::string::npos) << two.out;
+  const auto three = run_command(kCli + " plan " + path("thin.xml"));
+  ASSERT_EQ(three.exit_code, 0) << three.err;
+  EXPECT_NE(three.out.find("volume 1: cooper"), std::string::npos) << three.out;
+  EXPECT_EQ(three.out.find(" -> pave (curve "), std::string::npos) << three.out;
+  const auto bad = run_command(kCli + " plan --dim 1 " + path("thin.xml"));
+  EXPECT_NE(bad.exit_code, 0);
+}
+
 }  // namespace
 }  // namespace cooperage
