@@ -128,8 +128,10 @@ checks, exports and reports. Returns a Mesh whose `written` lists the files
 written (none when a quality check with action="fail" failed: see `checks`
 and `exports_skipped`). Raises InputError or MeshingError.)doc");
   m.def("plan", &plan_file, py::arg("model_or_journal"), py::arg("size") = py::none(),
+        py::arg("dim") = 3,
         R"doc(The scheme the selector picks for every volume and surface, and why, without
 meshing (as `cooperage plan --json`). size overrides the journal's; without
-any size the interval feasibility check is skipped. Returns a list of dicts:
-entity, dim, id, scheme, score, reason, pinned, candidates.)doc");
+any size the interval feasibility check is skipped. dim=2 plans the surfaces
+alone, as mesh(..., dim=2) does. Returns a list of dicts: entity, dim, id,
+scheme, score, reason, pinned, candidates.)doc");
 }

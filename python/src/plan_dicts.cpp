@@ -43,11 +43,15 @@ py::dict choice_dict(const selector::Choice& c) {
 
 }  // namespace
 
-py::list plan_file(const std::filesystem::path& file, std::optional<double> size) {
+py::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim) {
   if (size && !(*size > 0)) {
     throw MeshingError(
         ErrorCode::InvalidInput,
         "cooperage.plan(): the element size must be positive, got " + std::to_string(*size));
+  }
+  if (dim != 2 && dim != 3) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "cooperage.plan(): dim must be 2 or 3, got " + std::to_string(dim));
   }
   selector::Selection selection;
   {
@@ -59,7 +63,8 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
     register_schemes(defaults, {});
     pipeline::PlanInput input;
     try {
-      input = pipeline::plan_input(file.string(), size, &defaults, selector::planner());
+      input = dim == 3 ? pipeline::plan_input(file.string(), size, &defaults, selector::planner())
+                       : pipeline::plan_input(file.string(), size);
     } catch (const MeshingError& e) {
       if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
       input = pipeline::plan_input(file.string(), size);
@@ -67,6 +72,7 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
     scheme::Registry registry;
     register_schemes(registry, input.plugins);
     selector::SelectOptions options;
+    options.dim = dim;
     options.check_intervals = input.settings.size.has_value();
     selection = selector::select_schemes(input.model, registry, input.settings, options);
   }

@@ -16,7 +16,7 @@ namespace cooperage::python {
 /// then per surface: entity, dim, id, scheme, score (the chosen scheme's,
 /// None when a volume meshes the surface), reason, pinned, candidates (dicts:
 /// scheme, ok, score, why).
-pybind11::list plan_file(const std::filesystem::path& file, std::optional<double> size);
+pybind11::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim);
 
 /// Mesh.plan: dicts (entity, dim, id, scheme, reason, details).
 pybind11::list plan_entries(const pipeline::SchemePlan& plan);

@@ -160,6 +160,18 @@ def test_run_result_plan_stages_and_written_files(journal, tmp_path):
     assert "48 hexahedra" in repr(mesh)
 
 
+def test_plan_dim_two_plans_the_surfaces_as_plan_dim_two(cli, source_dir):
+    part = os.path.join(source_dir, "examples", "part.step")
+    plan = cooperage.plan(part, size=2, dim=2)
+    ours = json.loads(cli("plan", part, "--json", "--size", 2, "--dim", 2).stdout)
+    assert [r["dim"] for r in plan] == [2] * len(ours["surfaces"]) and ours["volumes"] == []
+    assert [(r["id"], r["scheme"], r["reason"]) for r in plan] == \
+        [(c["id"], c["scheme"], c["reason"]) for c in ours["surfaces"]]
+    assert all(r["scheme"] != "(volume)" for r in plan), "no volume meshes a surface in 2D"
+    with pytest.raises(cooperage.InputError):
+        cooperage.plan(part, size=2, dim=1)
+
+
 def test_plan_matches_plan_json(journal, cli, source_dir):
     part = os.path.join(source_dir, "examples", "part.step")
     # fig3a_auto needs a cut: plan() decomposes as `cooperage plan` does.
