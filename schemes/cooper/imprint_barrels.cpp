@@ -5,6 +5,7 @@
 // (the pieces are shared), so the barrels are imprinted again until no
 // subcap changes. New nodes get positions on their end (projected onto a
 // real cap); a cap meshed beforehand must never be cut.
+#include "schemes/cooper/chart_warp.h"
 #include "schemes/cooper/imprint_polygons.h"
 #include "schemes/cooper/sweep_state.h"
 
@@ -16,8 +17,17 @@
 namespace cooperage::cooper::detail {
 namespace {
 
+// The lower end of barrel b onto its upper end's chart, exactly at the ribs.
+ChartWarp warp_of(const SweepState& s, size_t b) {
+  const BarrelState& st = s.barrels[b];
+  std::vector<std::pair<Vec2, Vec2>> ribs;
+  for (const auto& [up, low] : st.rib_pairs)
+    ribs.push_back({s.plane(b, st.to_upper.apply(s.pos(low))), s.plane(b, s.pos(up))});
+  return ChartWarp(ribs);
+}
+
 // One barrel's ends as value types, in its chart.
-BarrelEnds ends_of(const SweepState& s, size_t b) {
+BarrelEnds ends_of(const SweepState& s, size_t b, const ChartWarp& warp) {
   BarrelEnds ends;
   const BarrelState& st = s.barrels[b];
   for (const Piece& p : s.pieces) {
@@ -29,7 +39,7 @@ BarrelEnds ends_of(const SweepState& s, size_t b) {
     for (const auto& l : p.loops) {
       for (int n : l) {
         const Vec3& x = s.pos(n);
-        ends.xy[n] = s.plane(b, end == 0 ? x : st.to_upper.apply(x));
+        ends.xy[n] = end == 0 ? s.plane(b, x) : warp.forward(s.plane(b, st.to_upper.apply(x)));
         if (s.out.global[static_cast<size_t>(n)] >= 0) ends.fixed.insert(n);
       }
     }
@@ -78,7 +88,8 @@ Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower, cons
 }
 
 // Applies one barrel's imprint result; true when a subcap or rib changed.
-bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r) {
+bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r,
+           const ChartWarp& warp) {
   BarrelState& st = s.barrels[b];
   std::set<int> upper_nodes, lower_nodes;
   for (const Subcap& c : r.ends.upper) {
@@ -112,8 +123,9 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
       fail(s.vid, s.barrel_name(b) + ": subcap imprinting left a rib ending on no subcap");
     }
     const Vec2& p2 = at->second;
-    Vec3 x = st.u * p2.x() + st.v * p2.y() + st.level * st.d;
     const bool lower = lower_nodes.count(id) > 0;
+    const Vec2 q = lower ? warp.inverse(p2) : p2;
+    Vec3 x = st.u * q.x() + st.v * q.y() + st.level * st.d;
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(on->second)];
     if (!p.cap) x += ring_offset(s, b, p2, lower, x);
@@ -246,13 +258,33 @@ void imprint_barrels(SweepState& s) {
   for (size_t pass = 0; pass < passes; ++pass) {
     bool changed = false;
     for (size_t b = 0; b < s.barrels.size(); ++b) {
-      const BarrelEnds ends = ends_of(s, b);
-      const ImprintResult r = imprint_subcaps(ends, options);
+      // The affine chart first; where imprinting fails in it, the chart
+      // warped along the ribs (chart_warp.h), kept for the barrel's later
+      // passes once it succeeds. Warping every barrel moved the minima of
+      // a quarter of the campaign's parts, as many down as up, so it is
+      // not the default.
+      BarrelState& st = s.barrels[b];
+      ChartWarp warp = st.warped_chart ? warp_of(s, b) : ChartWarp();
+      BarrelEnds ends = ends_of(s, b, warp);
+      ImprintResult r = imprint_subcaps(ends, options);
+      if (!r.ok && !st.warped_chart) {
+        ChartWarp warped = warp_of(s, b);
+        if (warped.active()) {
+          BarrelEnds warped_ends = ends_of(s, b, warped);
+          ImprintResult warped_r = imprint_subcaps(warped_ends, options);
+          if (warped_r.ok) {
+            st.warped_chart = true;
+            warp = std::move(warped);
+            ends = std::move(warped_ends);
+            r = std::move(warped_r);
+          }
+        }
+      }
       if (!r.ok) {
         fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed" + unmatched_surfaces(s, r) +
                         " (" + r.why + ")");
       }
-      changed = apply(s, b, ends, r) || changed;
+      changed = apply(s, b, ends, r, warp) || changed;
     }
     if (!changed) return;
   }

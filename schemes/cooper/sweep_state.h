@@ -70,6 +70,9 @@ struct BarrelState {
   /// once the stacks are projected).
   std::map<int, int> below;
   std::vector<ImprintStep> steps;
+  /// Imprinted in the chart warped along the ribs (chart_warp.h): the
+  /// affine chart's imprinting failed.
+  bool warped_chart = false;
 };
 
 struct SweepState {
