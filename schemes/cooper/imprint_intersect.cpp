@@ -214,7 +214,19 @@ bool Imprinter::split_hole(int e, size_t bi, int x, const Loop& path, int y) {
     if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
     if (signed_area(hole, xy()) > 0) std::reverse(hole.begin(), hole.end());
     t.loops[h] = hole;
-    new_cap(e, {piece}, t.id);
+    // Other holes of t inside the piece go with it (a foot inside a boss
+    // whose image splits t from the hole of a blind hole's floor).
+    std::vector<Loop> piece_loops{piece}, kept;
+    for (size_t k = 0; k < t.loops.size(); ++k) {
+      const Loop& other = t.loops[k];
+      const auto free_node =
+          std::find_if(other.begin(), other.end(), [&](int v) { return index_in(piece, v) < 0; });
+      const bool inside = k != 0 && k != h && free_node != other.end() &&
+                          point_in_loop(xy().at(*free_node), piece, xy());
+      (inside ? piece_loops : kept).push_back(other);
+    }
+    t.loops = std::move(kept);
+    new_cap(e, std::move(piece_loops), t.id);
     r_.steps.push_back(ImprintStep::Subtract);
     return true;
   }

@@ -154,7 +154,7 @@ bool Imprinter::try_matches() {
 
 // Projects node v of end e onto end 1 - e (seaming onto an opposing node
 // without a rib when close, sec. 5.4); returns the opposing node.
-int Imprinter::project(int e, int v, const Loop& around) {
+int Imprinter::project(int e, int v, const Loop& around, bool seam) {
   if (const auto p = partner(e, v)) return *p;
   const Vec2 x = xy().at(v);
   double h = std::numeric_limits<double>::infinity();
@@ -164,7 +164,7 @@ int Imprinter::project(int e, int v, const Loop& around) {
     h = std::min((xy().at(around[(static_cast<size_t>(i) + 1) % n]) - x).norm(),
                  (xy().at(around[(static_cast<size_t>(i) + n - 1) % n]) - x).norm());
   }
-  const double tol = std::isfinite(h) ? options_.seam_fraction * h : 0.0;
+  const double tol = seam && std::isfinite(h) ? options_.seam_fraction * h : 0.0;
   int best = -1;
   double best_d = tol;
   for (const Subcap& s : caps(1 - e)) {
@@ -452,12 +452,16 @@ bool Imprinter::free_loop(int e, const Subcap& a) {
   if (crosses_opposing(e, a.loops.front())) return false;
   for (size_t bi = 0; bi < opp.size(); ++bi) {
     if (matched(opp[bi].id) || !point_in_subcap(p, opp[bi], xy())) continue;
+    const Undo undo = undo_point();
     std::vector<Loop> images;
     for (const Loop& l : a.loops) {
       Loop img;
       for (int v : l) img.push_back(project(e, v, l));
       images.push_back(img);
     }
+    // An image a sliver from b's loops (chords of a foot's rim across a
+    // boss's): its new nodes move off them, or meshing b's piece fails.
+    keep_clear(images.front(), true, opp[bi].loops, undo.next_node);
     const int hat = subtract_inside(1 - e, bi, images.front());
     // a's holes without ribs: imprinted inside the hat as well (the subcaps
     // filling them are matched to their images later).
@@ -575,6 +579,13 @@ void Imprinter::roll_back(int e, const Loop& fresh, const Undo& undo) {
   next_node_ = undo.next_node;
 }
 
+// Nodes of `path` on a hole loop of b.
+static long seams_onto_holes(const Loop& path, const Subcap& b) {
+  std::set<int> on_holes;
+  for (size_t h = 1; h < b.loops.size(); ++h) on_holes.insert(b.loops[h].begin(), b.loops[h].end());
+  return std::count_if(path.begin(), path.end(), [&](int w) { return on_holes.count(w) > 0; });
+}
+
 bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1) {
   const int x = *partner(e, r0);
   const int y = *partner(e, r1);
@@ -604,6 +615,21 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
   Loop path;
   for (int v : gap) path.push_back(project(e, v, a.loops.front()));
   const Loop outer = caps(1 - e)[bi].loops.front();
+  // Seams that put the path onto a hole of b at two nodes or more (a
+  // boss's rim 0.07 of an element outside a foot's) would cut through
+  // the hole: projected without seams, the path passes beside it.
+  if (seams_onto_holes(path, caps(1 - e)[bi]) >= 2) {
+    roll_back(e, fresh, undo);
+    path.clear();
+    for (int v : gap) path.push_back(project(e, v, a.loops.front(), false));
+  }
+  {
+    Loop chain{x};
+    chain.insert(chain.end(), path.begin(), path.end());
+    chain.push_back(y);
+    const Subcap& b = caps(1 - e)[bi];
+    keep_clear(chain, false, std::vector<Loop>(b.loops.begin() + 1, b.loops.end()), undo.next_node);
+  }
   // Seamed onto b's boundary throughout: no split, the ribs are the progress.
   bool on_loop = true;
   for (int v : path) on_loop = on_loop && index_in(outer, v) >= 0;

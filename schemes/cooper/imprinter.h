@@ -39,8 +39,16 @@ class Imprinter {
   bool try_matches();
 
   // Projects node v of end e onto end 1 - e (seaming onto an opposing node
-  // without a rib when close, sec. 5.4); returns the opposing node.
-  int project(int e, int v, const Loop& around);
+  // without a rib when close, sec. 5.4, unless `seam` is false); returns
+  // the opposing node.
+  int project(int e, int v, const Loop& around, bool seam = true);
+  // An edge of `chain` (a closed loop or an open path) crosses one of `loops`.
+  bool crosses_any(const Loop& chain, bool closed, const std::vector<Loop>& loops) const;
+  // Moves the chain's new nodes (ids from first_new) off the `obstacles`
+  // they cross or nearly touch (imprint_clear_holes.cpp); false, nothing
+  // moved, when it still crosses one.
+  bool keep_clear(const Loop& chain, bool closed, const std::vector<Loop>& obstacles,
+                  int first_new);
   int new_cap(int e, std::vector<Loop> loops, int parent);
   // sec. 5.2: a closed loop strictly inside subcap bi of end o cuts it; the
   // inside (with bi's holes in it) becomes a new subcap, whose id is returned.

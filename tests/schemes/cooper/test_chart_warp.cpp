@@ -4,19 +4,9 @@
 // chart back to where it lies on the lower end.
 #include "schemes/cooper/chart_warp.h"
 
-#include "support/hex_mesh_check.h"
-#include "support/rigid_motion.h"
-
-#include "framework/geometry/occ/workbench.h"
-#include "framework/pipeline/mesher.h"
-#include "plan_helpers.h"
-#include "schemes/builtin_schemes.h"
-#include "selector/select_schemes.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -72,62 +62,6 @@ TEST(ChartWarp, RibbedNodesLandOnTheirPartnersAndTheRestFollow) {
   // The inverse takes forward's images back.
   for (const Vec2& q : {near_hole, near_square, Vec2(3.5, -1.0), Vec2(-2.6, 2.4)})
     EXPECT_LT((warp.inverse(warp.forward(q)) - q).norm(), 1e-6) << q.transpose();
-}
-
-// A block with a through hole that a boss above and a foot below both
-// cross (plan => mesh campaign seed 3 case 8, scaled by 0.1). The hole's
-// circle is split by the boss's vertices at the top and the foot's at the
-// bottom, so its ribs run half an interval round: in the affine chart the
-// foot's rim started at a node a whole interval from its partner and
-// crossed the boss's loop, and imprinting found no step at sizes 0.82,
-// 0.6 and 0.41 (it meshed at 0.3).
-void hole_through_boss_and_foot(occ::Workbench& wb) {
-  wb.brick("block", {0, 0, 0}, {2.435, 5.467, 3.73});
-  wb.cylinder("hole", {0.775, 3.086, -3.73}, {0, 0, 1}, 0.485, 11.19);
-  wb.cylinder("foot", {0.911, 2.658, -1.786}, {0, 0, 1}, 0.299, 1.786);
-  wb.cylinder("boss", {0.655, 2.279, 3.73}, {0, 0, 1}, 0.557, 2.244);
-  wb.fuse("body", {"block", "foot", "boss"});
-  wb.cut("part", {"body", "hole"});
-}
-
-pipeline::MeshResult mesh_at(const geom::Model& model, double size) {
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
-  io::MeshSettings settings;
-  settings.size = size;
-  settings.finer_retries = 0;  // this size, not a retry at a finer one
-  return pipeline::mesh_model(model, settings, registry, selector::mesh_options());
-}
-
-TEST(CooperChartWarp, AHoleWhoseRibsTwistBetweenABossAndAFootIsImprinted) {
-  occ::Workbench wb;
-  hole_through_boss_and_foot(wb);
-  const geom::Model model = wb.build_model();
-  const double solid = model.volume(1).volume;
-  for (const double size : {0.8194, 0.41}) {
-    const pipeline::MeshResult r = mesh_at(model, size);
-    EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front().message;
-    // Conformal, nothing inverted (check_hex_mesh), no wedge; the hole's
-    // and the round faces' chords keep the volume within 1 %.
-    const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
-    EXPECT_EQ(r.mesh.wedge_count(), 0u);
-    EXPECT_NEAR(s.volume, solid, 0.01 * solid) << size;
-    std::printf("[chart warp] size %.4g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n",
-                size, s.hexes, s.min_sj, 100 * (s.volume - solid) / solid);
-  }
-}
-
-TEST(CooperChartWarp, TheWarpedImprintIsRotationInvariant) {
-  const auto motion = testing::RigidMotion::random(118);
-  occ::Workbench still, moved;
-  hole_through_boss_and_foot(still);
-  hole_through_boss_and_foot(moved);
-  motion.apply(moved, "part");
-  const pipeline::MeshResult r0 = mesh_at(still.build_model(), 0.8194);
-  const pipeline::MeshResult r1 = mesh_at(moved.build_model(), 0.8194);
-  ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
-  EXPECT_LT(testing::moved_node_distance(r0.mesh, r1.mesh, motion), 1e-7);
 }
 
 }  // namespace
