@@ -15,13 +15,6 @@
 namespace cooperage::cooper::detail {
 namespace {
 
-Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return a + t * ab;
-}
-
 // Nodes nearer an edge than this fraction of it, or across it, are moved
 // to a tenth of it. A loop 3.5 % of an edge from another is left alone:
 // moved, it leaned a rib into an inverted hex (campaign seed 5 case 33).

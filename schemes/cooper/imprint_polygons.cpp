@@ -77,6 +77,13 @@ namespace detail {
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Intersection parameter t on segment p0-p1 with q0-q1 (touching included).
+Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return a + t * d;
+}
+
 std::optional<double> segment_hit(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
   const Vec2 r = p1 - p0, s = q1 - q0;
   const double d = cross(r, s);

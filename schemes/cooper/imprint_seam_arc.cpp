@@ -17,10 +17,7 @@ namespace cooperage::cooper::detail {
 namespace {
 
 double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
+  return (p - closest_on_segment(p, a, b)).norm();
 }
 
 double distance_to_loop(const Vec2& p, const Loop& l, const std::map<int, Vec2>& xy) {
