@@ -2,10 +2,10 @@
 // into by less than a chord's sagitta (a boss's rim 0.07 of an element
 // outside a foot's, whose chords cut each other; sec. 5.2). The subcap's
 // nodes are nodes of its cap and stay; the new nodes, placed by this
-// projection only, move off by a tenth of their edges, so that the other
-// loop lies wholly on one side and the pieces do not cross. Seaming onto
-// the loop instead (sec. 5.4) put a path through a foot at two nodes and
-// cut the piece there.
+// projection only, move off to a tenth of their edges (when nearer than
+// 2 % of one, or across), so that the other loop lies wholly on one side
+// and the pieces do not cross. Seaming onto the loop instead (sec. 5.4)
+// put a path through a foot at two nodes and cut the piece there.
 #include "schemes/cooper/imprinter.h"
 
 #include <algorithm>
@@ -49,8 +49,9 @@ bool Imprinter::keep_clear(const Loop& chain, bool closed, const std::vector<Loo
   const size_t edges = closed ? n : n - 1;
   for (int round = 0; round < 4; ++round) {
     bool moved = false;
-    // An obstacle node within a tenth of an edge of a chain edge, or
-    // across it, pushes the edge's movable ends away along its normal.
+    // An obstacle node nearer a chain edge than kTouching of it, or across
+    // it, pushes the edge's movable ends away along its normal, to a tenth
+    // of the edge.
     for (size_t i = 0; i < edges; ++i) {
       const int p0 = chain[i], p1 = chain[(i + 1) % n];
       if (!movable(p0) && !movable(p1)) continue;
