@@ -113,7 +113,7 @@ int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
     return result.failed() ? kExitQualityFailed : 0;
   } catch (const pipeline::IncompleteMesh& e) {
     progress.finish();
-    app::write_verdicts(e.verdicts(), std::cout);
+    app::write_verdicts(e.verdicts(), std::cout, e.origin());
     throw;
   }
 }

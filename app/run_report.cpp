@@ -18,10 +18,16 @@ std::string fmt(const char* format, double v) {
 
 }  // namespace
 
-void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out) {
+void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out,
+                    const std::vector<int>& origin) {
   using State = pipeline::Verdict::State;
   for (const auto& v : verdicts) {
-    out << v.entity.name() << ": ";
+    out << v.entity.name();
+    const int id = v.entity.id;
+    if (v.entity.dim == 3 && id >= 1 && static_cast<std::size_t>(id) <= origin.size() &&
+        origin[static_cast<std::size_t>(id - 1)] != id)
+      out << " (input volume " << origin[static_cast<std::size_t>(id - 1)] << ")";
+    out << ": ";
     switch (v.state) {
       case State::Meshed: out << "meshed"; break;
       case State::Refused: out << "refused: " << clip(v.reason, 200); break;
@@ -88,7 +94,7 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out) {
     out << " total " << fmt("%.3f", total) << "\n";
   }
   if (result.mesh.verdicts.size() > 1 || result.mesh.incomplete())
-    write_verdicts(result.mesh.verdicts, out);
+    write_verdicts(result.mesh.verdicts, out, result.decomposition.origin);
   for (const auto& w : result.mesh.warnings) out << "warning: " << clip(w.text(), 300) << "\n";
   for (const auto& f : result.written) out << "wrote " << f << "\n";
   if (result.exports_skipped)

@@ -14,7 +14,11 @@ namespace cooperage::app {
 void write_run_report(const pipeline::RunResult& result, std::ostream& out);
 
 /// One line per volume (surface, for surface meshes): "volume 2: meshed",
-/// "volume 3: refused: <reason>", "volume 4: deviates: <reason>".
-void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out);
+/// "volume 3: refused: <reason>", "volume 4: deviates: <reason>". After
+/// the automatic decomposition (`origin` not empty: entry k - 1 the input
+/// volume of volume k), a volume whose id differs from its input volume's
+/// says which it was: "volume 12 (input volume 11): refused: ...".
+void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out,
+                    const std::vector<int>& origin = {});
 
 }  // namespace cooperage::app

@@ -651,7 +651,13 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   // The mesher's quality report evaluates the journal's checks too, taking
   // the scaled Jacobians the schemes computed (one evaluation per metric).
   opts.quality_checks = job.quality;
-  result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
+  try {
+    result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
+  } catch (IncompleteMesh& e) {
+    // The verdicts name volumes after the cuts: say which input volume each was.
+    if (!result.decomposition.volumes.empty()) e.set_origin(result.decomposition.origin);
+    throw;
+  }
   result.stages.insert(result.stages.end(), result.mesh.stages.begin(), result.mesh.stages.end());
   result.quality = result.mesh.quality;
   const bool deviates =

@@ -121,9 +121,15 @@ class IncompleteMesh : public MeshingError {
  public:
   IncompleteMesh(const Verdict& first, std::vector<Verdict> verdicts, const std::string& hint);
   const std::vector<Verdict>& verdicts() const { return verdicts_; }
+  /// Volume ids of the model before the automatic decomposition: entry
+  /// k - 1 is the input volume that volume k is (part of); empty when
+  /// nothing was cut (run_job fills it).
+  const std::vector<int>& origin() const { return origin_; }
+  void set_origin(std::vector<int> origin) { origin_ = std::move(origin); }
 
  private:
   std::vector<Verdict> verdicts_;
+  std::vector<int> origin_;
 };
 
 /// The worker threads a run uses for MeshOptions::threads: the request, at

@@ -54,6 +54,28 @@ TEST_F(DecomposeOption, AutoIsTheDefaultAndSearchesCuts) {
   EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
+// After the cuts the volumes are numbered afresh: a volume whose id moved
+// says which input volume it is, in the per-volume lines of a run.
+TEST_F(DecomposeOption, VolumesRenumberedByTheCutsNameTheirInputVolume) {
+  occ::Workbench bench;
+  bench.brick("block", {0, 0, 0}, {4, 4, 2});
+  bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
+  bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
+  bench.fuse("part", {"block", "up", "out"});
+  bench.brick("plain", {10, 0, 0}, {2, 2, 2});
+  const std::string step = path("two.step");
+  bench.write(step, {"part", "plain"});
+  const auto r = run_command(kCli + " mesh " + step + " --size 0.25 -o " + path("out.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  // The Fig. 3a part (input volume 1) is cut; the plain block, input
+  // volume 2, follows its pieces.
+  EXPECT_NE(r.out.find("volume 1: meshed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("volume 2 (input volume 1): meshed"), std::string::npos) << r.out;
+  const auto last = r.out.find(" (input volume 2): meshed");
+  ASSERT_NE(last, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("input volume 3"), std::string::npos) << r.out;
+}
+
 TEST_F(DecomposeOption, AnUnknownValueIsABadArgument) {
   const auto r = run_command(kCli + " mesh x.step --size 1 --decompose yes -o " + path("o.vtu"));
   EXPECT_EQ(r.exit_code, 2);
