@@ -4,6 +4,8 @@
 #include "run_command.h"
 #include "temp_dir.h"
 
+#include "support/real_cad.h"
+
 #include "framework/geometry/occ/workbench.h"
 
 #include <gtest/gtest.h>
@@ -74,6 +76,23 @@ TEST_F(DecomposeOption, VolumesRenumberedByTheCutsNameTheirInputVolume) {
   const auto last = r.out.find(" (input volume 2): meshed");
   ASSERT_NE(last, std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("input volume 3"), std::string::npos) << r.out;
+}
+
+// gmsh_as1-tu-203: volume 10 of the file is cut in two, and the housing
+// (the file's volume 11) is refused as volume 12. Every line naming it
+// says which volume of the file it is.
+TEST_F(DecomposeOption, ARefusedVolumeRenumberedByTheCutsNamesItsInputVolume) {
+  const std::string step = testing::real_cad("gmsh_as1-tu-203.stp");
+  if (!fs::exists(step))
+    GTEST_SKIP() << step << " is absent (the shared real-CAD folder is not here)";
+  const auto r = run_command(kCli + " mesh -q " + step + " --size 6.6 -o " + path("out.vtu"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.out.find("volume 11 (input volume 10): meshed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("volume 12 (input volume 11): refused: "), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("cooperage: error: volume 12 (input volume 11): no applicable scheme"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
 TEST_F(DecomposeOption, AnUnknownValueIsABadArgument) {
