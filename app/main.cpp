@@ -115,16 +115,9 @@ int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
     progress.finish();
     app::write_verdicts(e.verdicts(), std::cout, e.origin());
     // The error line names the volume as the lines above do.
-    const EntityRef v = e.entity();
-    const std::vector<int>& origin = e.origin();
-    if (v.dim == 3 && v.id >= 1 && static_cast<std::size_t>(v.id) <= origin.size() &&
-        origin[static_cast<std::size_t>(v.id - 1)] != v.id) {
-      throw MeshingError(e.code(), EntityRef::none(),
-                         v.name() + " (input volume " +
-                             std::to_string(origin[static_cast<std::size_t>(v.id - 1)]) +
-                             "): " + e.message(),
-                         e.hint());
-    }
+    const std::string name = app::entity_name(e.entity(), e.origin());
+    if (name != e.entity().name())
+      throw MeshingError(e.code(), EntityRef::none(), name + ": " + e.message(), e.hint());
     throw;
   }
 }

@@ -18,16 +18,20 @@ std::string fmt(const char* format, double v) {
 
 }  // namespace
 
+std::string entity_name(const EntityRef& entity, const std::vector<int>& origin) {
+  const int id = entity.id;
+  if (entity.dim != 3 || id < 1 || static_cast<std::size_t>(id) > origin.size() ||
+      origin[static_cast<std::size_t>(id - 1)] == id)
+    return entity.name();
+  return entity.name() + " (input volume " +
+         std::to_string(origin[static_cast<std::size_t>(id - 1)]) + ")";
+}
+
 void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out,
                     const std::vector<int>& origin) {
   using State = pipeline::Verdict::State;
   for (const auto& v : verdicts) {
-    out << v.entity.name();
-    const int id = v.entity.id;
-    if (v.entity.dim == 3 && id >= 1 && static_cast<std::size_t>(id) <= origin.size() &&
-        origin[static_cast<std::size_t>(id - 1)] != id)
-      out << " (input volume " << origin[static_cast<std::size_t>(id - 1)] << ")";
-    out << ": ";
+    out << entity_name(v.entity, origin) << ": ";
     switch (v.state) {
       case State::Meshed: out << "meshed"; break;
       case State::Refused: out << "refused: " << clip(v.reason, 200); break;

@@ -4,6 +4,7 @@
 #include "framework/pipeline/mesher.h"
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace cooperage::app {
@@ -20,5 +21,9 @@ void write_run_report(const pipeline::RunResult& result, std::ostream& out);
 /// says which it was: "volume 12 (input volume 11): refused: ...".
 void write_verdicts(const std::vector<pipeline::Verdict>& verdicts, std::ostream& out,
                     const std::vector<int>& origin = {});
+
+/// "volume 12", or "volume 12 (input volume 11)" when `origin` (entry
+/// k - 1 the input volume of volume k) says the decomposition renumbered it.
+std::string entity_name(const EntityRef& entity, const std::vector<int>& origin);
 
 }  // namespace cooperage::app

@@ -23,13 +23,17 @@ const std::string kCli = COOPERAGE_CLI;
 
 class DecomposeOption : public testing::TempDirTest {
  protected:
-  // Blacker 1996, Fig. 3a, as a STEP file.
-  std::string fig3a_step() const {
-    occ::Workbench bench;
+  // Blacker 1996, Fig. 3a, as shape "part".
+  static void fig3a(occ::Workbench& bench) {
     bench.brick("block", {0, 0, 0}, {4, 4, 2});
     bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
     bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
     bench.fuse("part", {"block", "up", "out"});
+  }
+  // The same as a STEP file.
+  std::string fig3a_step() const {
+    occ::Workbench bench;
+    fig3a(bench);
     const std::string file = path("fig3a.step");
     bench.write(file);
     return file;
@@ -60,10 +64,7 @@ TEST_F(DecomposeOption, AutoIsTheDefaultAndSearchesCuts) {
 // says which input volume it is, in the per-volume lines of a run.
 TEST_F(DecomposeOption, VolumesRenumberedByTheCutsNameTheirInputVolume) {
   occ::Workbench bench;
-  bench.brick("block", {0, 0, 0}, {4, 4, 2});
-  bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
-  bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
-  bench.fuse("part", {"block", "up", "out"});
+  fig3a(bench);
   bench.brick("plain", {10, 0, 0}, {2, 2, 2});
   const std::string step = path("two.step");
   bench.write(step, {"part", "plain"});
