@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
+using testing::kCli;
 
 class DecomposeOption : public testing::TempDirTest {
  protected:

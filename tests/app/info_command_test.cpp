@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
-const std::string kSource = COOPERAGE_SOURCE_DIR;
+using testing::kCli;
+using testing::kSource;
 
 class InfoCommand : public testing::TempDirTest {
  protected:

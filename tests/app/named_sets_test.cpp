@@ -19,8 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
-const std::string kSource = COOPERAGE_SOURCE_DIR;
+using testing::kCli;
+using testing::kSource;
 const std::string kPython = COOPERAGE_DEBIAN_PYTHON;
 
 bool python_has(const std::string& modules) {

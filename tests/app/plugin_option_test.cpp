@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
+using testing::kCli;
 const std::string kPlugin = COOPERAGE_TEST_TRIPRIMITIVE;
 
 bool contains(const std::string& text, const std::string& part) {

@@ -17,13 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
-const std::string kSource = COOPERAGE_SOURCE_DIR;
+using testing::kCli;
+using testing::kSource;
 const std::string kCad = kSource + "/tests/framework/geometry/occ/data/";
 
-size_t lines(const std::string& s) {
-  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
-}
+using testing::lines;
 
 class ReliabilityCommand : public testing::TempDirTest {
  protected:

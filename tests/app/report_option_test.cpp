@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 using testing::run_command;
 using testing::slurp;
 
-const std::string kCli = COOPERAGE_CLI;
+using testing::kCli;
 
 class ReportOption : public testing::TempDirTest {
  protected:

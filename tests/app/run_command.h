@@ -1,6 +1,7 @@
 // Runs a shell command and captures its stdout, stderr and exit status (tests only).
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,14 @@
 #include <unistd.h>
 
 namespace cooperage::testing {
+
+// The command-line binary and the source tree, as the test build defines them.
+inline const std::string kCli = COOPERAGE_CLI;
+inline const std::string kSource = COOPERAGE_SOURCE_DIR;
+
+inline size_t lines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 struct CommandResult {
   int exit_code = -1;

@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::run_command;
 
-const std::string kCli = COOPERAGE_CLI;
-const std::string kSource = COOPERAGE_SOURCE_DIR;
+using testing::kCli;
+using testing::kSource;
 
 class RunCommand : public testing::TempDirTest {
  protected:
@@ -28,9 +28,7 @@ class RunCommand : public testing::TempDirTest {
   }
 };
 
-size_t lines(const std::string& s) {
-  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
-}
+using testing::lines;
 
 TEST_F(RunCommand, BracketExampleWritesExodusAndVtuAndPrintsTheTable) {
   fs::copy_file(kSource + "/examples/bracket.xml", path("bracket.xml"));

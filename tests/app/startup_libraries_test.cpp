@@ -18,7 +18,7 @@
 namespace cooperage {
 namespace {
 
-const std::string kCli = COOPERAGE_CLI;
+using testing::kCli;
 
 // A line "file=<name or path of library...>" of the trace.
 bool opened(const std::string& trace, const std::string& library) {

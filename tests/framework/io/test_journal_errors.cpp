@@ -3,6 +3,7 @@
 #include "framework/io/journal_reader.h"
 
 #include "framework/core/error.h"
+#include "journal_text.h"
 
 #include <gtest/gtest.h>
 
@@ -28,10 +29,7 @@ void expect_error(const std::string& xml, ErrorCode code,
 }
 
 /// A journal whose <geometry> holds `ops` (starting on line 3) followed by `rest`.
-std::string journal(const std::string& ops, const std::string& rest = "") {
-  return "<cooperage version=\"1\">\n<geometry>\n" + ops + "\n</geometry>\n" + rest +
-         "\n</cooperage>\n";
-}
+using testing::journal;
 
 const std::string kBrick = R"(<brick name="b" size="1 1 1"/>)";
 

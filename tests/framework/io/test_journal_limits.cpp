@@ -3,6 +3,7 @@
 #include "framework/io/journal_reader.h"
 
 #include "framework/core/error.h"
+#include "journal_text.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +12,7 @@
 namespace cooperage::io {
 namespace {
 
-std::string journal(const std::string& ops, const std::string& rest = "") {
-  return "<cooperage version=\"1\">\n<geometry>\n" + ops + "\n</geometry>\n" + rest +
-         "\n</cooperage>\n";
-}
+using testing::journal;
 
 std::string error_of(const std::string& xml) {
   try {

@@ -14,7 +14,7 @@ namespace {
 
 const std::string kGeometry = "<geometry><brick name=\"b\" size=\"1 1 1\"/></geometry>\n";
 
-std::string error_of(const std::string& xml) {
+std::string plugin_error_of(const std::string& xml) {
   try {
     parse_journal(xml, "job.xml", "/jobs/a");
   } catch (const MeshingError& e) {
@@ -48,23 +48,24 @@ TEST(JournalPlugins, AJournalWithoutPluginsHasNone) {
 }
 
 TEST(JournalPlugins, MisplacedRepeatedOrEmptyPluginsAreErrors) {
-  std::string m = error_of("<cooperage version=\"1\">\n" + kGeometry +
-                           "<plugin file=\"libone.so\"/>\n</cooperage>\n");
+  std::string m = plugin_error_of("<cooperage version=\"1\">\n" + kGeometry +
+                                  "<plugin file=\"libone.so\"/>\n</cooperage>\n");
   EXPECT_NE(m.find("job.xml:3"), std::string::npos) << m;
   EXPECT_NE(m.find("must come before <geometry>"), std::string::npos) << m;
-  m = error_of(
+  m = plugin_error_of(
       "<cooperage version=\"1\">\n<plugin file=\"libone.so\"/>\n"
       "<plugin file=\"./libone.so\"/>\n" +
       kGeometry + "</cooperage>\n");
   EXPECT_NE(m.find("job.xml:3"), std::string::npos) << m;
   EXPECT_NE(m.find("already loaded at line 2"), std::string::npos) << m;
-  m = error_of("<cooperage version=\"1\">\n<plugin file=\"\"/>\n" + kGeometry + "</cooperage>\n");
+  m = plugin_error_of("<cooperage version=\"1\">\n<plugin file=\"\"/>\n" + kGeometry +
+                      "</cooperage>\n");
   EXPECT_NE(m.find("job.xml:2: <plugin>: attribute \"file\" must be non-empty"), std::string::npos)
       << m;
-  m = error_of("<cooperage version=\"1\">\n<plugin/>\n" + kGeometry + "</cooperage>\n");
+  m = plugin_error_of("<cooperage version=\"1\">\n<plugin/>\n" + kGeometry + "</cooperage>\n");
   EXPECT_NE(m.find("file"), std::string::npos) << m;
-  m = error_of("<cooperage version=\"1\">\n<plugin file=\"a.so\">x</plugin>\n" + kGeometry +
-               "</cooperage>\n");
+  m = plugin_error_of("<cooperage version=\"1\">\n<plugin file=\"a.so\">x</plugin>\n" + kGeometry +
+                      "</cooperage>\n");
   EXPECT_NE(m.find("<plugin>"), std::string::npos) << m;
 }
 

@@ -150,8 +150,8 @@ TEST(PlanFlow, ThePlanApplicableReturnsIsTheOneEveryLaterCallGets) {
   EXPECT_GE(count["constrain"], 2);
   EXPECT_EQ(count["roles"], 2);
   // ... and what it meshed is the two blocks.
-  const testing::HexMeshSummary m =
-      testing::check_hex_mesh(model, r.mesh);  // conformal, none inverted
+  const cooperage::testing::HexMeshSummary m =
+      cooperage::testing::check_hex_mesh(model, r.mesh);  // conformal, none inverted
   EXPECT_NEAR(m.volume, 3.0, 1e-9);
   EXPECT_EQ(r.mesh.hex_count(), static_cast<size_t>(8 * 4 * 4 + 4 * 4 * 4));
 }

@@ -16,7 +16,7 @@ namespace {
 using Eigen::Vector3d;
 
 const double kPi = std::acos(-1.0);
-const double kSqrt3 = std::sqrt(3.0);
+const double kRoot3 = std::sqrt(3.0);
 
 QuadNodes rhombus(double a) {
   const Vector3d u(1, 0, 0), v(std::cos(a), std::sin(a), 0);
@@ -107,21 +107,21 @@ TEST(QuadMetrics, RelativeSizeAndDegenerate) {
   EXPECT_DOUBLE_EQ(quad_edge_ratio(d), kDegenerate);
   EXPECT_DOUBLE_EQ(quad_max_aspect_frobenius(d), kDegenerate);
   // Collapsed quad (P2 == P3) is measured as the triangle P0 P1 P2.
-  const QuadNodes c = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0.5, kSqrt3 / 2, 0),
-                       Vector3d(0.5, kSqrt3 / 2, 0)};
+  const QuadNodes c = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0.5, kRoot3 / 2, 0),
+                       Vector3d(0.5, kRoot3 / 2, 0)};
   EXPECT_NEAR(quad_scaled_jacobian(c), 1.0, 1e-12);
 }
 
 TEST(TriMetrics, Equilateral) {
-  const TriNodes t = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0.5, kSqrt3 / 2, 0)};
+  const TriNodes t = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0.5, kRoot3 / 2, 0)};
   EXPECT_NEAR(tri_scaled_jacobian(t), 1.0, 1e-12);
   EXPECT_NEAR(tri_shape(t), 1.0, 1e-12);
   EXPECT_NEAR(tri_aspect_frobenius(t), 1.0, 1e-12);
   EXPECT_NEAR(tri_edge_ratio(t), 1.0, 1e-12);
-  EXPECT_NEAR(tri_jacobian(t), kSqrt3 / 2, 1e-12);
-  EXPECT_NEAR(tri_size(t), kSqrt3 / 4, 1e-12);
-  EXPECT_NEAR(tri_relative_size(t, kSqrt3 / 4), 1.0, 1e-12);
-  EXPECT_NEAR(tri_relative_size(t, kSqrt3 / 2), 0.25, 1e-12);  // R = 1/4 -> min(1/4, 4)
+  EXPECT_NEAR(tri_jacobian(t), kRoot3 / 2, 1e-12);
+  EXPECT_NEAR(tri_size(t), kRoot3 / 4, 1e-12);
+  EXPECT_NEAR(tri_relative_size(t, kRoot3 / 4), 1.0, 1e-12);
+  EXPECT_NEAR(tri_relative_size(t, kRoot3 / 2), 0.25, 1e-12);  // R = 1/4 -> min(1/4, 4)
 }
 
 TEST(TriMetrics, RightIsosceles) {
@@ -130,14 +130,14 @@ TEST(TriMetrics, RightIsosceles) {
   const TriNodes t = {Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0)};
   EXPECT_NEAR(tri_scaled_jacobian(t), std::sqrt(2.0 / 3.0), 1e-12);
   // condition = (1 + 1 - 0) / (1 * sqrt3) -> shape sqrt3/2
-  EXPECT_NEAR(tri_shape(t), kSqrt3 / 2, 1e-12);
+  EXPECT_NEAR(tri_shape(t), kRoot3 / 2, 1e-12);
   // aspect = (1 + 2 + 1) / (2 sqrt3 * 1)
-  EXPECT_NEAR(tri_aspect_frobenius(t), 2 / kSqrt3, 1e-12);
+  EXPECT_NEAR(tri_aspect_frobenius(t), 2 / kRoot3, 1e-12);
   EXPECT_NEAR(tri_edge_ratio(t), std::sqrt(2.0), 1e-12);
 }
 
 TEST(TriMetrics, InvertedAgainstSurfaceNormal) {
-  const TriNodes t = {Vector3d(0, 0, 0), Vector3d(0.5, kSqrt3 / 2, 0), Vector3d(1, 0, 0)};  // CW
+  const TriNodes t = {Vector3d(0, 0, 0), Vector3d(0.5, kRoot3 / 2, 0), Vector3d(1, 0, 0)};  // CW
   EXPECT_NEAR(tri_scaled_jacobian(t), 1.0, 1e-12);
   EXPECT_NEAR(tri_scaled_jacobian(t, Vector3d(0, 0, 1)), -1.0, 1e-12);
   EXPECT_NEAR(tri_scaled_jacobian(t, Vector3d(0, 0, -1)), 1.0, 1e-12);

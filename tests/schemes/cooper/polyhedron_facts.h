@@ -18,7 +18,7 @@
 #include <tuple>
 #include <vector>
 
-namespace cooperage::cooper::testing {
+namespace cooperage::cooper::facts_test {
 
 using geom::Vec3;
 using PolyLoop = std::vector<Vec3>;
@@ -145,4 +145,4 @@ inline std::vector<PolyFace> walls(double x0, double y0, double x1, double y1, d
           {oriented({{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}, Vec3(-s, 0, 0))}};
 }
 
-}  // namespace cooperage::cooper::testing
+}  // namespace cooperage::cooper::facts_test

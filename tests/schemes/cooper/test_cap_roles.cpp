@@ -18,7 +18,7 @@ namespace {
 using geom::Vec3;
 
 constexpr double kPi = 3.14159265358979323846;
-const Vec3 kDown(0, 0, -1);
+const Vec3 kMinusZ(0, 0, -1);
 
 struct FactsBuilder {
   VolumeFacts facts;
@@ -81,7 +81,7 @@ VolumeFacts bolt_head(double top_radius, const std::vector<double>& rim_cuts) {
 }
 
 bool cut(const VolumeFacts& facts, int cap) {
-  const std::vector<int> c = cut_caps(facts, {1, 2}, kDown, 5e-3);
+  const std::vector<int> c = cut_caps(facts, {1, 2}, kMinusZ, 5e-3);
   return std::find(c.begin(), c.end(), cap) != c.end();
 }
 

@@ -58,7 +58,7 @@ void register_all_but_cooper(scheme::Registry& registry) {
 
 const pipeline::MeshOptions kOptions = selector::mesh_options();
 
-io::MeshSettings sized(double size, bool pin_cooper = false) {
+io::MeshSettings cooper_job(double size, bool pin_cooper = false) {
   io::MeshSettings s;
   s.size = size;
   if (pin_cooper) {
@@ -135,7 +135,7 @@ TEST(Cooper, PlateWithThreeSquareHolesSweepsExactly) {
   plate_with_square_holes(wb);
   const geom::Model model = wb.build_model();
   const auto registry = with_cooper();
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
+  const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
@@ -166,7 +166,7 @@ TEST(Cooper, PlateWithCircularHolesNeedsPave) {
     EXPECT_NE(a.why.find("needs pave, which is not available"), std::string::npos) << a.why;
     GTEST_SKIP() << "no pave scheme registered: " << a.why;
   }
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.4), *registry, kOptions);
+  const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.4), *registry, kOptions);
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   expect_conformal(r.mesh);
   EXPECT_GT(min_scaled_jacobian(r.mesh), 0.2);
@@ -187,7 +187,7 @@ TEST(Cooper, CurvedAxisSweepGoesAroundTheArc) {
   ring_sector_with_hole(wb);
   const geom::Model model = wb.build_model();
   const auto registry = with_cooper();
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.2), *registry, kOptions);
+  const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.2), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
@@ -214,7 +214,8 @@ TEST(Cooper, ASweepRoundMoreThanHalfATurnKeepsItsElementsRightSideOut) {
     wb.revolve("ring", {{5, 0, 0}, {10, 0, 0}, {5, 0, 5}}, {0, 0, 0}, {0, 0, 1}, turn);
     const geom::Model model = wb.build_model();
     const auto registry = with_cooper();
-    const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
+    const pipeline::MeshResult r =
+        pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
     ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << turn;
     expect_conformal(r.mesh);
     EXPECT_GT(min_scaled_jacobian(r.mesh), 0.1) << turn;
@@ -240,7 +241,7 @@ TEST(Cooper, DifferentlySizedCapsWithSlopedSide) {
   const geom::Model model = wb.build_model();
   ASSERT_NEAR(model.volume(1).volume, 42.0, 1e-6);
   const auto registry = with_cooper();
-  const pipeline::MeshResult r = pipeline::mesh_model(model, sized(0.25), *registry, kOptions);
+  const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.25), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(c.ok) << c.why;
@@ -307,8 +308,9 @@ TEST(Cooper, PermutedFaceOrderGivesTheSameBarrelsAndMesh) {
   EXPECT_EQ(c0.source, c1.source);
   EXPECT_EQ(c0.target, c1.target);
   EXPECT_EQ(c0.lattice.sides, c1.lattice.sides);
-  const pipeline::MeshResult r0 = pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
-  const pipeline::MeshResult r1 = pipeline::mesh_model(permuted, sized(0.5), *registry, kOptions);
+  const pipeline::MeshResult r0 = pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
+  const pipeline::MeshResult r1 =
+      pipeline::mesh_model(permuted, cooper_job(0.5), *registry, kOptions);
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
 }
 
@@ -322,7 +324,7 @@ TEST(Cooper, SphereIsRejectedWithAReasonAndNotMeshed) {
   EXPECT_FALSE(a.ok);
   EXPECT_NE(a.why.find("a sweep needs at least 3"), std::string::npos) << a.why;
   try {
-    pipeline::mesh_model(model, sized(0.3), *registry, kOptions);
+    pipeline::mesh_model(model, cooper_job(0.3), *registry, kOptions);
     FAIL() << "a sphere was meshed";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
@@ -344,7 +346,7 @@ TEST(Cooper, BrickWithBossesOnAdjacentSidesIsRejected) {
   EXPECT_NE(a.why.find("volume 1"), std::string::npos) << a.why;
   RecordProperty("why", a.why);
   try {
-    pipeline::mesh_model(model, sized(0.5), *registry, kOptions);
+    pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
     FAIL() << "two sweep directions were meshed";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::NotApplicable) << e.what();
@@ -378,7 +380,8 @@ TEST(Cooper, ApplicableBothWaysAndRoles) {
   wb2.brick("b", {0, 0, 0}, {1, 2, 3});
   const geom::Model brick = wb2.build_model();
   EXPECT_TRUE(cooper->applicable(scheme::VolumeView{brick, 1, nullptr}).ok);
-  const pipeline::MeshResult r = pipeline::mesh_model(brick, sized(0.5, true), *registry, kOptions);
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(brick, cooper_job(0.5, true), *registry, kOptions);
   EXPECT_EQ(r.mesh.hex_count(), 2u * 4u * 6u);
   EXPECT_NEAR(total_hex_volume(r.mesh), 6.0, 1e-9);
   expect_conformal(r.mesh);

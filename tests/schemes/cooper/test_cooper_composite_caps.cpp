@@ -11,6 +11,7 @@
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "plan_helpers.h"
+#include "scheme_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "selector/select_schemes.h"
 
@@ -23,24 +24,11 @@
 namespace cooperage::cooper {
 namespace {
 
-std::unique_ptr<scheme::Registry> builtin() {
-  auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r);
-  return r;
-}
+using testing::builtin;
 
-io::MeshSettings sized(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
-  return s;
-}
+using testing::sized;
 
 using Summary = testing::HexMeshSummary;
-
-Summary check_mesh(const geom::Model& model, const mesh::MeshDB& db) {
-  return testing::check_hex_mesh(model, db);
-}
 
 // The surface of `volume` with the given number of loops (the first one).
 int surface_with_loops(const geom::Model& model, int volume, size_t loops) {
@@ -112,7 +100,7 @@ TEST(CooperCompositeCaps, WebcutBossMeshesConformally) {
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   const double exact = model.volume(1).volume + model.volume(2).volume;
   EXPECT_NEAR(s.volume, exact, 0.02 * exact);  // chords of the circles
   EXPECT_GE(s.min_sj, 0.3);
@@ -140,7 +128,7 @@ TEST(CooperCompositeCaps, TouchingBricksFlipSoTheCompositeIsTheSource) {
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, 16.0 + 4.0, 20.0 * 1e-9);
   EXPECT_GE(s.min_sj, 0.99);
   std::printf("[cooper composite] touching bricks: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
@@ -190,7 +178,7 @@ TEST(CooperCompositeCaps, TwoSubcapsOnOneCap) {
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, 24.0 + 3.0 + 4.0, 31.0 * 1e-9);
   EXPECT_GE(s.min_sj, 0.99);
 }
@@ -225,7 +213,7 @@ TEST(CooperCompositeCaps, SubcapsOnBothEndsSharedWithNeighboursMeshInTurn) {
     }
   }
   // Conformal (every interior face shared by two hexes), all of the volume.
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, 24.0 + 3.0 + 4.0, 31.0 * 1e-9);
   EXPECT_GE(s.min_sj, 0.99);
 }

@@ -13,6 +13,7 @@
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "plan_helpers.h"
+#include "scheme_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
@@ -37,21 +38,9 @@ namespace {
 
 using geom::Vec3;
 
-std::unique_ptr<scheme::Registry> builtin() {
-  auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r);
-  return r;
-}
+using testing::builtin;
 
-// pave's 2D core as cooper's polygon mesher, as the registration code is
-// meant to wire it (framework/scheme/polygon_mesher.h).
-class Pave2D final : public scheme::PolygonMesher {
- public:
-  scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
-    const pave::QuadMesh2D m = pave::pave_2d(loops);
-    return {m.points, m.quads, m.boundary_count};
-  }
-};
+using testing::Pave2D;
 
 // map, submap, optionally pave, volume map and cooper, with or without the
 // polygon mesher (independent of what the built-in registry wires).
@@ -71,23 +60,14 @@ std::unique_ptr<scheme::Registry> with_polygon_mesher(bool pave_surfaces = false
   return registry_with(pave_surfaces, true);
 }
 
-io::MeshSettings sized(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
-  return s;
-}
+using testing::sized;
 
 using Summary = testing::HexMeshSummary;
-
-Summary check_mesh(const geom::Model& model, const mesh::MeshDB& db) {
-  return testing::check_hex_mesh(model, db);
-}
 
 Summary expect_many_to_one(const geom::Model& model, const pipeline::MeshResult& r, double exact,
                            const char* name) {
   for (const auto& v : model.volumes()) EXPECT_EQ(r.plan.volumes.at(v.id).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, exact, exact * 1e-6) << name;
   EXPECT_GE(s.min_sj, 0.3) << name;
   ::testing::Test::RecordProperty(std::string(name) + "_min_scaled_jacobian",
@@ -189,7 +169,7 @@ TEST(CooperMany, RoundBossOnCylinderWithPave) {
   if (!registry->surface_scheme("pave")) GTEST_SKIP() << "pave is not registered";
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GT(s.min_sj, 0.2);
   std::printf("[cooper II] round_boss: %zu hexes, min scaled Jacobian %.4f\n", s.hexes, s.min_sj);
@@ -441,7 +421,7 @@ TEST(CooperMany, RoundAppendagesOnTopAndBottom) {
   const VolumePlan m = plan_test::plan_with(model, 1, *registry);
   ASSERT_TRUE(m.ok) << m.why;
   const auto r = pipeline::mesh_model(model, sized(0.25), *registry, selector::mesh_options());
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GE(s.min_sj, 0.3);
   std::printf("[cooper II] round_appendages: %zu hexes, min scaled Jacobian %.4f\n", s.hexes,
@@ -628,7 +608,7 @@ TEST(CooperMany, RoundBossAboveARoundFootMeshes) {
   const geom::Model model = pipeline::build_geometry(job);
   const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GE(s.min_sj, 0.3);
   std::printf("[cooper II] cooper_round_boss_over_foot.xml: %zu hexes, min scaled Jacobian %.4f\n",
@@ -650,7 +630,7 @@ void expect_data_journal_meshes(const char* file, double exact, std::vector<doub
     settings.finer_retries = 0;
     const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
     EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper") << file << " " << size;
-    const Summary s = check_mesh(model, r.mesh);
+    const Summary s = testing::check_hex_mesh(model, r.mesh);
     EXPECT_NEAR(s.volume, exact, 0.01 * exact) << file << " " << size;
     EXPECT_GE(s.min_sj, min_sj) << file << " " << size;
     std::printf("[cooper] %s, size %g: %zu hexes, min scaled Jacobian %.4f\n", file, size,
@@ -677,7 +657,7 @@ TEST(CooperMany, SlottedHeadOverACountersinkMeshes) {
     settings.size = size;
     const auto r = pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
     EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper") << size;
-    const Summary s = check_mesh(model, r.mesh);
+    const Summary s = testing::check_hex_mesh(model, r.mesh);
     EXPECT_NEAR(s.volume, 2680.12, 0.01 * 2680.12) << size;
     EXPECT_GE(s.min_sj, 0.15) << size;
   }
@@ -724,7 +704,7 @@ void expect_lug_over_cone_meshes(const geom::Vec3& block, double y, double z0, d
   const auto registry = builtin();
   const auto res = pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options());
   EXPECT_EQ(res.plan.volumes.at(1).scheme, "cooper") << name;
-  const Summary s = check_mesh(model, res.mesh);
+  const Summary s = testing::check_hex_mesh(model, res.mesh);
   const double exact = model.volume(1).volume;
   EXPECT_NEAR(s.volume, exact, 0.01 * exact) << name;
   EXPECT_GE(s.min_sj, min_sj) << name;
@@ -782,7 +762,7 @@ SweptPart sweep_part(const geom::Model& model, double size) {
   const auto registry = builtin();
   SweptPart out{pipeline::mesh_model(model, sized(size), *registry, selector::mesh_options()), {}};
   EXPECT_EQ(out.run.plan.volumes.at(1).scheme, "cooper") << size;
-  out.summary = check_mesh(model, out.run.mesh);
+  out.summary = testing::check_hex_mesh(model, out.run.mesh);
   return out;
 }
 
@@ -826,7 +806,7 @@ TEST(CooperMany, ACapWhoseLatticeFoldsIsPavedInstead) {
   ASSERT_EQ(p.plan.volumes.at(1).scheme, "cooper");
   EXPECT_EQ(p.plan.surfaces.at(top).scheme, "pave");
   EXPECT_TRUE(p.warnings.empty());
-  EXPECT_NEAR(check_mesh(model, p.mesh).volume, exact, 0.005 * exact);
+  EXPECT_NEAR(testing::check_hex_mesh(model, p.mesh).volume, exact, 0.005 * exact);
 }
 
 // A square boss overhanging the block's back wall by 0.82, with a through
@@ -1327,7 +1307,7 @@ TEST(CooperMany, ExampleCylinderBossMeshes) {
   const geom::Model model = pipeline::build_geometry(job);
   const auto r = pipeline::mesh_model(model, *job.mesh, *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const Summary s = check_mesh(model, r.mesh);
+  const Summary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_NEAR(s.volume, model.volume(1).volume, 0.02 * model.volume(1).volume);  // chords
   EXPECT_GE(s.min_sj, 0.3);
   std::printf("[cooper II] examples/cylinder_boss.xml: %zu hexes, min scaled Jacobian %.4f\n",

@@ -13,6 +13,7 @@
 #include "framework/pipeline/mesher.h"
 #include "must_mesh_parts.h"
 #include "plan_helpers.h"
+#include "scheme_helpers.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
@@ -30,18 +31,9 @@ using geom::Vec3;
 using parts::Build;
 using namespace parts;
 
-std::unique_ptr<scheme::Registry> builtin() {
-  auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r);
-  return r;
-}
+using testing::builtin;
 
-io::MeshSettings sized(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;  // the scheme at this size, not a retry at a finer one
-  return s;
-}
+using testing::sized;
 
 // Meshes `build` (shape "part", or several solids) and checks the mesh;
 // returns it for further checks.

@@ -14,6 +14,7 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
 #include "plan_helpers.h"
+#include "scheme_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/map/surface_map.h"
@@ -33,13 +34,7 @@
 namespace cooperage::cooper {
 namespace {
 
-class Pave2D final : public scheme::PolygonMesher {
- public:
-  scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
-    const pave::QuadMesh2D m = pave::pave_2d(loops);
-    return {m.points, m.quads, m.boundary_count};
-  }
-};
+using testing::Pave2D;
 
 std::unique_ptr<scheme::Registry> registry() {
   auto r = std::make_unique<scheme::Registry>();
@@ -62,7 +57,7 @@ void flush_boss_and_foot(occ::Workbench& wb) {
 const geom::Vec3 kUp(0, 0, 1);
 
 // The job: a size, and a sweep direction hint on volume 1 when given.
-io::MeshSettings sized(double size, std::optional<geom::Vec3> direction = std::nullopt) {
+io::MeshSettings job_along(double size, std::optional<geom::Vec3> direction = std::nullopt) {
   io::MeshSettings s;
   s.size = size;
   if (direction) {
@@ -104,7 +99,7 @@ TEST(CooperSelfIntersecting, MeshesEndToEndThroughTheSelfIntersection) {
   flush_boss_and_foot(wb);
   const geom::Model model = wb.build_model();
   const auto reg = registry();
-  const io::MeshSettings up = sized(0.25, kUp);
+  const io::MeshSettings up = job_along(0.25, kUp);
   const auto r = pipeline::mesh_model(model, up, *reg, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const auto s = testing::check_hex_mesh(model, r.mesh);  // conformity, no inverted hex
@@ -142,8 +137,8 @@ TEST(CooperSelfIntersecting, RigidMotionGivesTheMovedMesh) {
   const geom::Model m0 = still.build_model(), m1 = moved.build_model();
   const geom::Vec3 up = motion.apply(kUp) - motion.apply(geom::Vec3::Zero());
   const auto reg = registry();
-  const auto r0 = pipeline::mesh_model(m0, sized(0.25, kUp), *reg, selector::mesh_options());
-  const auto r1 = pipeline::mesh_model(m1, sized(0.25, up), *reg, selector::mesh_options());
+  const auto r0 = pipeline::mesh_model(m0, job_along(0.25, kUp), *reg, selector::mesh_options());
+  const auto r1 = pipeline::mesh_model(m1, job_along(0.25, up), *reg, selector::mesh_options());
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);
   const double worst = testing::moved_node_distance(r0.mesh, r1.mesh, motion);

@@ -20,11 +20,11 @@
 namespace cooperage::cooper {
 namespace {
 
+using facts_test::oriented;
+using facts_test::PolyFace;
+using facts_test::rect_xy;
+using facts_test::walls;
 using geom::Vec3;
-using testing::oriented;
-using testing::PolyFace;
-using testing::rect_xy;
-using testing::walls;
 
 const Vec3 kUp(0, 0, 1), kDown(0, 0, -1);
 
@@ -108,7 +108,7 @@ OrderAnchor down() {
 }
 
 TEST(PlanSteps, CubeIsOneBarrelOfTwoLevels) {
-  const VolumeFacts facts = testing::polyhedron_facts(cube());
+  const VolumeFacts facts = facts_test::polyhedron_facts(cube());
   ASSERT_EQ(facts.faces.size(), 6u);
   ASSERT_EQ(facts.curves.size(), 12u);
   const Steps s = run_steps(facts, z_caps(facts), down());
@@ -136,7 +136,7 @@ TEST(PlanSteps, CubeIsOneBarrelOfTwoLevels) {
 }
 
 TEST(PlanSteps, ABossEndsItsBarrelOnTheShoulder) {
-  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const VolumeFacts facts = facts_test::polyhedron_facts(boss_on_block());
   const Steps s = run_steps(facts, z_caps(facts), down());
   ASSERT_EQ(s.tree.barrels.size(), 2u);
   // The boss walls meet the shoulder re-entrantly.
@@ -187,14 +187,14 @@ TEST(PlanSteps, ALongBossOverhangingItsBlockHasItsTopCut) {
   for (const auto& [x0, x1] : {std::pair{1.5, 2.5}, std::pair{1.1, 1.4}}) {
     SCOPED_TRACE(x0);
     const VolumeFacts facts =
-        testing::polyhedron_facts({{oriented(rect_xy(0, 0, 4, 4, 0), kDown)},
-                                   {oriented(rect_xy(x0, 1.5, x1, 201.5, 3), kUp)}});
+        facts_test::polyhedron_facts({{oriented(rect_xy(0, 0, 4, 4, 0), kDown)},
+                                      {oriented(rect_xy(x0, 1.5, x1, 201.5, 3), kUp)}});
     const auto cut = cut_caps(facts, {1, 2}, kDown, 5e-3);
     // The bottom holds part of the top's footprint, the top part of the bottom's.
     EXPECT_EQ(cut, (std::vector<int>{1, 2}));
   }
   // The same boss standing inside the block: nothing cuts its top.
-  const VolumeFacts inside = testing::polyhedron_facts(
+  const VolumeFacts inside = facts_test::polyhedron_facts(
       {{oriented(rect_xy(0, 0, 4, 4, 0), kDown)}, {oriented(rect_xy(1.5, 1.5, 2.5, 3.5, 3), kUp)}});
   EXPECT_EQ(cut_caps(inside, {1, 2}, kDown, 5e-3), (std::vector<int>{1}));
 }
@@ -205,7 +205,7 @@ TEST(PlanSteps, ALongBossOverhangingItsBlockHasItsTopCut) {
 // over the bottom's; nothing else. Two long parallel edges 1 apart (the
 // campaign's 7,500-long boss) are not coincident.
 TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
-  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const VolumeFacts facts = facts_test::polyhedron_facts(boss_on_block());
   const auto z = z_caps(facts);
   const auto pairs = coincident_cap_curves(facts, std::vector<int>(z.begin(), z.end()), kDown);
   EXPECT_EQ(pairs.size(), 8u);
@@ -227,8 +227,8 @@ TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
   ASSERT_EQ(rows.size(), 8u);
   EXPECT_EQ(rows[0].sense, intervals::Sense::Equal);
   const VolumeFacts apart =
-      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 7500.25, 2.5), kUp)},
-                                 {oriented(rect_xy(5, 0.25, 6, 7500.25, 2), kUp)}});
+      facts_test::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 7500.25, 2.5), kUp)},
+                                    {oriented(rect_xy(5, 0.25, 6, 7500.25, 2), kUp)}});
   // Only the shared line x = 5 coincides.
   EXPECT_EQ(coincident_cap_curves(apart, {1, 2}, kDown).size(), 1u);
 }
@@ -239,8 +239,8 @@ TEST(PlanSteps, CapCurvesThatProjectOntoEachOtherArePaired) {
 // whole, are not such a stretch.
 TEST(PlanSteps, CapCurvesSharingPartOfALineAreFound) {
   const VolumeFacts facts =
-      testing::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 2.25, 2), kUp)},
-                                 {oriented(rect_xy(3.5, 1.5, 5, 3, 0), kDown)}});
+      facts_test::polyhedron_facts({{oriented(rect_xy(4, 0.25, 5, 2.25, 2), kUp)},
+                                    {oriented(rect_xy(3.5, 1.5, 5, 3, 0), kDown)}});
   const auto pairs = overlapping_cap_curves(facts, {1, 2}, kDown);
   ASSERT_EQ(pairs.size(), 1u);
   for (int c : {pairs[0].first, pairs[0].second}) {
@@ -250,14 +250,14 @@ TEST(PlanSteps, CapCurvesSharingPartOfALineAreFound) {
   }
   // Beside each other on the line y = 1.5 (x 0..1 and 2..3), or the same square.
   const VolumeFacts apart =
-      testing::polyhedron_facts({{oriented(rect_xy(0, 1.5, 1, 2.5, 2), kUp)},
-                                 {oriented(rect_xy(2, 1.5, 3, 2.5, 0), kDown)},
-                                 {oriented(rect_xy(0, 1.5, 1, 2.5, -1), kDown)}});
+      facts_test::polyhedron_facts({{oriented(rect_xy(0, 1.5, 1, 2.5, 2), kUp)},
+                                    {oriented(rect_xy(2, 1.5, 3, 2.5, 0), kDown)},
+                                    {oriented(rect_xy(0, 1.5, 1, 2.5, -1), kDown)}});
   EXPECT_TRUE(overlapping_cap_curves(apart, {1, 2, 3}, kDown).empty());
 }
 
 TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
-  const VolumeFacts facts = testing::polyhedron_facts(pocket());
+  const VolumeFacts facts = facts_test::polyhedron_facts(pocket());
   const Steps s = run_steps(facts, z_caps(facts), down());
   ASSERT_EQ(s.tree.barrels.size(), 2u);
   const int floor = facts.faces.back().id;
@@ -333,7 +333,7 @@ std::vector<PolyFace> pocket_crossed_by_hole() {
 }
 
 TEST(PlanSteps, AHoleCrossingAPocketsFloorStillWallsAHole) {
-  const VolumeFacts facts = testing::polyhedron_facts(pocket_crossed_by_hole());
+  const VolumeFacts facts = facts_test::polyhedron_facts(pocket_crossed_by_hole());
   const Steps s = run_steps(facts, z_caps(facts), down());
   ASSERT_TRUE(s.slabs.ok) << s.slabs.why;
   ASSERT_EQ(s.slabs.slabs.size(), 2u);
@@ -377,7 +377,7 @@ std::vector<PolyFace> pockets_from_both_ends() {
 }
 
 TEST(PlanSteps, PocketsFromBothEndsMeetInASlabTheirWallsFacingDecide) {
-  const VolumeFacts facts = testing::polyhedron_facts(pockets_from_both_ends());
+  const VolumeFacts facts = facts_test::polyhedron_facts(pockets_from_both_ends());
   const Steps s = run_steps(facts, z_caps(facts), down());
   ASSERT_TRUE(s.slabs.ok) << s.slabs.why;
   ASSERT_EQ(s.slabs.slabs.size(), 3u);
@@ -385,7 +385,7 @@ TEST(PlanSteps, PocketsFromBothEndsMeetInASlabTheirWallsFacingDecide) {
 }
 
 TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
-  const VolumeFacts facts = testing::polyhedron_facts(stepped_l());
+  const VolumeFacts facts = facts_test::polyhedron_facts(stepped_l());
   const Steps s = run_steps(facts, z_caps(facts), down());
   // The L-shaped walls span two slabs: the step's barrel ends at the
   // shoulder's level, its virtual cap beside the shoulder (Fig. 8d).
@@ -403,14 +403,14 @@ TEST(PlanSteps, TheSteppedLSplitsItsSideWallsAtTheShoulder) {
 
 TEST(PlanSteps, AFaceThatCannotBeASideIsRefusedWithAReason) {
   // The cube with its top declared a side and only the bottom a cap.
-  const VolumeFacts facts = testing::polyhedron_facts(cube());
+  const VolumeFacts facts = facts_test::polyhedron_facts(cube());
   const SideLattice l = side_lattice(facts, {facts.faces.back().id - 1});
   EXPECT_FALSE(l.ok);
   EXPECT_FALSE(l.why.empty());
 }
 
 TEST(PlanSteps, CandidatesOfTheBossAreAPairThenTheAxis) {
-  const VolumeFacts facts = testing::polyhedron_facts(boss_on_block());
+  const VolumeFacts facts = facts_test::polyhedron_facts(boss_on_block());
   std::string why;
   const auto pairs = pair_candidates(facts, {}, {}, why);
   // The shoulder has two loops and cannot be a side; pairs must contain it.

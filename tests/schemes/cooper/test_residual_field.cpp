@@ -16,12 +16,12 @@ namespace {
 
 // An n x n grid of unit quads in z = 0 centred on the origin, boundary
 // nodes first (counter-clockwise from a corner), then the interior.
-struct Grid {
+struct ResidualGrid {
   static constexpr int n = 6;
   std::vector<Vec3> points;
   std::vector<mesh::Quad> quads;
   std::size_t boundary = 0;
-  Grid() {
+  ResidualGrid() {
     std::vector<int> id((n + 1) * (n + 1), -1);
     auto at = [&](int i, int j) { return Vec3(i - n / 2.0, j - n / 2.0, 0.0); };
     auto take = [&](int i, int j) {
@@ -51,14 +51,14 @@ struct Grid {
 // cone's flank) and its top edge pushed in by up to 1.8 intervals in the
 // middle, which no affine map explains.
 Vec3 end_shape(const Vec3& x) {
-  const double half = Grid::n / 2.0;
+  const double half = ResidualGrid::n / 2.0;
   const double push =
       x.y() > 0 ? 1.8 * (x.y() / half) * (1.0 - (x.x() / half) * (x.x() / half)) : 0;
   return Vec3(x.x(), x.y() - push, 0.4 * x.x());
 }
 
 TEST(ResidualField, BoundaryResidualsKeepTheNodesInsideTheirBoundary) {
-  const Grid g;
+  const ResidualGrid g;
   std::vector<Vec3> boundary_at;
   for (std::size_t k = 0; k < g.boundary; ++k) boundary_at.push_back(end_shape(g.points[k]));
   // The map alone (here the identity: the affine part is nil) leaves the
@@ -82,7 +82,7 @@ TEST(ResidualField, BoundaryResidualsKeepTheNodesInsideTheirBoundary) {
 }
 
 TEST(ResidualField, AMapThatExplainsTheBoundaryMovesNothing) {
-  const Grid g;
+  const ResidualGrid g;
   // A rotation and shift: the mapped boundary is the boundary itself.
   auto map = [](const Vec3& x) {
     return Vec3(0.8 * x.x() - 0.6 * x.y() + 2.0, 0.6 * x.x() + 0.8 * x.y(), x.z() - 1.0);
@@ -99,7 +99,7 @@ TEST(ResidualField, AMapThatExplainsTheBoundaryMovesNothing) {
 // the boundary values (weights 1 / distance^3, the header's definition),
 // computed here directly.
 TEST(ResidualField, SeveralFieldsAtOnceEqualOneAtATime) {
-  const Grid g;
+  const ResidualGrid g;
   const ResidualField field(g.points, g.boundary);
   const Eigen::Index b = static_cast<Eigen::Index>(g.boundary);
   Eigen::MatrixXd r(b, 6);
