@@ -6,6 +6,7 @@
 // subcap changes. New nodes get positions on their end (projected onto a
 // real cap); a cap meshed beforehand must never be cut.
 #include "schemes/cooper/chart_warp.h"
+#include "schemes/cooper/imprint_debug.h"
 #include "schemes/cooper/imprint_polygons.h"
 #include "schemes/cooper/sweep_state.h"
 
@@ -281,6 +282,8 @@ void imprint_barrels(SweepState& s) {
         }
       }
       if (!r.ok) {
+        write_imprint_debug("volume" + std::to_string(s.vid) + "-barrel" + std::to_string(b + 1),
+                            ends, r);
         fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed" + unmatched_surfaces(s, r) +
                         " (" + r.why + ")");
       }

@@ -72,7 +72,7 @@ struct WedgeMeasures {
   double volume = 0.0, min_sj = 2.0;
 };
 
-WedgeMeasures measure(const mesh::MeshDB& db) {
+WedgeMeasures wedge_measures(const mesh::MeshDB& db) {
   WedgeMeasures m;
   for (const auto& [id, v] : db.volumes()) {
     m.hexes += v.hexes.size();
@@ -152,7 +152,7 @@ void expect_wedge_sweep(const geom::Model& model, const pipeline::MeshResult& r,
   ASSERT_GT(source, 0) << name << ": no source cap meshed by tri";
   const int layers = layers_along_z(model, r.mesh);
   ASSERT_GT(layers, 0) << name;
-  const WedgeMeasures m = measure(r.mesh);
+  const WedgeMeasures m = wedge_measures(r.mesh);
   EXPECT_EQ(m.hexes, 0u) << name;
   EXPECT_EQ(m.wedges, r.mesh.surface(source).tris.size() * static_cast<size_t>(layers)) << name;
   EXPECT_TRUE(r.mesh.surface(source).quads.empty()) << name;
@@ -195,7 +195,7 @@ TEST(CooperWedge, PlateWithThreeRoundHolesSweepsWedges) {
   const double t = 2 * M_PI / static_cast<double>(chords);
   const double deficit = 3 * M_PI * radius * radius * (1 - std::sin(t) / t);
   const double solid = model.volume(1).volume;
-  const WedgeMeasures m = measure(r.mesh);
+  const WedgeMeasures m = wedge_measures(r.mesh);
   EXPECT_GT(m.volume, solid - 1e-9 * solid);
   EXPECT_LE(m.volume, solid + deficit + 1e-9 * solid);
 }
@@ -214,7 +214,7 @@ TEST(CooperWedge, PlateWithThreeSquareHolesHasTheExactVolume) {
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
   expect_wedge_sweep(model, r, "plate_three_square_holes");
-  EXPECT_NEAR(measure(r.mesh).volume, 74.0, 74.0 * 1e-9);
+  EXPECT_NEAR(wedge_measures(r.mesh).volume, 74.0, 74.0 * 1e-9);
 }
 
 TEST(CooperWedge, AutoOnABrickPicksCooperNotTheVolumeMap) {
@@ -226,7 +226,7 @@ TEST(CooperWedge, AutoOnABrickPicksCooperNotTheVolumeMap) {
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
-  const WedgeMeasures m = measure(r.mesh);
+  const WedgeMeasures m = wedge_measures(r.mesh);
   EXPECT_EQ(m.hexes, 0u);
   EXPECT_GT(m.wedges, 0u);
   EXPECT_NEAR(m.volume, 2.0, 2.0 * 1e-9);
