@@ -143,29 +143,41 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
   CbcMain0(model, data);
   const std::string seed = std::to_string(options.random_seed);
   const std::string seconds = std::to_string(options.max_seconds);
-  const char* argv[] = {"cooperage",
-                        "-log",
-                        "0",
-                        "-slog",
-                        "0",
-                        "-threads",
-                        "0",
-                        "-randomSeed",
-                        seed.c_str(),
-                        "-randomCbcSeed",
-                        seed.c_str(),
-                        "-seconds",
-                        seconds.c_str(),
-                        "-ratioGap",
-                        "0.02",
-                        "-allowableGap",
-                        "1e-9",
-                        "-increment",
-                        "1e-7",
-                        "-solve",
-                        "-quit"};
+  std::vector<const char*> argv = {"cooperage",
+                                   "-log",
+                                   "0",
+                                   "-slog",
+                                   "0",
+                                   "-threads",
+                                   "0",
+                                   "-randomSeed",
+                                   seed.c_str(),
+                                   "-randomCbcSeed",
+                                   seed.c_str(),
+                                   "-seconds",
+                                   seconds.c_str(),
+                                   "-ratioGap",
+                                   "0.02",
+                                   "-allowableGap",
+                                   "1e-9",
+                                   "-increment",
+                                   "1e-7"};
+  if (!mip_start.empty()) {
+    // From a start (the selector's trial solves start from the answer
+    // before), "-passCuts -20" (CBC: at most 20 rounds of cuts at the root,
+    // fewer once a round gains little): the time went to the later rounds
+    // (gmsh_part --dim 2 at D/40, its solves from a start: 1.26 -> 0.47 s
+    // of CBC) and the real-CAD meshes stayed as good (bench/RESULTS.md,
+    // session 28). A fixed 5 was as fast on most files but 3x slower on one
+    // (CrankArm at D/80). The search for any feasible point keeps CBC's
+    // default: limited, gmsh_Zylkopf's found none within its time.
+    argv.push_back("-passCuts");
+    argv.push_back("-20");
+  }
+  argv.push_back("-solve");
+  argv.push_back("-quit");
   const auto started = std::chrono::steady_clock::now();
-  CbcMain1(static_cast<int>(sizeof(argv) / sizeof(argv[0])), argv, model, nullptr, data);
+  CbcMain1(static_cast<int>(argv.size()), argv.data(), model, nullptr, data);
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   IlpResult result;
