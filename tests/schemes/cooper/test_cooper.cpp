@@ -10,6 +10,7 @@
 #include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "plan_helpers.h"
+#include "scheme_helpers.h"
 #include "schemes/cooper/cooper_scheme.h"
 #include "schemes/map/surface_map.h"
 #include "schemes/map/volume_map.h"
@@ -31,12 +32,8 @@ using testing::hex_face_counts;
 using testing::hex_points;
 using testing::hex_volume;
 
-// The built-in registry (hints reach cooper through the job's settings).
-std::unique_ptr<scheme::Registry> with_cooper() {
-  auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r);
-  return r;
-}
+// The built-in registry: hints reach cooper through the job's settings.
+using testing::builtin;
 
 // Job settings with sweep hints on volume 1.
 io::MeshSettings hinted(std::vector<int> sources, std::vector<int> targets = {}) {
@@ -134,7 +131,7 @@ TEST(Cooper, PlateWithThreeSquareHolesSweepsExactly) {
   occ::Workbench wb;
   plate_with_square_holes(wb);
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
@@ -158,7 +155,7 @@ TEST(Cooper, PlateWithCircularHolesNeedsPave) {
   occ::Workbench wb;
   parts::plate_three_round_holes(wb);
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   if (!registry->surface_scheme("pave")) {
     const scheme::Applicability a =
         registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
@@ -186,7 +183,7 @@ TEST(Cooper, CurvedAxisSweepGoesAroundTheArc) {
   occ::Workbench wb;
   ring_sector_with_hole(wb);
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.2), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
@@ -213,7 +210,7 @@ TEST(Cooper, ASweepRoundMoreThanHalfATurnKeepsItsElementsRightSideOut) {
     occ::Workbench wb;
     wb.revolve("ring", {{5, 0, 0}, {10, 0, 0}, {5, 0, 5}}, {0, 0, 0}, {0, 0, 1}, turn);
     const geom::Model model = wb.build_model();
-    const auto registry = with_cooper();
+    const auto registry = builtin();
     const pipeline::MeshResult r =
         pipeline::mesh_model(model, cooper_job(0.5), *registry, kOptions);
     ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper") << turn;
@@ -240,7 +237,7 @@ TEST(Cooper, DifferentlySizedCapsWithSlopedSide) {
   sloped_plate(wb);
   const geom::Model model = wb.build_model();
   ASSERT_NEAR(model.volume(1).volume, 42.0, 1e-6);
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const pipeline::MeshResult r = pipeline::mesh_model(model, cooper_job(0.25), *registry, kOptions);
   ASSERT_EQ(r.plan.volumes.at(1).scheme, "cooper");
   const VolumePlan c = plan_test::plan_with(model, 1, *registry);
@@ -279,7 +276,7 @@ TEST(Cooper, RigidTransformGivesTheTransformedMesh) {
   io::MeshSettings settings = hinted({end_face});
   settings.size = 0.25;
   settings.volumes.front().scheme = "cooper";
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const pipeline::MeshResult r0 = pipeline::mesh_model(m0, settings, *registry, kOptions);
   const pipeline::MeshResult r1 = pipeline::mesh_model(m1, settings, *registry, kOptions);
   ASSERT_EQ(r0.plan.volumes.at(1).scheme, "cooper");
@@ -301,7 +298,7 @@ TEST(Cooper, PermutedFaceOrderGivesTheSameBarrelsAndMesh) {
   auto& shell = permuted.mutable_volume(1).shells.front();
   std::mt19937 rng(42);
   std::shuffle(shell.begin(), shell.end(), rng);
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const VolumePlan c0 = plan_test::plan_with(model, 1, *registry);
   const VolumePlan c1 = plan_test::plan_with(permuted, 1, *registry);
   ASSERT_TRUE(c0.ok && c1.ok);
@@ -318,7 +315,7 @@ TEST(Cooper, SphereIsRejectedWithAReasonAndNotMeshed) {
   occ::Workbench wb;
   wb.sphere("s", {0, 0, 0}, 1);
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const scheme::Applicability a =
       registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
   EXPECT_FALSE(a.ok);
@@ -339,7 +336,7 @@ TEST(Cooper, BrickWithBossesOnAdjacentSidesIsRejected) {
   wb.brick("side", {4, 1, 1}, {1, 1, 1});
   wb.fuse("part", {"b", "top", "side"});
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const scheme::Applicability a =
       registry->volume_scheme("cooper")->applicable(scheme::VolumeView{model, 1, nullptr});
   EXPECT_FALSE(a.ok);
@@ -357,7 +354,7 @@ TEST(Cooper, ApplicableBothWaysAndRoles) {
   occ::Workbench wb;
   plate_with_square_holes(wb);
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   const scheme::VolumeScheme* cooper = registry->volume_scheme("cooper");
   const scheme::VolumeView view{model, 1, nullptr};
   const scheme::Applicability a = cooper->applicable(view);
@@ -448,7 +445,7 @@ TEST(Cooper, DirectionHintChoosesTheCaps) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {1, 2, 3});
   const geom::Model model = wb.build_model();
-  const auto registry = with_cooper();
+  const auto registry = builtin();
   for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, -1)}) {
     const VolumePlan c = plan_test::plan_with(model, 1, *registry, SweepHints{{}, {}, d, {}});
     ASSERT_TRUE(c.ok) << c.why;

@@ -5,6 +5,7 @@
 // "tri" in wedge mode (test_cooper_wedge_many.cpp meshes them), and the
 // journal checks reject wedge or mixed + volume map.
 #include "support/mixed_mesh_check.h"
+#include "scheme_helpers.h"
 
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
@@ -45,11 +46,7 @@ io::MeshSettings wedge_settings(double size, const std::string& scheme = "cooper
   return s;
 }
 
-std::unique_ptr<scheme::Registry> registry_for(const io::MeshSettings& /*settings*/) {
-  auto r = std::make_unique<scheme::Registry>();
-  register_builtin_schemes(*r);
-  return r;
-}
+using testing::builtin;
 
 quality::WedgeNodes wedge_points(const mesh::MeshDB& db, const mesh::Wedge& w) {
   quality::WedgeNodes p;
@@ -178,7 +175,7 @@ TEST(CooperWedge, PlateWithThreeRoundHolesSweepsWedges) {
   wb.cut("plate", {"b", "h1", "h2", "h3"});
   const geom::Model model = wb.build_model();
   const io::MeshSettings settings = wedge_settings(0.3);
-  const auto registry = registry_for(settings);
+  const auto registry = builtin();
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
   expect_wedge_sweep(model, r, "plate_three_round_holes");
@@ -210,7 +207,7 @@ TEST(CooperWedge, PlateWithThreeSquareHolesHasTheExactVolume) {
   wb.prism("plate", {{0, 0, 0}, {10, 0, 0}, {10, 4, 0}, {0, 4, 0}}, holes, {0, 0, 2});
   const geom::Model model = wb.build_model();
   const io::MeshSettings settings = wedge_settings(0.5, "auto");
-  const auto registry = registry_for(settings);
+  const auto registry = builtin();
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
   expect_wedge_sweep(model, r, "plate_three_square_holes");
@@ -222,7 +219,7 @@ TEST(CooperWedge, AutoOnABrickPicksCooperNotTheVolumeMap) {
   wb.brick("b", {0, 0, 0}, {2, 1, 1});
   const geom::Model model = wb.build_model();
   const io::MeshSettings settings = wedge_settings(0.25, "auto");
-  const auto registry = registry_for(settings);
+  const auto registry = builtin();
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
@@ -296,7 +293,7 @@ TEST(CooperWedge, FlushStepsSweepInEveryElementKind) {
        {io::ElementKind::Hex, io::ElementKind::Wedge, io::ElementKind::Mixed}) {
     io::MeshSettings settings = wedge_settings(0.5, "cooper", kind);
     settings.volumes.front().direction = Vec3(0, 0, 1);  // along the steps: flush
-    const auto registry = registry_for(settings);
+    const auto registry = builtin();
     const scheme::Applicability a =
         registry->volume_scheme("cooper")->applicable({model, 1, nullptr});
     ASSERT_TRUE(a.ok) << a.why;
@@ -323,7 +320,7 @@ TEST(CooperWedge, JournalChecksRejectWedgeAndMixedWithTheVolumeMap) {
   const geom::Model model = wb.build_model();
   const auto expect_error = [&](const io::MeshSettings& settings, ErrorCode code,
                                 const std::string& text) {
-    const auto registry = registry_for(settings);
+    const auto registry = builtin();
     try {
       pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
       ADD_FAILURE() << "meshed: " << text;
