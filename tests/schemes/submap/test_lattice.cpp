@@ -204,6 +204,36 @@ TEST(SubmapLattice, ANotchedWallCutIntoBlocksKeepsItsRowsLevel) {
   }
 }
 
+// A hole's wall whose top is notched 0.16 deep by a slot, unrolled (the
+// plan => mesh campaign, seed 7 case 133): the seams are spaced on the
+// levels of the caps the wall passes (cooper's level_spacing.h: a blind
+// hole's floor at v = 19, five rows under the slot's floor at 30.16). Cut
+// into blocks at the notch's corners, the cut lines take the seam's spacing
+// and every block blends between its own sides, so each row stays on its
+// level; cut evenly, the row of v = 19 lay at 24.1 and the sweep inverted.
+TEST(SubmapLattice, CutLinesFollowAGradedSideBesideThem) {
+  const double level[] = {0, 4.75, 9.5, 14.25, 19, 30.16, 30.32};
+  const int n = 12, lo = 4, hi = 8;
+  std::vector<BoundaryPoint> loop;
+  int node = 0;
+  auto add = [&](int i, int j) { loop.push_back({{i, j}, node++, Vec2(i, level[j])}); };
+  for (int i = 0; i < n; ++i) add(i, 0);
+  for (int j = 0; j < 6; ++j) add(n, j);
+  for (int i = n; i > hi; --i) add(i, 6);
+  add(hi, 6);
+  for (int i = hi; i > lo; --i) add(i, 5);
+  add(lo, 5);
+  for (int i = lo; i > 0; --i) add(i, 6);
+  for (int j = 6; j > 0; --j) add(0, j);
+  const LatticeFill f = fill_lattice({loop}, FillInterior::Blocks);
+  ASSERT_TRUE(f.ok) << f.why;
+  EXPECT_GT(smallest_cell_area(f), 0.0);
+  for (size_t p = 0; p < f.ij.size(); ++p) {
+    EXPECT_NEAR(f.uv[p].x(), f.ij[p][0], 1e-9) << "point " << p;
+    EXPECT_NEAR(f.uv[p].y(), level[f.ij[p][1]], 1e-9) << "point " << p;
+  }
+}
+
 TEST(SubmapSmooth, SmoothingNeverInvertsAndKeepsTopology) {
   // A 4 x 4 grid on the plane z = 0 with a badly placed interior node.
   std::vector<Vec3> x;
