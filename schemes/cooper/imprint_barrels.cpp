@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 
@@ -88,6 +89,23 @@ Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower, cons
   return wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero();
 }
 
+// The barrel's depth along d at a point of its chart: the ribs' drops from
+// upper to lower end, weighted as in ring_offset().
+double ring_depth(const SweepState& s, size_t b, const Vec2& at) {
+  const BarrelState& st = s.barrels[b];
+  double sum = 0, wsum = 0;
+  for (const auto& rib : st.ribs) {
+    const Vec3& top = s.db.node(rib.front());
+    const double drop = (s.db.node(rib.back()) - top).dot(st.d);
+    const double d2 = (s.plane(b, top) - at).squaredNorm();
+    if (d2 <= 0) return drop;
+    const double w = 1.0 / (d2 * std::sqrt(d2));
+    sum += w * drop;
+    wsum += w;
+  }
+  return wsum > 0 ? sum / wsum : 0.0;
+}
+
 // Applies one barrel's imprint result; true when a subcap or rib changed.
 bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r,
            const ChartWarp& warp) {
@@ -110,9 +128,11 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
       }
     }
   }
+  std::map<int, int> rib_top;  // lower node -> upper node, result ids
+  for (const auto& [a, z] : r.ends.ribs) rib_top.emplace(z, a);
   std::map<int, int> remap;
   bool changed = false;
-  auto node = [&](int id) {
+  std::function<int(int)> node = [&](int id) {
     if (in.xy.count(id)) return id;
     const auto it = remap.find(id);
     if (it != remap.end()) return it->second;
@@ -130,6 +150,16 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(on->second)];
     if (!p.cap) x += ring_offset(s, b, p2, lower, x);
+    // A virtual lower node keeps below the top of its rib: the ring's heights
+    // rising beside a lug's cone lifted a pocket floor's rib end above the
+    // floor, and the barrel's hexes there turned inside out.
+    const auto top = rib_top.find(id);
+    if (!p.cap && lower && top != rib_top.end()) {
+      const Vec3 up = s.pos(node(top->second));
+      const double least = 0.5 * ring_depth(s, b, p2);
+      const double drop = (x - up).dot(st.d);
+      if (least > 0 && drop < least) x += (least - drop) * st.d;
+    }
     int n;
     if (p.cap) {
       x = s.model.surface(p.cap).geometry->project(x).point;

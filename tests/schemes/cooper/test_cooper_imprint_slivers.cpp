@@ -1,6 +1,7 @@
 // Imprinting where loops of a barrel's two ends come within a sliver of
-// each other (Blacker 1996, sec. 5): parts from the plan => mesh campaign
-// that planned and then failed while imprinting at every size. Each meshes
+// each other (Blacker 1996, sec. 5), or where the new nodes of a virtual
+// cap must keep between the barrel's ends: parts from the plan => mesh
+// campaign that planned and then failed at every size. Each meshes
 // all-hex, conformal, with no inverted element, the volume within 1 %, and
 // the same mesh after a rigid motion.
 #include "support/hex_mesh_check.h"
@@ -99,6 +100,28 @@ void foot_just_inside_boss(occ::Workbench& wb) {
 
 TEST(CooperImprintSlivers, AFootJustInsideABossIsImprintedAsAHole) {
   expect_meshes("foot_just_inside_boss", foot_just_inside_boss, {0.1824, 0.0912}, 119);
+}
+
+// A lug with a conical underside on a block's end wall, two pockets cut
+// into the top beside it (plan => mesh campaign seed 7 case 66). The virtual
+// cap under the first pocket's floor continues the cone's rim, which rises
+// to 13.2 on the wall; weighted by distance, the rib ends under the floor's
+// corner (z = 11.63) came out above it and the hex between turned inside
+// out at every size from 4.1 down to 1.0. A new node of a virtual lower cap
+// now keeps at least half the barrel's local depth below its rib's top.
+void lug_cone_beside_pockets(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {47.64, 51.84, 23.97});
+  wb.brick("boss", {32.84, 20.95, 23.97}, {10.24, 19.62, 16.5});
+  wb.brick("pocket", {27.09, 29.13, 11.63}, {9.42, 13.8, 36.31});
+  wb.brick("slot", {23.39, 14.73, 10.31}, {13.38, 6.26, 37.63});
+  wb.cylinder("lug", {47.64, 24.6, 13.21}, {0, 0, 1}, 12.4, 10.76);
+  wb.cone("under", {47.64, 24.6, 8.45}, {0, 0, 1}, 2.48, 12.4, 4.76);
+  wb.fuse("body", {"block", "boss", "lug", "under"});
+  wb.cut("part", {"body", "pocket", "slot"});
+}
+
+TEST(CooperImprintSlivers, AVirtualCapBesideALugsConeKeepsBelowAPocketFloor) {
+  expect_meshes("lug_cone_beside_pockets", lug_cone_beside_pockets, {1.3617, 1.02125}, 120);
 }
 
 }  // namespace
