@@ -1,7 +1,7 @@
-// Imprinting where loops of a barrel's two ends come within a sliver of
-// each other (Blacker 1996, sec. 5), or where the new nodes of a virtual
-// cap must keep between the barrel's ends: parts from the plan => mesh
-// campaign that planned and then failed at every size. Each meshes
+// Parts from the plan => mesh campaign that planned and then failed at
+// every size: imprinting where loops of a barrel's two ends come within a
+// sliver of each other (Blacker 1996, sec. 5), the new nodes of a virtual
+// cap between the barrel's ends, a side's columns round a hole. Each meshes
 // all-hex, conformal, with no inverted element, the volume within 1 %, and
 // the same mesh after a rigid motion.
 #include "support/hex_mesh_check.h"
@@ -64,7 +64,7 @@ void expect_meshes(const char* name, void (*build)(occ::Workbench&),
     EXPECT_EQ(r.mesh.wedge_count(), 0u) << name;
     EXPECT_NEAR(s.volume, solid, 0.01 * solid) << name << " at " << size;
     std::printf(
-        "[imprint slivers] %s, size %.4g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n",
+        "[campaign part] %s, size %.4g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n",
         name, size, s.hexes, s.min_sj, 100 * (s.volume - solid) / solid);
   }
   const auto motion = testing::RigidMotion::random(seed);
@@ -122,6 +122,26 @@ void lug_cone_beside_pockets(occ::Workbench& wb) {
 
 TEST(CooperImprintSlivers, AVirtualCapBesideALugsConeKeepsBelowAPocketFloor) {
   expect_meshes("lug_cone_beside_pockets", lug_cone_beside_pockets, {1.3617, 1.02125}, 120);
+}
+
+// A through hole whose wall a slot notches 6 deep from the top, two feet
+// below (campaign seed 3 case 121). The notch's arcs, graded towards the
+// slot's thin wall, hold 14 of the wall's 22 columns; the bottom circle,
+// evenly spaced, leaned those columns 65 degrees round the hole and a hex
+// of the barrel beside it inverted at every size. The closed bottom rim
+// now follows the notch's nodes (column_spacing.cpp).
+void hole_notched_by_slot(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {25.26, 47.25, 12.59});
+  wb.cylinder("foot0", {13.06, 14.42, -6.89}, {0, 0, 1}, 3.15, 6.89);
+  wb.cylinder("foot1", {14.29, 18.37, -5.07}, {0, 0, 1}, 3.46, 5.07);
+  wb.cylinder("hole", {14.77, 36.35, -12.59}, {0, 0, 1}, 5.83, 37.77);
+  wb.brick("slot", {16.24, 25.12, 6.54}, {4.46, 14.44, 18.64});
+  wb.fuse("body", {"block", "foot0", "foot1"});
+  wb.cut("part", {"body", "hole", "slot"});
+}
+
+TEST(CooperSideColumns, ARoundRimFollowsTheGradedArcsOfItsNotchedWall) {
+  expect_meshes("hole_notched_by_slot", hole_notched_by_slot, {2.819}, 121);
 }
 
 }  // namespace
