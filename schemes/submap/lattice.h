@@ -51,8 +51,9 @@ struct LatticeFill {
 enum class FillInterior {
   Blend,   ///< every point blends its row and its column
   Blocks,  ///< the boundary edges at reentrant corners are extended first
-           ///< (linear along each cut line), cutting the region into blocks
-           ///< whose points then blend between their block's sides only
+           ///< (each cut line spaced as the nearest boundary chain beside it
+           ///< over the same span, else evenly), cutting the region into
+           ///< blocks whose points then blend between their block's sides only
 };
 
 /// Fills the region bounded by the loops (outer loop counter-clockwise in
