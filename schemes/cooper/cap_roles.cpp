@@ -121,11 +121,21 @@ double distance(const Footprint& f, const P2& p) {
 // Whether the segment ab runs inside the footprint deeper than `tol`: its
 // ends, and the middles of its pieces between crossings of the footprint's
 // boundary (a long edge can cross a narrow cap between its two ends).
-bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol) {
+// `slack` (the segment's own sagitta) is allowed on top, except for a piece
+// that crosses the cap from one side to the opposite one, steeply (the
+// boundary edges it crosses run against each other): a chord sampling a
+// curve of the cap's boundary runs along it, not across it. A foot's circle crossed a
+// pocket floor's leg 0.15 wide, less than twice its chords' sagitta (0.085),
+// and the plan took the floor as uncut (campaign seed 7 case 50).
+bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol, double slack) {
   Eigen::AlignedBox2d seg(a);
   seg.extend(b);
   if (!f.box.intersects(seg)) return false;
-  std::vector<double> ts{0.0, 1.0};
+  struct Crossing {
+    double t;
+    P2 along;  // the crossed boundary edge, unit
+  };
+  std::vector<Crossing> ts{{0.0, P2::Zero()}, {1.0, P2::Zero()}};
   const P2 ab = b - a;
   for (const auto& poly : f.loops) {
     for (size_t i = 0; i < poly.size(); ++i) {
@@ -136,17 +146,24 @@ bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol) {
       const P2 ap = p - a;
       const double t = (ap.x() * pq.y() - ap.y() * pq.x()) / den;
       const double s = (ap.x() * ab.y() - ap.y() * ab.x()) / den;
-      if (t > 0 && t < 1 && s >= 0 && s <= 1) ts.push_back(t);
+      if (t > 0 && t < 1 && s >= 0 && s <= 1) ts.push_back({t, pq.normalized()});
     }
   }
-  std::sort(ts.begin(), ts.end());
-  auto deep = [&](double t) {
+  std::sort(ts.begin(), ts.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+  auto deep = [&](double t, double allowed) {
     const P2 x = a + t * ab;
-    return inside(f, x) && distance(f, x) > tol;
+    return inside(f, x) && distance(f, x) > allowed;
   };
-  if (deep(0.0)) return true;
+  if (deep(0.0, tol + slack)) return true;
+  // Steeper than two samplings of one curve can cross (chord_sagittas()'s 25
+  // degrees): a chord of a boss's rim crossed the corner of its overhang's
+  // underside, bounded by the same circle, from one edge to the other.
+  const P2 dir = ab.normalized();
+  auto steep = [&](const P2& e) { return std::abs(dir.x() * e.y() - dir.y() * e.x()) > 0.42; };
   for (size_t k = 0; k + 1 < ts.size(); ++k) {
-    if (deep(0.5 * (ts[k] + ts[k + 1]))) return true;
+    const bool across =
+        ts[k].along.dot(ts[k + 1].along) < -0.5 && steep(ts[k].along) && steep(ts[k + 1].along);
+    if (deep(0.5 * (ts[k].t + ts[k + 1].t), across ? tol : tol + slack)) return true;
   }
   return false;
 }
@@ -178,8 +195,8 @@ std::vector<int> cut_caps(const VolumeFacts& facts, const std::vector<int>& caps
       for (size_t l = 0; l < other.loops.size() && !cut; ++l) {
         const auto& loop = other.loops[l];
         for (size_t k = 0; k < loop.size() && !cut; ++k)
-          cut = reaches_inside(mine, loop[k], loop[(k + 1) % loop.size()],
-                               tol + other.sagittas[l][k]);
+          cut =
+              reaches_inside(mine, loop[k], loop[(k + 1) % loop.size()], tol, other.sagittas[l][k]);
       }
     }
     if (cut) out.push_back(c);

@@ -59,6 +59,26 @@ struct FactsBuilder {
     return loop;
   }
 
+  // A polygon of straight curves through `corners` at height z, in their
+  // order; 16 segments per curve, as gather_facts().
+  std::vector<UseFact> polygon(const std::vector<std::pair<double, double>>& corners, double z) {
+    const int first = next_vertex;
+    for (const auto& [x, y] : corners) facts.vertices[next_vertex++] = Vec3(x, y, z);
+    std::vector<UseFact> loop;
+    for (size_t k = 0; k < corners.size(); ++k) {
+      CurveFact c;
+      c.id = next_curve++;
+      c.start = first + static_cast<int>(k);
+      c.end = first + static_cast<int>((k + 1) % corners.size());
+      const Vec3 a = facts.vertices[c.start], e = facts.vertices[c.end];
+      c.length = (e - a).norm();
+      for (int s = 0; s <= 16; ++s) c.samples.push_back(a + (e - a) * (s / 16.0));
+      facts.curves[c.id] = c;
+      loop.push_back({c.id, true});
+    }
+    return loop;
+  }
+
   void face(int id, std::vector<std::vector<UseFact>> loops, const Vec3& normal) {
     FaceFact f;
     f.id = id;
@@ -96,6 +116,19 @@ TEST(CapRoles, ATopSmallerThanTheRimStillCutsTheUnderside) {
   // A top of radius 7.3 reaches 0.2 into the annulus: a real imprint, far
   // deeper than the 0.036 a chord of the rim can fall inside it.
   EXPECT_TRUE(cut(bolt_head(7.3, {0, 30, 180}), 1));
+}
+
+// A pocket floor's leg 0.15 wide (x 13.78-13.93) and a foot's circle of
+// radius 4.44 below it (campaign seed 7 case 50): the circle crosses the
+// leg, so the floor is cut, though the leg is narrower than twice the
+// circle's chord sagitta (0.085) that a sampling of one rim may differ by.
+TEST(CapRoles, ACircleCrossingANarrowLegCutsTheCap) {
+  FactsBuilder b;
+  b.face(1, {b.polygon({{13.78, 5.7}, {13.93, 5.7}, {13.93, 8.32}, {13.78, 8.32}}, 0)},
+         Vec3(0, 0, 1));
+  b.face(2, {b.circle(17.63, 4.76, 4.44, -5, {0}, true)}, Vec3(0, 0, -1));
+  const std::vector<int> c = cut_caps(b.facts, {1, 2}, kMinusZ, 1e-4);
+  EXPECT_NE(std::find(c.begin(), c.end(), 1), c.end());
 }
 
 }  // namespace
