@@ -124,9 +124,10 @@ double distance(const Footprint& f, const P2& p) {
 // `slack` (the segment's own sagitta) is allowed on top, except for a piece
 // that crosses the cap from one side to the opposite one, steeply (the
 // boundary edges it crosses run against each other): a chord sampling a
-// curve of the cap's boundary runs along it, not across it. A foot's circle crossed a
-// pocket floor's leg 0.15 wide, less than twice its chords' sagitta (0.085),
-// and the plan took the floor as uncut (campaign seed 7 case 50).
+// curve of the cap's boundary runs along it, not across it. A foot's
+// circle crossed a pocket floor's leg 0.15 wide, less than twice its
+// chords' sagitta (0.085), and the plan took the floor as uncut (campaign
+// seed 7 case 50).
 bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol, double slack) {
   Eigen::AlignedBox2d seg(a);
   seg.extend(b);
