@@ -67,43 +67,36 @@ BarrelEnds ends_of(const SweepState& s, size_t b, const ChartWarp& warp) {
 // through the map of the upper end's mean plane, a node under a curved
 // upper end (a dome's slice beside a slot) inherited the map's fit of that
 // curve and fell up to 0.9 under a flat lower ring, inverting a hex below.
-Vec3 ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower, const Vec3& base) {
+// With the offset, the barrel's depth along d there: the ribs' drops from
+// upper to lower end, weighted alike.
+struct RingBlend {
+  Vec3 offset = Vec3::Zero();
+  double depth = 0;
+};
+
+RingBlend ring_offset(const SweepState& s, size_t b, const Vec2& at, bool lower, const Vec3& base) {
   const BarrelState& st = s.barrels[b];
-  Vec3 sum = Vec3::Zero();
+  RingBlend sum;
   double wsum = 0;
   for (const auto& rib : st.ribs) {
     const Vec3& top = s.db.node(rib.front());
+    const Vec3& bottom = s.db.node(rib.back());
     const Vec2 q = s.plane(b, top);
     Vec3 offset = (top.dot(st.d) - st.level) * st.d;
     if (lower) {
-      const Vec3& bottom = s.db.node(rib.back());
       offset = bottom - st.to_lower.apply(top);
       offset += ((bottom - base).dot(st.d) - offset.dot(st.d)) * st.d;
     }
+    const double drop = (bottom - top).dot(st.d);
     const double d2 = (q - at).squaredNorm();
-    if (d2 <= 0) return offset;
+    if (d2 <= 0) return {offset, drop};
     const double w = 1.0 / (d2 * std::sqrt(d2));
-    sum += w * offset;
+    sum.offset += w * offset;
+    sum.depth += w * drop;
     wsum += w;
   }
-  return wsum > 0 ? Vec3(sum / wsum) : Vec3::Zero();
-}
-
-// The barrel's depth along d at a point of its chart: the ribs' drops from
-// upper to lower end, weighted as in ring_offset().
-double ring_depth(const SweepState& s, size_t b, const Vec2& at) {
-  const BarrelState& st = s.barrels[b];
-  double sum = 0, wsum = 0;
-  for (const auto& rib : st.ribs) {
-    const Vec3& top = s.db.node(rib.front());
-    const double drop = (s.db.node(rib.back()) - top).dot(st.d);
-    const double d2 = (s.plane(b, top) - at).squaredNorm();
-    if (d2 <= 0) return drop;
-    const double w = 1.0 / (d2 * std::sqrt(d2));
-    sum += w * drop;
-    wsum += w;
-  }
-  return wsum > 0 ? sum / wsum : 0.0;
+  if (wsum > 0) return {sum.offset / wsum, sum.depth / wsum};
+  return {};
 }
 
 // Applies one barrel's imprint result; true when a subcap or rib changed.
@@ -149,16 +142,19 @@ bool apply(SweepState& s, size_t b, const BarrelEnds& in, const ImprintResult& r
     Vec3 x = st.u * q.x() + st.v * q.y() + st.level * st.d;
     if (lower) x = st.to_lower.apply(x);
     const Piece& p = s.pieces[static_cast<size_t>(on->second)];
-    if (!p.cap) x += ring_offset(s, b, p2, lower, x);
-    // A virtual lower node keeps below the top of its rib: the ring's heights
-    // rising beside a lug's cone lifted a pocket floor's rib end above the
-    // floor, and the barrel's hexes there turned inside out.
-    const auto top = rib_top.find(id);
-    if (!p.cap && lower && top != rib_top.end()) {
-      const Vec3 up = s.pos(node(top->second));
-      const double least = 0.5 * ring_depth(s, b, p2);
-      const double drop = (x - up).dot(st.d);
-      if (least > 0 && drop < least) x += (least - drop) * st.d;
+    if (!p.cap) {
+      const RingBlend ring = ring_offset(s, b, p2, lower, x);
+      x += ring.offset;
+      // A virtual lower node keeps half the local depth below the top of its
+      // rib: the ring's heights rising beside a lug's cone lifted a pocket
+      // floor's rib end above the floor, and the hexes there turned inside out.
+      const auto top = rib_top.find(id);
+      if (lower && top != rib_top.end()) {
+        const Vec3 up = s.pos(node(top->second));
+        const double least = 0.5 * ring.depth;
+        const double drop = (x - up).dot(st.d);
+        if (least > 0 && drop < least) x += (least - drop) * st.d;
+      }
     }
     int n;
     if (p.cap) {
