@@ -11,6 +11,7 @@
 #include "schemes/cooper/residual_field.h"
 #include "schemes/cooper/smooth_cap.h"
 #include "schemes/cooper/sweep_state.h"
+#include "schemes/cooper/untangle_cap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,7 +175,10 @@ void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
   if (q_after >= std::min(0.5, q_before)) return;
   const auto& g = to.cap ? s.model.surface(to.cap).geometry : nullptr;
   auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
-  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60)) return;
+  // A fold that guarded smoothing cannot open (each single move makes a
+  // corner worse first) is untangled against the source's corners first.
+  const bool untangled = q_after <= 0 && untangle_cap(after, before, q, t, movable, st.d, onto);
+  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60) && !untangled) return;
   for (size_t i = 0; i < node.size(); ++i) {
     if (movable[i]) s.out.coords[static_cast<size_t>(image.at(node[i]))] = after[i];
   }

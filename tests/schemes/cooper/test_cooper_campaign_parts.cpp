@@ -1,9 +1,10 @@
 // Parts from the plan => mesh campaign that planned and then failed at
-// every size: imprinting where loops of a barrel's two ends come within a
-// sliver of each other (Blacker 1996, sec. 5), the new nodes of a virtual
-// cap between the barrel's ends, a side's columns round a hole. Each meshes
-// all-hex, conformal, with no inverted element, the volume within 1 %, and
-// the same mesh after a rigid motion.
+// their own size (most at every size): imprinting where loops of a barrel's
+// two ends come within a sliver of each other (Blacker 1996, sec. 5), the
+// new nodes of a virtual cap between the barrel's ends, a side's columns
+// round a hole, a projected subcap folded. Each meshes all-hex, conformal,
+// with no inverted element, the volume within 1 %, and the same mesh after
+// a rigid motion.
 #include "support/hex_mesh_check.h"
 #include "support/rigid_motion.h"
 
@@ -142,6 +143,27 @@ void hole_notched_by_slot(occ::Workbench& wb) {
 
 TEST(CooperSideColumns, ARoundRimFollowsTheGradedArcsOfItsNotchedWall) {
   expect_meshes("hole_notched_by_slot", hole_notched_by_slot, {2.819}, 121);
+}
+
+// A lug with a conical underside on a block's end wall, a pocket through
+// the top beside it (campaign seed 4 case 180). The top's subcap, projected
+// up from its cap stack's seed, folded (worst corner sine -0.998) where
+// the lug's rim and the pocket's differ in shape between the ends; guarded
+// smoothing cannot open a fold whose every single move first worsens a
+// corner, and a hex under it inverted at size 6.632. Untangled against the
+// seed's corners (untangle_cap.cpp) the top's worst corner sine is 0.24.
+void lug_cone_beside_through_pocket(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {41.32, 44.64, 32.05});
+  wb.cylinder("lug", {41.32, 23.61, 19.19}, {0, 0, 1}, 6.71, 12.86);
+  wb.cone("under", {41.32, 23.61, 14.21}, {0, 0, 1}, 2.11, 6.71, 4.98);
+  wb.brick("pocket", {28.38, 1.9, 13.17}, {9.96, 12.36, 50.93});
+  wb.fuse("body", {"block", "lug", "under"});
+  wb.cut("part", {"body", "pocket"});
+}
+
+TEST(CooperCapStacks, AFoldedProjectedSubcapIsUntangled) {
+  expect_meshes("lug_cone_beside_through_pocket", lug_cone_beside_through_pocket, {6.632, 3.316},
+                180);
 }
 
 }  // namespace
