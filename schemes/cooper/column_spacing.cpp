@@ -123,7 +123,15 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       period = period == 0 || period == n ? n : -1;
     }
     if (period < 0) continue;
-    const auto same_column = [period](long a, long b) {
+    // A side closed by a seam (a hole's wall whose rims are cut into arcs
+    // by other features) passes the seam twice: its period is how far the
+    // walk has gone round when it meets the seam's vertex again.
+    std::map<int, int> uses;
+    for (const UseFact& u : loop) ++uses[u.curve];
+    const bool seamed = std::any_of(uses.begin(), uses.end(), [&](const auto& cu) {
+      return cu.second == 2 && !lattice.along.count(cu.first);
+    });
+    const auto same_column = [&period](long a, long b) {
       return period > 0 ? (a - b) % period == 0 : a == b;
     };
     std::map<int, long> column;                      // vertex -> i
@@ -144,6 +152,7 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
       ok = ok && counts.count(u.curve) && is_along == (dir % 2 == 0);
       if (!ok) break;
       const auto [it, added] = column.emplace(from, i);
+      if (!added && period == 0 && seamed && it->second != i) period = std::abs(it->second - i);
       ok = ok && (added || same_column(it->second, i));
       if (is_along) {
         const long sign = dir == 0 ? 1 : -1, n = counts.at(u.curve);

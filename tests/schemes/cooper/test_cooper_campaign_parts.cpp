@@ -166,5 +166,27 @@ TEST(CooperCapStacks, AFoldedProjectedSubcapIsUntangled) {
                 180);
 }
 
+// A pocket from the top, a hole from the bottom into its floor and a
+// blind hole beside it, the two holes overlapping (campaign seed 7 case
+// 46). The larger hole's wall is one face closed by its seam, its rims cut
+// into arcs at four levels by the pocket's floor and wall and the blind
+// hole; its top arc is graded towards the pocket's wall 0.04 away. The
+// walk round the wall met the seam's vertex a whole turn on and gave up,
+// so no rim followed the other's vertices, the columns leaned and a hex
+// inverted at every size from 11.3 down to 0.7. The walk now takes the
+// seam's turn as the columns' period.
+void hole_into_pocket_floor_beside_blind_hole(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {29.17, 25.58, 28.02});
+  wb.brick("pocket", {7.73, 12.81, 15.62}, {10.9, 5.6, 40.42});
+  wb.cylinder("blind", {9.26, 18.12, -28.02}, {0, 0, 1}, 1.78, 42.98);
+  wb.cylinder("hole", {10.81, 16.86, -28.02}, {0, 0, 1}, 3.04, 47.43);
+  wb.cut("part", {"block", "pocket", "blind", "hole"});
+}
+
+TEST(CooperSideColumns, AWallClosedByItsSeamHasPeriodicColumns) {
+  expect_meshes("hole_into_pocket_floor_beside_blind_hole",
+                hole_into_pocket_floor_beside_blind_hole, {3.0, 1.5}, 46);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
