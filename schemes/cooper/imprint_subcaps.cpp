@@ -618,17 +618,22 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
   // Seams that put the path onto a hole of b at two nodes or more (a
   // boss's rim 0.07 of an element outside a foot's) would cut through
   // the hole: projected without seams, the path passes beside it.
+  bool seamed = true;
   if (seams_onto_holes(path, caps(1 - e)[bi]) >= 2) {
     roll_back(e, fresh, undo);
     path.clear();
     for (int v : gap) path.push_back(project(e, v, a.loops.front(), false));
+    seamed = false;
   }
   {
     Loop chain{x};
     chain.insert(chain.end(), path.begin(), path.end());
     chain.push_back(y);
     const Subcap& b = caps(1 - e)[bi];
-    keep_clear(chain, false, std::vector<Loop>(b.loops.begin() + 1, b.loops.end()), undo.next_node);
+    const bool clear = keep_clear(
+        chain, false, std::vector<Loop>(b.loops.begin() + 1, b.loops.end()), undo.next_node);
+    if (!clear && gap_through_hole(e, a.loops.front(), gap, path, seamed, x, y, bi, fresh, undo))
+      return true;
   }
   // Seamed onto b's boundary throughout: no split, the ribs are the progress.
   bool on_loop = true;

@@ -107,6 +107,14 @@ class Imprinter {
   // are projected, the piece between them leaves bi and the two holes join.
   bool join_holes(int e, const Subcap& a, int r0, const Loop& path, int r1, size_t bi);
   bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
+  // sec. 5.2-5.3: the image x -> path -> y of a gap (path[j] the image of
+  // gap[j], projected with seams or not) crosses one hole of subcap bi of
+  // end 1 - e twice: the crossings are seamed onto nodes of the hole, bi is
+  // split along path - hole arc - path and the gap's middle stays a gap
+  // (imprint_gap_through_hole.cpp). False, nothing changed, otherwise.
+  struct Undo;
+  bool gap_through_hole(int e, const Loop& around, const Loop& gap, const Loop& path, bool seamed,
+                        int x, int y, size_t bi, const Loop& fresh, const Undo& undo);
   // The ribs a gap's projection made (from the nodes in `fresh`, unribbed
   // before it), taken back when it split nothing.
   struct Undo {

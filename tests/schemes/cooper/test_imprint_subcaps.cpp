@@ -203,6 +203,29 @@ TEST(ImprintSubcaps, AFootprintBetweenTwoHolesIsSubtractedWithBothGaps) {
   EXPECT_EQ(r.ends.lower.size(), 4u);  // nothing new
 }
 
+// A blind hole's floor reaching the wall (upper end) across a boss's
+// footprint (lower end: a hole of the top's remainder and a subcap of its
+// own), crossing the footprint's edges between their nodes (campaign seed 6
+// case 61). Split as if the footprint were not there, the remainder handed
+// the whole footprint to one piece although the floor's image runs through
+// it; no step applied after that. The crossings are now seamed onto the
+// footprint's nodes and the remainder is split along path - footprint arc
+// - path.
+TEST(ImprintSubcaps, AGapThroughAnOpposingHoleSplitsBothSubcaps) {
+  Hand h;
+  h.exterior(rect(0, 0, 8, 6));
+  h.subcap(0, 1, {rect(2, 2, 5, 6)});  // the floor, on the wall y = 6
+  h.subcap(0, 2, {{{0, 0}, {8, 0}, {8, 6}, {5, 6}, {5, 2}, {2, 2}, {2, 6}, {0, 6}}});
+  h.subcap(1, 3, {rect(0, 0, 8, 6), hole(4.5, 1.5, 7.5, 4.5)});  // the top's remainder
+  h.subcap(1, 4, {rect(4.5, 1.5, 7.5, 4.5)});                    // the footprint
+  const ImprintResult r = imprint_subcaps(h.ends);
+  // Each crossing seamed onto a node half an edge away moves a matched
+  // piece's boundary by a triangle of area 1/4 at most.
+  expect_partition(r, 48, 0.51);
+  EXPECT_GE(count(r, ImprintStep::Intersect), 1u);
+  EXPECT_GE(r.matches.size(), 4u);  // floor and remainder, each in and out of the footprint
+}
+
 // Stepped L (sec. 5.3): the upper step a straddles the boundary x = 2
 // between the lower regions b and c.
 TEST(ImprintSubcaps, IntersectionOfAStepStraddlingTwoLowerRegions) {
