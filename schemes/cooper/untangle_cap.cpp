@@ -2,6 +2,8 @@
 
 #include "schemes/cooper/smooth_cap.h"
 
+#include "framework/mesh/corner_sine.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -94,6 +96,84 @@ Vec2 minimise(const std::vector<Corner>& corners, const std::vector<int>& mine,
   return x;
 }
 
+// After the folds are open: each movable node of a poor face, by compass
+// search (steps from a quarter of its mean edge, halved) along the
+// directions to and from its neighbours -- so that a rigidly moved cap
+// moves the same way -- to where the worst corner sine of its faces is
+// largest (the untangling leaves corners just over their floors).
+void raise_worst_corners(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
+                         const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
+                         const mesh::Vec3& w,
+                         const std::function<mesh::Vec3(const mesh::Vec3&)>& project) {
+  constexpr double kPoor = 0.3;
+  const size_t n = points.size();
+  std::vector<std::vector<int>> around_q(n), around_t(n), next(n);
+  auto edges_of = [&](const auto& face) {
+    const size_t k = face.size();
+    for (size_t i = 0; i < k; ++i) {
+      next[static_cast<size_t>(face[i])].push_back(face[(i + 1) % k]);
+      next[static_cast<size_t>(face[i])].push_back(face[(i + k - 1) % k]);
+    }
+  };
+  for (size_t f = 0; f < quads.size(); ++f) {
+    for (int v : quads[f]) around_q[static_cast<size_t>(v)].push_back(static_cast<int>(f));
+    edges_of(quads[f]);
+  }
+  for (size_t f = 0; f < tris.size(); ++f) {
+    for (int v : tris[f]) around_t[static_cast<size_t>(v)].push_back(static_cast<int>(f));
+    edges_of(tris[f]);
+  }
+  auto worst_at = [&](size_t v) {
+    double m = 1.0;
+    for (int f : around_q[v])
+      m = std::min(m, mesh::min_corner_sine(points, quads[static_cast<size_t>(f)].data(), 4, w));
+    for (int f : around_t[v])
+      m = std::min(m, mesh::min_corner_sine(points, tris[static_cast<size_t>(f)].data(), 3, w));
+    return m;
+  };
+  for (int sweep = 0; sweep < 20; ++sweep) {
+    bool moved = false;
+    for (size_t v = 0; v < n; ++v) {
+      if (!movable[v] || next[v].empty()) continue;
+      double best = worst_at(v);
+      if (best >= kPoor) continue;
+      // Unit directions to the neighbours, in the plane, and back.
+      std::vector<mesh::Vec3> dirs;
+      double edge = 0;
+      for (int u : next[v]) {
+        mesh::Vec3 d = points[static_cast<size_t>(u)] - points[v];
+        d -= d.dot(w) * w;
+        const double l = d.norm();
+        edge += l;
+        if (l <= 0) continue;
+        dirs.push_back(d / l);
+        dirs.push_back(-d / l);
+      }
+      double step = 0.25 * edge / static_cast<double>(next[v].size());
+      for (int level = 0; level < 8; ++level, step *= 0.5) {
+        bool improved = true;
+        for (int guard = 0; improved && guard < 10; ++guard) {
+          improved = false;
+          for (const mesh::Vec3& d : dirs) {
+            const mesh::Vec3 old = points[v];
+            const mesh::Vec3 x = old + step * d;
+            points[v] = project ? project(x) : x;
+            const double q = worst_at(v);
+            if (q > best + 1e-12) {
+              best = q;
+              improved = true;
+              moved = true;
+            } else {
+              points[v] = old;
+            }
+          }
+        }
+      }
+    }
+    if (!moved) break;
+  }
+}
+
 }  // namespace
 
 bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>& source,
@@ -163,6 +243,7 @@ bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>
     }
     if (worst() > 0) break;
   }
+  if (worst() > 0) raise_worst_corners(points, quads, tris, movable, w, project);
   if (worst() > before) return true;
   points = start;
   return false;

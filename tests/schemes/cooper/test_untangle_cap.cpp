@@ -80,7 +80,8 @@ TEST(UntangleCap, BringsNodesLeftOutsideIntoAShrunkBoundary) {
   ASSERT_LT(folded_worst(target, quads, down), 0.0);
   const auto plane = [](const Vec3& x) { return Vec3(x.x(), x.y(), 5.0); };
   ASSERT_TRUE(untangle_cap(target, source.points, quads, {}, source.movable, down, plane));
-  EXPECT_GT(folded_worst(target, quads, down), 0.0);
+  // Untangled, then the worst corners raised (0.16 without that).
+  EXPECT_GT(folded_worst(target, quads, down), 0.25);
   for (size_t i = 0; i < target.size(); ++i) {
     EXPECT_EQ(target[i].z(), 5.0);
     if (source.movable[i]) {
@@ -132,7 +133,8 @@ TEST(UntangleCap, OpensAThinCurvedStripLeftFolded) {
       << "guarded smoothing alone opens this fold; the test no longer shows the untangler's use";
   ASSERT_TRUE(untangle_cap(target.points, source.points, source.quads, {}, source.movable,
                            Vec3::UnitZ(), flat));
-  EXPECT_GT(folded_worst(target.points, source.quads, Vec3::UnitZ()), 0.0);
+  // Untangled, then the worst corners raised (0.08 without that).
+  EXPECT_GT(folded_worst(target.points, source.quads, Vec3::UnitZ()), 0.5);
 }
 
 TEST(UntangleCap, LeavesAMeshWithoutFoldsAlone) {
