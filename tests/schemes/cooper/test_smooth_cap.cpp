@@ -1,6 +1,7 @@
 // Smoothing the subcaps of one exterior face (Blacker 1996, sec. 6.1):
 // interior nodes move, fixed ones do not, quality never drops.
 #include "schemes/cooper/smooth_cap.h"
+#include "unit_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -10,24 +11,8 @@ namespace {
 using mesh::Vec3;
 
 // A 4 x 4 grid of unit quads in z = 0 (counter-clockwise about +z).
-struct Grid {
-  std::vector<Vec3> points;
-  std::vector<mesh::Quad> quads;
-  std::vector<char> movable;
-  Grid() {
-    for (int j = 0; j <= 4; ++j) {
-      for (int i = 0; i <= 4; ++i) {
-        points.emplace_back(i, j, 0);
-        movable.push_back(i > 0 && i < 4 && j > 0 && j < 4 ? 1 : 0);
-      }
-    }
-    for (int j = 0; j < 4; ++j) {
-      for (int i = 0; i < 4; ++i) {
-        const int a = j * 5 + i;
-        quads.push_back({a, a + 1, a + 6, a + 5});
-      }
-    }
-  }
+struct Grid : test_meshes::UnitGrid {
+  Grid() : UnitGrid(4) {}
 };
 
 TEST(SmoothCap, ImprovesADistortedGridAndKeepsTheBoundary) {

@@ -3,6 +3,7 @@
 // counter-clockwise about, and a mesh without folds is left alone.
 #include "schemes/cooper/smooth_cap.h"
 #include "schemes/cooper/untangle_cap.h"
+#include "unit_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -13,26 +14,7 @@ namespace {
 
 using mesh::Vec3;
 
-// An n x n grid of unit quads in z = 0, counter-clockwise about +z.
-struct UnitGrid {
-  std::vector<Vec3> points;
-  std::vector<mesh::Quad> quads;
-  std::vector<char> movable;
-  explicit UnitGrid(int n) {
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i) {
-        points.emplace_back(i, j, 0);
-        movable.push_back(i > 0 && i < n && j > 0 && j < n ? 1 : 0);
-      }
-    }
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        const int a = j * (n + 1) + i;
-        quads.push_back({a, a + 1, a + n + 2, a + n + 1});
-      }
-    }
-  }
-};
+using test_meshes::UnitGrid;
 
 double folded_worst(const std::vector<Vec3>& p, const std::vector<mesh::Quad>& q,
                     const Vec3& normal) {
