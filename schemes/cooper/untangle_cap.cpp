@@ -131,9 +131,12 @@ void raise_worst_corners(std::vector<mesh::Vec3>& points, const std::vector<mesh
       m = std::min(m, mesh::min_corner_sine(points, tris[static_cast<size_t>(f)].data(), 3, w));
     return m;
   };
-  for (int sweep = 0; sweep < 20; ++sweep) {
+  // A work budget: a cap poor everywhere costs at most this many trial
+  // positions per node.
+  long budget = 2000 * static_cast<long>(n);
+  for (int sweep = 0; sweep < 20 && budget > 0; ++sweep) {
     bool moved = false;
-    for (size_t v = 0; v < n; ++v) {
+    for (size_t v = 0; v < n && budget > 0; ++v) {
       if (!movable[v] || next[v].empty()) continue;
       double best = worst_at(v);
       if (best >= kPoor) continue;
@@ -159,6 +162,7 @@ void raise_worst_corners(std::vector<mesh::Vec3>& points, const std::vector<mesh
             const mesh::Vec3 x = old + step * d;
             points[v] = project ? project(x) : x;
             const double q = worst_at(v);
+            --budget;
             if (q > best + 1e-12) {
               best = q;
               improved = true;
@@ -212,9 +216,10 @@ bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>
   };
   const double before = worst();
   const std::vector<mesh::Vec3> start = points;
+  long visits = 0;  // node minimisations, at most 200 per node over all floors
   for (double fraction : {0.25, 0.05, 0.01}) {
     for (size_t c = 0; c < corners.size(); ++c) corners[c].floor = fraction * ratio * from_area[c];
-    for (int sweep = 0; sweep < 200; ++sweep) {
+    for (int sweep = 0; sweep < 200 && visits < 200 * static_cast<long>(n); ++sweep) {
       // The movable nodes of faces with a corner under its floor, in order.
       std::vector<char> todo(n, 0);
       bool any = false;
@@ -231,6 +236,7 @@ bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>
       bool moved = false;
       for (size_t v = 0; v < n; ++v) {
         if (!todo[v]) continue;
+        ++visits;
         const Vec2 x = minimise(corners, mine[v], xy, static_cast<int>(v));
         const Vec2 d = x - xy[v];
         if (d.squaredNorm() == 0) continue;
