@@ -51,6 +51,19 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
                          const std::function<Vec3(const Vec3&)>& project, double quad_floor,
                          int passes) {
   if (tris.empty()) return;
+  std::set<int> target_set;
+  for (const Tri& t : tris)
+    for (int v : t)
+      if (movable[static_cast<size_t>(v)]) target_set.insert(v);
+  raise_worst_elements(points, quads, tris, std::vector<int>(target_set.begin(), target_set.end()),
+                       project, quad_floor, passes);
+}
+
+void raise_worst_elements(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                          const std::vector<Tri>& tris, const std::vector<int>& targets,
+                          const std::function<Vec3(const Vec3&)>& project, double quad_floor,
+                          int passes) {
+  if (targets.empty()) return;
   std::vector<Element> elements;
   elements.reserve(quads.size() + tris.size());
   for (const Quad& q : quads) {
@@ -65,11 +78,6 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
             .cross(points[static_cast<size_t>(t[2])] - points[static_cast<size_t>(t[0])]);
     elements.push_back({{t[0], t[1], t[2], -1}, 3, n});
   }
-  std::set<int> target_set;
-  for (const Tri& t : tris)
-    for (int v : t)
-      if (movable[static_cast<size_t>(v)]) target_set.insert(v);
-  const std::vector<int> targets(target_set.begin(), target_set.end());
   // Elements and neighbours of the target nodes only (a few near each
   // split quad), indexed by their position in `targets`.
   std::map<int, size_t> slot;

@@ -28,6 +28,15 @@ void improve_split_nodes(std::vector<Vec3>& points, const std::vector<Quad>& qua
                          const std::function<Vec3(const Vec3&)>& project, double quad_floor,
                          int passes = 3);
 
+/// The search of improve_split_nodes for any `targets` (distinct node
+/// indices, ascending): each moves, `passes` times, to raise the smallest
+/// quality of the elements around it, no quad going below `quad_floor` (or
+/// its own quality if lower). Deterministic.
+void raise_worst_elements(std::vector<Vec3>& points, const std::vector<Quad>& quads,
+                          const std::vector<Tri>& tris, const std::vector<int>& targets,
+                          const std::function<Vec3(const Vec3&)>& project, double quad_floor,
+                          int passes);
+
 /// A quad mesh made quad-dominant: split_poor_quads(points, quads,
 /// min_quality), then improve_split_nodes with the same floor. `points` are
 /// moved in place; the elements are returned.

@@ -3,6 +3,7 @@
 #include "schemes/cooper/smooth_cap.h"
 
 #include "framework/mesh/corner_sine.h"
+#include "framework/mesh/improve_split_nodes.h"
 
 #include <Eigen/Dense>
 
@@ -96,88 +97,6 @@ Vec2 minimise(const std::vector<Corner>& corners, const std::vector<int>& mine,
   return x;
 }
 
-// After the folds are open: each movable node of a poor face, by compass
-// search (steps from a quarter of its mean edge, halved) along the
-// directions to and from its neighbours -- so that a rigidly moved cap
-// moves the same way -- to where the worst corner sine of its faces is
-// largest (the untangling leaves corners just over their floors).
-void raise_worst_corners(std::vector<mesh::Vec3>& points, const std::vector<mesh::Quad>& quads,
-                         const std::vector<mesh::Tri>& tris, const std::vector<char>& movable,
-                         const mesh::Vec3& w,
-                         const std::function<mesh::Vec3(const mesh::Vec3&)>& project) {
-  constexpr double kPoor = 0.3;
-  const size_t n = points.size();
-  std::vector<std::vector<int>> around_q(n), around_t(n), next(n);
-  auto edges_of = [&](const auto& face) {
-    const size_t k = face.size();
-    for (size_t i = 0; i < k; ++i) {
-      next[static_cast<size_t>(face[i])].push_back(face[(i + 1) % k]);
-      next[static_cast<size_t>(face[i])].push_back(face[(i + k - 1) % k]);
-    }
-  };
-  for (size_t f = 0; f < quads.size(); ++f) {
-    for (int v : quads[f]) around_q[static_cast<size_t>(v)].push_back(static_cast<int>(f));
-    edges_of(quads[f]);
-  }
-  for (size_t f = 0; f < tris.size(); ++f) {
-    for (int v : tris[f]) around_t[static_cast<size_t>(v)].push_back(static_cast<int>(f));
-    edges_of(tris[f]);
-  }
-  auto worst_at = [&](size_t v) {
-    double m = 1.0;
-    for (int f : around_q[v])
-      m = std::min(m, mesh::min_corner_sine(points, quads[static_cast<size_t>(f)].data(), 4, w));
-    for (int f : around_t[v])
-      m = std::min(m, mesh::min_corner_sine(points, tris[static_cast<size_t>(f)].data(), 3, w));
-    return m;
-  };
-  // A work budget: a cap poor everywhere costs at most this many trial
-  // positions per node.
-  long budget = 2000 * static_cast<long>(n);
-  for (int sweep = 0; sweep < 20 && budget > 0; ++sweep) {
-    bool moved = false;
-    for (size_t v = 0; v < n && budget > 0; ++v) {
-      if (!movable[v] || next[v].empty()) continue;
-      double best = worst_at(v);
-      if (best >= kPoor) continue;
-      // Unit directions to the neighbours, in the plane, and back.
-      std::vector<mesh::Vec3> dirs;
-      double edge = 0;
-      for (int u : next[v]) {
-        mesh::Vec3 d = points[static_cast<size_t>(u)] - points[v];
-        d -= d.dot(w) * w;
-        const double l = d.norm();
-        edge += l;
-        if (l <= 0) continue;
-        dirs.push_back(d / l);
-        dirs.push_back(-d / l);
-      }
-      double step = 0.25 * edge / static_cast<double>(next[v].size());
-      for (int level = 0; level < 8; ++level, step *= 0.5) {
-        bool improved = true;
-        for (int guard = 0; improved && guard < 10; ++guard) {
-          improved = false;
-          for (const mesh::Vec3& d : dirs) {
-            const mesh::Vec3 old = points[v];
-            const mesh::Vec3 x = old + step * d;
-            points[v] = project ? project(x) : x;
-            const double q = worst_at(v);
-            --budget;
-            if (q > best + 1e-12) {
-              best = q;
-              improved = true;
-              moved = true;
-            } else {
-              points[v] = old;
-            }
-          }
-        }
-      }
-    }
-    if (!moved) break;
-  }
-}
-
 }  // namespace
 
 bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>& source,
@@ -249,7 +168,26 @@ bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>
     }
     if (worst() > 0) break;
   }
-  if (worst() > 0) raise_worst_corners(points, quads, tris, movable, w, project);
+  // Then the free nodes of poor faces raise their worst corners (the
+  // untangling leaves corners just over their floors): the compass search
+  // along the directions to their neighbours of framework/mesh, so that a
+  // rigidly moved cap moves the same way.
+  if (worst() > 0) {
+    constexpr double kPoor = 0.3;
+    std::vector<char> poor(n, 0);
+    auto mark = [&](const auto& face) {
+      if (mesh::min_corner_sine(points, face.data(), static_cast<int>(face.size()), w) >= kPoor)
+        return;
+      for (int v : face) poor[static_cast<size_t>(v)] = movable[static_cast<size_t>(v)];
+    };
+    for (const mesh::Quad& q : quads) mark(q);
+    for (const mesh::Tri& t : tris) mark(t);
+    std::vector<int> targets;
+    for (size_t v = 0; v < n; ++v)
+      if (poor[v]) targets.push_back(static_cast<int>(v));
+    const auto onto = [&](const mesh::Vec3& x) { return project ? project(x) : x; };
+    mesh::raise_worst_elements(points, quads, tris, targets, onto, -2.0, 3);
+  }
   if (worst() > before) return true;
   points = start;
   return false;

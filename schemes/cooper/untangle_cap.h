@@ -25,10 +25,10 @@ namespace cooperage::cooper {
 /// move followed by `project` (onto the cap's surface; identity in a plane).
 /// The fractions 1/4, 1/20 and 1/100 are tried in turn until no corner is
 /// folded; then the movable nodes of faces with a corner sine below 0.3
-/// move, by compass search along the directions to their neighbours, to
-/// raise the worst corner sine of their faces. Bounded work: at most 200
-/// minimisations and 2,000 trial positions per node. Kept only when the
-/// worst corner (its sine) improves; returns whether it did.
+/// move to raise the worst element around them (mesh::raise_worst_elements,
+/// three passes). Bounded work: at most 200 minimisations per node, and the
+/// search's own bounds. Kept only when the worst corner (its sine)
+/// improves; returns whether it did.
 /// \param[in,out] points  node positions, indexed by the faces
 /// \param[in] source      the same faces' fold-free positions (the mesh projected)
 /// \param[in] normal      the direction the faces are counter-clockwise about
