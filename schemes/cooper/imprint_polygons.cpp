@@ -160,6 +160,22 @@ bool absorb_touching_hole(Loop& outer, const Loop& hole) {
   return false;
 }
 
+bool merge_touching_holes(std::vector<Loop>& loops) {
+  bool merged = false;
+  for (size_t i = 0; i < loops.size(); ++i) {
+    for (size_t j = i + 1; j < loops.size();) {
+      if (absorb_touching_hole(loops[i], loops[j])) {
+        loops.erase(loops.begin() + static_cast<long>(j));
+        merged = true;
+        j = i + 1;
+      } else {
+        ++j;
+      }
+    }
+  }
+  return merged;
+}
+
 bool remove_spikes(Loop& loop) {
   bool removed = false;
   for (bool again = true; again && loop.size() > 2;) {

@@ -78,6 +78,11 @@ bool flat_quad(const Loop& loop, const std::map<int, Vec2>& xy);
 /// region touches it): the hole joins the outer loop, which then runs around
 /// it; false when they share no edge.
 bool absorb_touching_hole(Loop& outer, const Loop& hole);
+/// Loops of one subcap that share an edge (a split path run along a hole
+/// leaves the two halves of one hole, or a hole touching the outer loop)
+/// are joined: two holes become one, a hole joins the outer loop; true
+/// when any were.
+bool merge_touching_holes(std::vector<Loop>& loops);
 
 /// Removes spikes p, q, p from a loop (an edge walked there and back, which
 /// bounds nothing); true when one was removed.

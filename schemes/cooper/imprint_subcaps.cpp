@@ -26,6 +26,7 @@ namespace detail {
 Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : options_(options) {
   r_.ends = in;
   for (const auto& [id, p] : in.xy) next_node_ = std::max(next_node_, id + 1);
+  first_new_node_ = next_node_;
   for (const auto* list : {&in.upper, &in.lower}) {
     for (const Subcap& s : *list) next_cap_ = std::max(next_cap_, s.id + 1);
   }
@@ -44,6 +45,7 @@ ImprintResult Imprinter::run() {
     for (int e = 0; e < 2; ++e) {
       for (Subcap& c : caps(e)) {
         for (Loop& l : c.loops) version_ += remove_spikes(l) ? 1 : 0;
+        version_ += merge_touching_holes(c.loops) ? 1 : 0;
       }
     }
     if (all_matched()) {
@@ -221,10 +223,13 @@ std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& p
     const auto parts =
         split_self_intersections(todo[pi], xy(), options_.even_parity, &combined, combinable);
     apply_combined(e, combined);
-    // The pieces still to come share the split path: they lose the node too.
+    // The other pieces share the split path: they lose the node too.
     for (const auto& [drop, keep] : combined) {
       for (size_t pj = pi + 1; pj < todo.size(); ++pj)
         std::replace(todo[pj].begin(), todo[pj].end(), drop, keep);
+      for (auto* done : {&outers, &overlaps}) {
+        for (Loop& l : *done) std::replace(l.begin(), l.end(), drop, keep);
+      }
     }
     if (parts.size() > 1) r_.steps.push_back(ImprintStep::SelfIntersect);
     for (const Loop& part : parts) {
@@ -254,14 +259,32 @@ std::vector<int> Imprinter::replace(int e, size_t bi, const std::vector<Loop>& p
 void Imprinter::apply_combined(int e, const std::vector<std::pair<int, int>>& combined) {
   for (const auto& [drop, keep] : combined) {
     for (Subcap& s : caps(e)) {
-      for (Loop& l : s.loops) {
-        for (int& v : l) {
-          if (v == drop) v = keep;
-        }
-      }
+      for (Loop& l : s.loops) std::replace(l.begin(), l.end(), drop, keep);
     }
-    if (const auto p = partner(e, drop)) {
-      partner_[e].erase(drop);
+    const auto p = partner(e, drop);
+    if (!p) {
+      r_.seams.push_back({drop, keep});
+      continue;
+    }
+    partner_[e].erase(drop);
+    const auto q = partner(e, keep);
+    // Given nodes stay: a model curve's, or a cap's that another barrel shares.
+    const auto pinned = [&](int v) { return v < first_new_node_; };
+    if (q && *q != *p && !(pinned(*p) && pinned(*q))) {
+      // Both were ribbed (a crossing whose every node pair has ribs): one
+      // node cannot sweep to two, so their images are combined as well,
+      // or the ribs would stop being one-to-one and the next gaps would
+      // re-imprint the dropped image for ever.
+      const int image_drop = pinned(*p) ? *q : *p;
+      const int image_keep = pinned(*p) ? *p : *q;
+      for (Subcap& s : caps(1 - e)) {
+        for (Loop& l : s.loops) std::replace(l.begin(), l.end(), image_drop, image_keep);
+      }
+      partner_[1 - e].erase(image_drop);
+      partner_[e][keep] = image_keep;
+      partner_[1 - e][image_keep] = keep;
+      r_.seams.push_back({image_drop, image_keep});
+    } else {
       partner_[e][keep] = *p;
       partner_[1 - e][*p] = keep;
     }

@@ -142,6 +142,7 @@ class Imprinter {
   std::set<int> exterior_;
   std::map<int, int> match_of_;  // subcap id -> matched subcap id
   int next_node_ = 0;
+  int first_new_node_ = 0;  // nodes below it were given (other barrels may share them)
   int next_cap_ = 0;
   long version_ = 0;  // bumped by every new rib and subcap: progress
 };

@@ -218,5 +218,28 @@ TEST(CooperImprintSlivers, AFloorsImageThroughAnOpposingFootprintIsImprinted) {
                 {3.004}, 62);
 }
 
+// A boss on the top with a pocket cut through it, a blind hole from below
+// under the pocket's floor and a small blind hole from the middle
+// (campaign seed 5 case 110). A split path ran along a hole of a piece and
+// left the hole's two halves as two holes of one subcap, sharing the edges
+// of the path; the pieces opposite had one hole, so no step applied, at
+// every size from 2.5 down to 0.8. Loops sharing an edge are now joined
+// (merge_touching_holes). At its own size, 2.499, a layer's hex still
+// inverts; at half that it meshes.
+void pocket_through_boss_over_blind_hole(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {47, 27.93, 15.85});
+  wb.cylinder("small", {7.27, 10.29, 3.33}, {0, 0, 1}, 1.54, 28.37);
+  wb.brick("pocket", {25, 15.05, 8.07}, {9.1, 9.92, 23.63});
+  wb.cylinder("boss", {24.84, 11.89, 15.85}, {0, 0, 1}, 6.71, 4.66);
+  wb.cylinder("blind", {28.35, 15.64, -15.85}, {0, 0, 1}, 4.54, 19.53);
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "small", "pocket", "blind"});
+}
+
+TEST(CooperImprintSlivers, HolesSharingASplitPathAreOneHole) {
+  expect_meshes("pocket_through_boss_over_blind_hole", pocket_through_boss_over_blind_hole,
+                {1.2495, 1.0}, 110);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper

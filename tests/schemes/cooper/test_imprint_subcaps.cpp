@@ -392,6 +392,127 @@ TEST(ImprintSubcaps, SplitSelfIntersectionsGivesNPlusOneEvenLoops) {
   EXPECT_EQ(negative, 1);
 }
 
+// Barrel 3's two ends in its chart (size 8.613) for a block with a
+// rectangular boss on top and a foot below, a through hole eating most of
+// both (plan => mesh campaign seed 7 case 39): the hole's remainder of the
+// foot is a crescent whose tips are slivers. Imprinting split a piece that
+// then crossed itself where every candidate node pair had ribs; the pair
+// made one kept two ribs to two lower nodes, and a piece split off earlier
+// in the same step still held the node dropped. The gaps then re-imprinted
+// the dropped node for ever (10,000 steps). The images are now made one
+// too, and every piece of the step loses the dropped node.
+TEST(ImprintSubcaps, RibbedNodesMadeOneInACrescentKeepTheRibsOneToOne) {
+  struct Node {
+    int id;
+    double x, y;
+  };
+  const std::vector<Node> nodes = {
+      {29, 8.3049999999999997, 0},
+      {31, 16.609999999999999, 0},
+      {33, 24.914999999999999, 0},
+      {35, 33.219999999999999, 0},
+      {37, 41.524999999999999, 0},
+      {39, 49.829999999999998, 0},
+      {41, 49.829999999999998, -7.6974999999999998},
+      {43, 49.829999999999998, -15.395000000000001},
+      {45, 49.829999999999998, -23.092500000000001},
+      {47, 49.829999999999998, -30.789999999999999},
+      {49, 41.524999999999999, -30.789999999999999},
+      {51, 33.219999999999999, -30.789999999999999},
+      {53, 24.914999999999999, -30.789999999999999},
+      {55, 16.609999999999999, -30.789999999999999},
+      {57, 8.3049999999999997, -30.789999999999999},
+      {59, 0, -30.789999999999999},
+      {61, 0, -23.092500000000001},
+      {63, 0, -15.395000000000001},
+      {65, 0, -7.6974999999999998},
+      {67, 0, 0},
+      {68, 27.370156524795021, -13.88037827321428},
+      {69, 29.363566933988533, -14.006666877209849},
+      {70, 31.198132380413639, -13.213900710691092},
+      {71, 32.838374210934866, -10.569734891317783},
+      {73, 32.909999999999997, -9.7899999999999974},
+      {75, 32.665634798079807, -8.3644994645643447},
+      {77, 30.955287862859734, -6.1967512812446159},
+      {79, 25.943877396763288, -6.4578617435075056},
+      {81, 24.45166250560704, -10.717305657779558},
+      {82, 25.629658705491568, -12.842269994031895},
+      {83, 8.3049999999999997, 0},
+      {84, 16.609999999999999, 0},
+      {85, 24.914999999999999, 0},
+      {86, 33.219999999999999, 0},
+      {87, 41.524999999999999, 0},
+      {88, 49.829999999999998, 0},
+      {89, 49.829999999999998, -7.6974999999999998},
+      {90, 49.829999999999998, -15.395},
+      {91, 49.829999999999998, -23.092500000000001},
+      {92, 49.829999999999998, -30.789999999999999},
+      {93, 41.524999999999999, -30.789999999999999},
+      {94, 33.219999999999999, -30.789999999999999},
+      {95, 24.914999999999999, -30.789999999999999},
+      {96, 16.609999999999999, -30.789999999999999},
+      {97, 8.3049999999999997, -30.789999999999999},
+      {98, 0, -30.789999999999999},
+      {99, 0, -23.092500000000001},
+      {100, 0, -15.395},
+      {101, 0, -7.6974999999999998},
+      {102, 0, 0},
+      {103, 32.509999999999991, -11.43},
+      {105, 30.681824771070961, -14.546239154314636},
+      {107, 27.069693856087621, -14.470864174547032},
+      {109, 25.373107682176776, -11.28107319565078},
+      {111, 27.310264440264259, -8.2537030986803472},
+      {113, 30.696080936461776, -8.3217722502050258},
+      {115, 34.914063470304995, -10.569243121422243},
+      {116, 36.990373358077804, -10.571112120200247},
+      {117, 36.991318004096421, -14.175001529443524},
+      {118, 35.098555457432035, -14.177195821923403},
+      {119, 33.206730163756717, -14.182940908538409},
+      {120, 31.314684923816522, -14.187744724857664},
+      {121, 29.423627477185704, -14.19923386791408},
+      {122, 27.527121646577445, -14.187181992000443},
+      {123, 25.630647194934589, -14.17384087768054},
+  };
+  struct Piece {
+    int end, id;
+    std::vector<std::vector<int>> loops;
+  };
+  const std::vector<Piece> pieces = {
+      {0, 3, {{75, 77, 79, 81, 82, 68, 69, 70, 71, 73}}},
+      {0,
+       6,
+       {{67, 65, 63, 61, 59, 57, 55, 53, 51, 49, 47, 45, 43, 41, 39, 37, 35, 33, 31, 29},
+        {81, 79, 77, 75, 73, 71, 115, 116, 117, 118, 119, 120, 121, 122, 123, 82}}},
+      {0, 8, {{82, 123, 122, 121, 120, 119, 118, 117, 116, 115, 71, 70, 69, 68}}},
+      {1,
+       1,
+       {{102, 101, 100, 99, 98, 97, 96, 95, 94, 93, 92, 91, 90, 89, 88, 87, 86, 85, 84, 83},
+        {103, 105, 107, 109, 111, 113}}},
+      {1, 7, {{113, 111, 109, 107, 105, 103}}},
+  };
+  BarrelEnds ends;
+  for (const Node& n : nodes) ends.xy[n.id] = Vec2(n.x, n.y);
+  for (const Piece& p : pieces) {
+    Subcap s;
+    s.id = p.id;
+    s.loops = p.loops;
+    (p.end == 0 ? ends.upper : ends.lower).push_back(s);
+  }
+  for (int k = 0; k < 20; ++k) ends.ribs.push_back({29 + 2 * k, 83 + k});
+  for (const Node& n : nodes) {
+    if (n.id < 115) ends.fixed.insert(n.id);  // on model curves; 115-123 are imprinted
+  }
+  const ImprintResult r = imprint_subcaps(ends);
+  // Matched pieces are linked through seams that lean their ribs by up to
+  // 0.3 of an edge, so their areas agree within 5 (an element is 74).
+  expect_partition(r, 49.83 * 30.79, 5.0);
+  std::set<int> uppers, lowers;
+  for (const auto& [u, l] : r.ends.ribs) {
+    EXPECT_TRUE(uppers.insert(u).second) << "upper node " << u << " has two ribs";
+    EXPECT_TRUE(lowers.insert(l).second) << "lower node " << l << " has two ribs";
+  }
+}
+
 // Two nodes that both carry ribs (to different opposing nodes) made one
 // would leave a rib pointing at a node no loop holds (found in the
 // campaign's seed 3 case 8): such a pair is combined only when the crossing
@@ -580,6 +701,30 @@ TEST(ImprintPolygons, RemoveSpikesDropsEdgesWalkedThereAndBack) {
   EXPECT_TRUE(detail::remove_spikes(nested));
   EXPECT_EQ(nested, (std::vector<int>{1, 2, 3, 6}));
   EXPECT_FALSE(detail::remove_spikes(nested));
+}
+
+// Two holes sharing an edge are one hole; a hole sharing an edge with the
+// outer loop opens it (seed 5 case 110 of the campaign: a split path run
+// along a hole left its two halves as holes of one subcap).
+TEST(ImprintPolygons, LoopsSharingAnEdgeAreJoined) {
+  std::map<int, Vec2> xy = {{1, {0, 0}},  {2, {5, 0}},  {3, {10, 0}}, {4, {10, 10}},
+                            {5, {0, 10}}, {6, {2, 2}},  {7, {2, 5}},  {8, {5, 5}},
+                            {9, {5, 2}},  {10, {8, 5}}, {11, {8, 2}}, {12, {7, 3}}};
+  std::vector<std::vector<int>> two_holes = {{1, 2, 3, 4, 5}, {6, 7, 8, 9}, {9, 8, 10, 11}};
+  ASSERT_TRUE(detail::merge_touching_holes(two_holes));
+  ASSERT_EQ(two_holes.size(), 2u);
+  EXPECT_EQ(two_holes[1].size(), 6u);
+  EXPECT_NEAR(signed_area(two_holes[1], xy), -18, 1e-12);
+  EXPECT_FALSE(detail::merge_touching_holes(two_holes));
+  // A triangle on the outer loop's edge 2-3 (walked 3-2 by the hole).
+  std::vector<std::vector<int>> notch = {{1, 2, 3, 4, 5}, {3, 2, 12}};
+  ASSERT_TRUE(detail::merge_touching_holes(notch));
+  ASSERT_EQ(notch.size(), 1u);
+  EXPECT_EQ(notch[0], (std::vector<int>{1, 2, 12, 3, 4, 5}));
+  EXPECT_NEAR(signed_area(notch[0], xy), 100 - 7.5, 1e-12);
+  // Holes touching at a node only stay apart.
+  std::vector<std::vector<int>> pinched = {{1, 2, 3, 4, 5}, {6, 7, 8, 9}, {8, 10, 11}};
+  EXPECT_FALSE(detail::merge_touching_holes(pinched));
 }
 
 TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
