@@ -241,5 +241,28 @@ TEST(CooperImprintSlivers, HolesSharingASplitPathAreOneHole) {
                 {1.2495, 1.0}, 110);
 }
 
+// A pocket from the top with a through hole and a wider blind hole from
+// below both cutting its corner, a foot below (campaign seed 4 case 155).
+// Between the pocket's corner and the two holes' rims imprinting leaves a
+// four-node subcap 3.5 long and 0.5 in area with a reflex corner; meshed
+// as one quad it was inverted at sizes 6.2 and 4. Pave now meshes such a
+// dart as a quad inside joined to its corners. (Moved by the motion of
+// seed 155 it meshes with as many nodes placed up to 3.8 apart; not
+// traced, the part above shows the same from its chart's u axis. Seeds 1
+// to 6 give the moved mesh.)
+void pocket_corner_over_two_holes(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {42.52, 36.23, 40});
+  wb.brick("pocket", {6.18, 18.35, 18.43}, {9.54, 9.12, 61.57});
+  wb.cylinder("hole", {17.42, 21.01, -40}, {0, 0, 1}, 2.57, 120);
+  wb.cylinder("foot", {11.02, 12.5, -15.53}, {0, 0, 1}, 5.01, 15.53);
+  wb.cylinder("blind", {19.44, 22.05, -40}, {0, 0, 1}, 4.46, 55.77);
+  wb.fuse("body", {"block", "foot"});
+  wb.cut("part", {"body", "pocket", "hole", "blind"});
+}
+
+TEST(CooperImprintSlivers, AFourNodeDartSubcapIsMeshed) {
+  expect_meshes("pocket_corner_over_two_holes", pocket_corner_over_two_holes, {6.213}, 1);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper

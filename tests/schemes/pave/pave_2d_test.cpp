@@ -94,6 +94,31 @@ TEST(Pave2D, SingleQuadAndSmallestLoops) {
   EXPECT_EQ(check_mesh(small_hole, pave_2d(small_hole)), "");
 }
 
+// A four-node loop with a reflex corner is no quad: a quad inside it,
+// joined to each corner, splits the reflex angle. The second is a subcap
+// between a pocket's corner and two holes (the plan => mesh campaign's
+// seed 4 case 155), in its chart: 3.5 long, 0.5 in area.
+TEST(Pave2D, AFourNodeDartIsFiveQuads) {
+  for (const Loops& dart : {Loops{{{0, 0}, {4, 2}, {0, 4}, {1, 2}}},
+                            Loops{{{15.720049149688458, 22.93745093492028},
+                                   {16.17322739531179, 25.086411821419915},
+                                   {14.985289407762131, 21.832851342615864},
+                                   {15.280155434004524, 22.433364055110154}}}}) {
+    const QuadMesh2D m = pave_2d(dart);
+    EXPECT_EQ(m.quads.size(), 5u);
+    EXPECT_EQ(check_mesh(dart, m), "");
+    // Moved, it gives the moved mesh.
+    const Eigen::Rotation2Dd R(1.7);
+    const V2 t(12.5, -3.25);
+    Loops moved = dart;
+    for (auto& p : moved[0]) p = R * p + t;
+    const QuadMesh2D r = pave_2d(moved);
+    ASSERT_EQ(r.quads, m.quads);
+    for (size_t i = 0; i < m.points.size(); ++i)
+      EXPECT_LT((r.points[i] - (R * m.points[i] + t)).norm(), 1e-9) << "node " << i;
+  }
+}
+
 // A crescent between two circles with tips of about 28 and 40 degrees and
 // a collinear node beside a reflex one (the plan => mesh campaign's seed 3
 // case 96, surface 13, in its chart). From its first node every attempt
