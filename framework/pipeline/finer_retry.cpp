@@ -94,6 +94,51 @@ std::vector<int> turn_failed_sweeps(const std::vector<Verdict>& verdicts,
   return turned;
 }
 
+std::optional<double> failing_scaled_jacobian_floor(const std::vector<io::QualityCheck>& checks) {
+  std::optional<double> floor;
+  for (const io::QualityCheck& c : checks) {
+    if (c.metric != "scaled_jacobian" || c.action != io::QualityCheck::Action::Fail || !c.min)
+      continue;
+    floor = std::max(floor.value_or(*c.min), *c.min);
+  }
+  return floor;
+}
+
+std::optional<double> worst_scaled_jacobian(const MeshResult& result, int volume) {
+  std::optional<double> worst;
+  for (const BlockReport& b : result.quality.blocks) {
+    if (b.dim != 3 || b.id != volume) continue;
+    const quality::MetricSummary* sj = b.find("scaled_jacobian");
+    if (sj && sj->count > 0) worst = std::min(worst.value_or(sj->min), sj->min);
+  }
+  return worst;
+}
+
+std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
+                                    io::MeshSettings& settings,
+                                    std::map<int, FinerRetry>& retries) {
+  std::vector<int> halved;
+  for (const Verdict& v : result.verdicts) {
+    if (v.state != Verdict::State::Meshed || v.entity.dim != 3) continue;
+    const std::optional<double> worst = worst_scaled_jacobian(result, v.entity.id);
+    if (!worst || *worst >= floor) continue;
+    const std::optional<double> size = size_of(settings, v.entity.id);
+    if (!size) continue;  // sized by interval counts only: nothing to halve
+    auto [it, first] = retries.try_emplace(v.entity.id);
+    if (first) {
+      it->second.asked = *size;
+      it->second.for_quality = true;
+      it->second.first_reason = "its worst element's scaled Jacobian was " + number_text(*worst) +
+                                ", below the minimum " + number_text(floor) +
+                                " of a failing <quality> check";
+    }
+    it->second.size = 0.5 * *size;
+    setting_of(settings, v.entity.id).sizing.size = it->second.size;
+    halved.push_back(v.entity.id);
+  }
+  return halved;
+}
+
 void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& result) {
   std::vector<Warning> warnings;
   for (Verdict& v : result.verdicts) {
@@ -125,8 +170,9 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
     }
     warnings.push_back({v.entity, "meshed at size " + number_text(r.size) + ", " +
                                       fraction(r.asked, r.size) + " the size asked for (" +
-                                      number_text(r.asked) +
-                                      "), at which it failed: " + clip(r.first_reason, 240)});
+                                      number_text(r.asked) + "), " +
+                                      (r.for_quality ? "where " : "at which it failed: ") +
+                                      clip(r.first_reason, 240)});
   }
   result.warnings.insert(result.warnings.begin(), warnings.begin(), warnings.end());
 }

@@ -30,6 +30,9 @@ struct FinerRetry {
   /// the latest attempt swept it the other way (at `asked`).
   std::optional<geom::Vec3> planned_sweep;
   bool turned = false;
+  /// It meshed at `asked` but worse than a failing quality check allows
+  /// (`first_reason` says how much); see halve_poor_volumes.
+  bool for_quality = false;
 };
 
 /// Halves, in `settings`, the size of every volume of `verdicts` a smaller
@@ -52,6 +55,24 @@ void note_planned_sweeps(const SchemePlan& plan, const io::MeshSettings& setting
 /// asked for, with a direction hint the other way (then halved again as
 /// before, that way). Returns those volumes.
 std::vector<int> turn_failed_sweeps(const std::vector<Verdict>& verdicts,
+                                    io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
+
+/// The floor a run's checks set on the scaled Jacobian: the largest `min`
+/// of its <quality metric="scaled_jacobian" action="fail"> checks; none
+/// without such a check.
+std::optional<double> failing_scaled_jacobian_floor(const std::vector<io::QualityCheck>& checks);
+
+/// The worst scaled Jacobian of volume `volume`'s elements in `result`'s
+/// quality report; none when it has no block there.
+std::optional<double> worst_scaled_jacobian(const MeshResult& result, int volume);
+
+/// Halves, in `settings`, the size of every volume of `result` that
+/// meshed with a worst scaled Jacobian below `floor` and whose size the
+/// settings give; records it in `retries` (for_quality). The user's
+/// failing check would reject that mesh (and write nothing), so a finer
+/// one is tried first, as for a volume that failed. Returns the volumes
+/// halved.
+std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
                                     io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
 
 /// A warning for every retried volume that meshed; for one that still

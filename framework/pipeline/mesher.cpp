@@ -549,6 +549,47 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       }
       retries = std::move(turned_retries);
     }
+    // Volumes that meshed worse than a failing quality check allows: the
+    // run would write nothing, so half the size is tried first, kept while
+    // every such volume's worst element gets better and nothing is refused.
+    const std::optional<double> floor = failing_scaled_jacobian_floor(options.quality_checks);
+    if (floor && retries.empty() && !result.incomplete()) {
+      io::MeshSettings current = settings;
+      for (int round = 0; round < settings.finer_retries; ++round) {
+        io::MeshSettings candidate = current;
+        std::map<int, FinerRetry> tried = retries;
+        const std::vector<int> halved = halve_poor_volumes(result, *floor, candidate, tried);
+        if (halved.empty()) break;
+        for (int volume : halved)
+          log::info("volume " + std::to_string(volume) + " meshed at size " +
+                    number_text(2 * tried.at(volume).size) + " below the quality check's " +
+                    number_text(*floor) + "; meshing again at " +
+                    number_text(tried.at(volume).size));
+        MeshResult other;
+        try {
+          other = mesh_attempt(model, candidate, registry, options);
+        } catch (const MeshingError& e) {  // e.g. above max_elements: the first mesh stays
+          log::info("meshing again failed: " + e.message());
+          result.mesh_replaced = true;
+          break;
+        }
+        bool better = !other.incomplete();
+        for (int volume : halved) {
+          const auto before = worst_scaled_jacobian(result, volume);
+          const auto after = worst_scaled_jacobian(other, volume);
+          better = better && after && before && *after > *before;
+        }
+        if (!better) {
+          earlier += seconds(other);
+          result.mesh_replaced = true;  // the exports staged beside it were other's
+          break;
+        }
+        earlier += seconds(result);
+        result = std::move(other);
+        current = std::move(candidate);
+        retries = std::move(tried);
+      }
+    }
     if (earlier > 0) result.stages.insert(result.stages.begin(), {"failed attempts", earlier});
     report_finer_retries(retries, result);
   }

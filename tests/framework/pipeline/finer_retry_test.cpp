@@ -78,10 +78,38 @@ class MeshesOnlyDownwards final : public testing::PlansLikeMap {
   }
 };
 
+// Meshes as the volume map does, and while its mesh has fewer than `least`
+// hexes moves the interior node at (1, 1, 1) by (0.3, 0.3, 0.3): the hex
+// it leans into keeps a corner of scaled Jacobian 0.182342 (its edges
+// (0.7, -0.3, -0.3) and its two turns: determinant 0.1 over the lengths
+// cubed, 0.67^1.5), every hex stays valid and the volume is the brick's.
+class PoorWhenCoarse final : public testing::PlansLikeMap {
+ public:
+  PoorWhenCoarse(const scheme::VolumeScheme& map, std::size_t least)
+      : PlansLikeMap(map), least_(least) {}
+  std::string_view name() const override { return "poor_when_coarse"; }
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override {
+    scheme::EntityMesh m = map_.mesh(view, settings);
+    if (m.hexes.size() >= least_) return m;
+    for (geom::Vec3& x : m.coords) {
+      if ((x - geom::Vec3(1, 1, 1)).norm() < 1e-9) x += geom::Vec3(0.3, 0.3, 0.3);
+    }
+    m.hex_scaled_jacobian.clear();  // the report computes them on the moved node
+    return m;
+  }
+
+ private:
+  std::size_t least_;
+};
+
 class FinerRetries : public testing::JournalFixture {
  protected:
   void use_scheme(std::size_t least) {
     registry_.add(std::make_unique<FailsWhenCoarse>(*registry_.volume_scheme("map"), least));
+  }
+  void use_poor_scheme(std::size_t least) {
+    registry_.add(std::make_unique<PoorWhenCoarse>(*registry_.volume_scheme("map"), least));
   }
   void use_downwards_scheme(std::size_t least = 0) {
     registry_.add(std::make_unique<MeshesOnlyDownwards>(*registry_.volume_scheme("map"), least));
@@ -318,6 +346,62 @@ TEST(ReportFinerRetries, WarnsForWhatMeshedAndExtendsTheHintOfWhatDidNot) {
             "failed: quad 3 is folded");
   EXPECT_EQ(r.warnings[1].message, "pave fell back");
   EXPECT_EQ(r.verdicts[1].hint, "meshing it again at half the size (0.5) failed too; a hint");
+}
+
+// A volume that meshes worse than a failing quality check allows is meshed
+// again at half its size (the run would otherwise write nothing), and says
+// so; a warning check, no retries, or a retry that is no better leave the
+// first mesh.
+constexpr const char* kPoorCube =
+    R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"%s><volume id="1" scheme="poor_when_coarse"/></mesh>
+  <quality metric="scaled_jacobian" min="0.5" action="%s"/>
+  <export file="out.vtu"/>
+)";
+
+std::string poor_cube(const char* mesh_attributes, const char* action) {
+  char text[1024];
+  std::snprintf(text, sizeof text, kPoorCube, mesh_attributes, action);
+  return text;
+}
+
+TEST_F(FinerRetries, AVolumeBelowAFailingQualityCheckIsMeshedAtHalfItsSize) {
+  use_poor_scheme(100);
+  const RunResult r = run_job(journal(poor_cube("", "fail")), registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 512u);
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0, 1e-9);
+  EXPECT_NEAR(r.quality.blocks.at(0).find("scaled_jacobian")->min, 1.0, 1e-12);
+  ASSERT_FALSE(r.mesh.warnings.empty());
+  EXPECT_EQ(r.mesh.warnings.front().text(),
+            "volume 1: meshed at size 0.5, half the size asked for (1), where its worst element's "
+            "scaled Jacobian was 0.182342, below the minimum 0.5 of a failing <quality> check");
+  EXPECT_TRUE(written("out.vtu"));
+}
+
+TEST_F(FinerRetries, AWarningCheckOrNoRetriesKeepThePoorMesh) {
+  use_poor_scheme(100);
+  const RunResult warned =
+      run_job(journal(poor_cube("", "warn")), registry_, selector::mesh_options());
+  EXPECT_FALSE(warned.failed());
+  EXPECT_EQ(warned.mesh.mesh.hex_count(), 64u);
+  EXPECT_NEAR(warned.quality.blocks.at(0).find("scaled_jacobian")->min, 0.182342, 1e-6);
+  EXPECT_TRUE(warned.mesh.warnings.empty());
+  std::filesystem::remove(dir_ / "out.vtu");
+  const RunResult none = run_job(journal(poor_cube(" finer_retries=\"0\"", "fail")), registry_,
+                                 selector::mesh_options());
+  EXPECT_TRUE(none.failed());
+  EXPECT_EQ(none.mesh.mesh.hex_count(), 64u);
+  EXPECT_FALSE(written("out.vtu"));
+}
+
+TEST_F(FinerRetries, ARetryNoBetterKeepsTheFirstMeshAndTheCheckFails) {
+  use_poor_scheme(1000000);  // at 0.5 the same move inverts a hex: the retry is worse
+  const RunResult r = run_job(journal(poor_cube("", "fail")), registry_, selector::mesh_options());
+  EXPECT_TRUE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 64u);
+  EXPECT_TRUE(r.mesh.warnings.empty());
+  EXPECT_FALSE(written("out.vtu"));
 }
 
 }  // namespace
