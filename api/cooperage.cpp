@@ -42,6 +42,8 @@ Result mesh_file(const std::string& path, double size, const Options& options) {
   job.size = size;
   job.decompose = options.decompose;
   job.finer_retries = options.finer_retries;
+  job.min_scaled_jacobian = options.min_scaled_jacobian;
+  job.min_scaled_jacobian_option = "Options::min_scaled_jacobian";
   job.imprint_merge = options.imprint_merge;
   job.elements = options.elements;
   job.exports = options.exports;

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -132,7 +133,8 @@ int run_journal(const std::string& file, const std::string& report, const RunLim
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
              const std::string& report, bool binary, bool no_imprint, io::ElementKind elements,
-             const RunLimits& limits, io::Decompose decompose, int finer_retries) {
+             const RunLimits& limits, io::Decompose decompose, int finer_retries,
+             std::optional<double> min_scaled_jacobian) {
   if (!(size > 0) || !std::isfinite(size))
     throw MeshingError(ErrorCode::InvalidInput, "--size must be a positive number");
   pipeline::ModelJobOptions options;
@@ -144,7 +146,9 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   options.exports = {output};
   options.binary = binary;
   if (!report.empty()) options.reports = {report};
-  return finish_run(pipeline::model_job(model, options), dim, limits);
+  options.min_scaled_jacobian = min_scaled_jacobian;
+  io::Job job = pipeline::model_job(model, options);
+  return finish_run(job, dim, limits);
 }
 
 // `cooperage schemes`: the registry of a run without a journal.
@@ -255,6 +259,12 @@ int main(int argc, char** argv) {
                    "at most this many times, then (a straight sweep) swept the other way, from its "
                    "size down (default 2; 0: never)")
       ->check(CLI::Range(0, io::MeshSettings::kMaxFinerRetries));
+  std::optional<double> mesh_min_sj;
+  mesh->add_option("--min-scaled-jacobian", mesh_min_sj,
+                   "Fail (exit 1, no file) when an element's scaled Jacobian is below this; a "
+                   "volume below it is first meshed again at half its size (--finer-retries "
+                   "times at most)")
+      ->check(CLI::Range(-1.0, 1.0));
 
   std::string plan_file;
   double plan_size = 0;
@@ -323,7 +333,7 @@ int main(int argc, char** argv) {
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
                       mesh_no_imprint, elements, limits,
                       mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto,
-                      mesh_finer_retries);
+                      mesh_finer_retries, mesh_min_sj);
     }
   } catch (const MeshingError& e) {
     print_error(e);

@@ -20,6 +20,7 @@
 #include "framework/pipeline/quality_report.h"
 #include "framework/pipeline/scheme_plan.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ struct Options {
   /// half its size, at most this many times, 0 to 4 (mesh_file() only; a
   /// journal says so in <mesh finer_retries>). Each shows as a warning.
   int finer_retries = io::MeshSettings{}.finer_retries;
+  /// Fail (no exports; Result::quality.failed()) when an element's scaled
+  /// Jacobian is below it, -1 to 1; a volume below it is first meshed again
+  /// at half its size, at most finer_retries times, with a warning
+  /// (mesh_file() only; a journal says so in <quality>).
+  std::optional<double> min_scaled_jacobian;
   /// Mesh files to write (.exo .msh .vtu .inp .obj .off .stl .ply), each
   /// atomically; none are written when meshing fails. run_journal() adds
   /// them to the journal's.

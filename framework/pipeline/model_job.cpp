@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/check_settings.h"
@@ -55,6 +56,20 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   }
   for (const std::string& r : options.reports) {
     job.reports.push_back({r, {options.origin, 0, options.report_option}});
+  }
+  if (options.min_scaled_jacobian) {
+    const double floor = *options.min_scaled_jacobian;
+    if (!(floor >= -1.0 && floor <= 1.0)) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         options.origin + ": " + options.min_scaled_jacobian_option +
+                             " must be from -1 to 1, got " + number_text(floor));
+    }
+    io::QualityCheck check;
+    check.metric = "scaled_jacobian";
+    check.min = floor;
+    check.action = io::QualityCheck::Action::Fail;
+    check.where = {options.origin, 0, options.min_scaled_jacobian_option};
+    job.quality.push_back(check);
   }
   return job;
 }

@@ -33,6 +33,11 @@ struct ModelJobOptions {
   io::Decompose decompose = io::Decompose::Auto;
   /// Halvings of a failed volume's size (io::MeshSettings::finer_retries).
   int finer_retries = io::MeshSettings{}.finer_retries;
+  /// A failing check on the scaled Jacobian, as a journal's <quality
+  /// metric="scaled_jacobian" min action="fail">: the run fails below it,
+  /// and a volume below it is first meshed again finer (finer_retry.h).
+  std::optional<double> min_scaled_jacobian;
+  std::string min_scaled_jacobian_option = "--min-scaled-jacobian";
 };
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at

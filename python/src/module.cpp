@@ -53,7 +53,8 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
 
 std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size, int dim,
                                  const std::string& elements, int threads, bool imprint,
-                                 int finer_retries, const std::string& decompose) {
+                                 int finer_retries, const std::string& decompose,
+                                 std::optional<double> min_scaled_jacobian) {
   if (dim != 2 && dim != 3) {
     throw MeshingError(
         ErrorCode::InvalidInput,
@@ -86,6 +87,8 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
   options.elements = element_kind(elements);
   options.origin = "cooperage.mesh()";
   options.elements_option = "elements";
+  options.min_scaled_jacobian = min_scaled_jacobian;
+  options.min_scaled_jacobian_option = "min_scaled_jacobian";
   const std::string path = model.string();
   return run_job([&] { return pipeline::model_job(path, options); }, dim, threads, path);
 }
@@ -110,7 +113,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("mesh", &mesh, py::arg("model"), py::arg("size"), py::arg("dim") = 3,
         py::arg("elements") = "hex", py::arg("threads") = 0, py::arg("imprint") = true,
         py::arg("finer_retries") = cooperage::io::MeshSettings{}.finer_retries,
-        py::arg("decompose") = "auto",
+        py::arg("decompose") = "auto", py::arg("min_scaled_jacobian") = py::none(),
         R"doc(Meshes a CAD file with automatic schemes, as `cooperage mesh` does.
 
 model: a .step/.stp/.iges/.igs/.brep path; size: element size in the model's
@@ -120,8 +123,11 @@ mesh does not depend on it); imprint: merge touching solids so they share
 nodes; finer_retries: a volume its scheme fails on after planning is meshed
 again at half its size, at most this many times (0-4; a warning says so);
 decompose: "auto" cuts a volume no scheme applies to into pieces that one
-does (Mesh.decomposition lists the cuts), "off" refuses it instead.
-Returns a Mesh. Raises InputError or MeshingError.)doc");
+does (Mesh.decomposition lists the cuts), "off" refuses it instead;
+min_scaled_jacobian: a floor (-1 to 1) as a journal's failing quality check:
+a volume below it is first meshed again at half its size (finer_retries
+times at most, a warning says so), and below it still, Mesh.checks says the
+check failed. Returns a Mesh. Raises InputError or MeshingError.)doc");
   m.def("run", &run, py::arg("journal"), py::arg("threads") = 0,
         R"doc(Runs a journal (.xml) as `cooperage run` does: geometry, meshing, quality
 checks, exports and reports. Returns a Mesh whose `written` lists the files

@@ -1,6 +1,7 @@
-// cooperage::Options::decompose and ::finer_retries: mesh_file() cuts a
-// part no scheme takes whole (the paper's Fig. 3a: bosses that project in
-// different directions) unless told not to, and reports the cuts.
+// cooperage::Options::decompose, ::finer_retries and ::min_scaled_jacobian:
+// mesh_file() cuts a part no scheme takes whole (the paper's Fig. 3a: bosses
+// that project in different directions) unless told not to, and reports the
+// cuts; a floor on the scaled Jacobian is a failing quality check.
 #include <cooperage/cooperage.h>
 
 #include "framework/core/error.h"
@@ -67,6 +68,33 @@ TEST(ApiDecompose, FinerRetriesOutOfRangeIsAnInputError) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
     EXPECT_NE(std::string(e.what()).find("Options::finer_retries must be 0 to 4, got 5"),
               std::string::npos)
+        << e.what();
+  }
+}
+
+// examples/part.step at size 2 has hexes from 0.79 to 0.9999: a floor of
+// 0 passes, one of 0.9999 fails the check (no retry asked); out of [-1, 1]
+// is an input error naming the option.
+TEST(ApiDecompose, MinScaledJacobianIsAFailingQualityCheck) {
+  const std::string part = std::string(COOPERAGE_SOURCE_DIR) + "/examples/part.step";
+  Options o;
+  o.min_scaled_jacobian = 0.0;
+  EXPECT_FALSE(mesh_file(part, 2.0, o).quality.failed());
+  o.min_scaled_jacobian = 0.9999;
+  o.finer_retries = 0;
+  const Result strict = mesh_file(part, 2.0, o);
+  EXPECT_TRUE(strict.quality.failed());
+  ASSERT_EQ(strict.quality.checks.size(), 1u);
+  EXPECT_GT(strict.quality.checks.front().violations, 0u);
+  o.min_scaled_jacobian = 2.0;
+  try {
+    mesh_file(part, 2.0, o);
+    ADD_FAILURE() << "no error";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+    EXPECT_NE(
+        std::string(e.what()).find("Options::min_scaled_jacobian must be from -1 to 1, got 2"),
+        std::string::npos)
         << e.what();
   }
 }

@@ -57,6 +57,8 @@ def test_bad_arguments_are_input_errors(source_dir, journal):
         cooperage.mesh(part, size=1, threads=-1)
     with pytest.raises(cooperage.InputError, match="finer_retries must be 0 to 4, got 5"):
         cooperage.mesh(part, size=1, finer_retries=5)
+    with pytest.raises(cooperage.InputError, match="min_scaled_jacobian must be from -1 to 1, got 2"):
+        cooperage.mesh(part, size=1, min_scaled_jacobian=2)
     with pytest.raises(cooperage.InputError, match='decompose must be "auto" or "off"'):
         cooperage.mesh(part, size=1, decompose="yes")
     with pytest.raises(cooperage.InputError, match="cooperage.run"):

@@ -268,3 +268,14 @@ def test_decompose_cuts_a_part_no_scheme_takes_whole(tmp_path):
     assert total_volume(mesh.points, hexes, HEX_TETS) == pytest.approx(34, rel=1e-9)
     with pytest.raises(cooperage.Error, match="volume 1: no hex scheme applies"):
         cooperage.mesh(step, size=0.25, decompose="off")
+
+
+def test_min_scaled_jacobian_is_a_failing_check(source_dir):
+    part = os.path.join(source_dir, "examples", "part.step")
+    kept = cooperage.mesh(part, size=2, min_scaled_jacobian=0.0)
+    [check] = kept.checks
+    assert (check["metric"], check["min"], check["action"]) == ("scaled_jacobian", 0.0, "fail")
+    assert not check["failed"] and check["violations"] == 0
+    strict = cooperage.mesh(part, size=2, min_scaled_jacobian=0.9999, finer_retries=0)
+    [check] = strict.checks
+    assert check["failed"] and check["violations"] > 0
