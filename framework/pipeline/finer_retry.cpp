@@ -139,6 +139,16 @@ std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
   return halved;
 }
 
+std::vector<int> halve_volumes_again(const std::vector<int>& volumes, io::MeshSettings& settings,
+                                     std::map<int, FinerRetry>& retries) {
+  for (int volume : volumes) {
+    FinerRetry& r = retries.at(volume);
+    r.size *= 0.5;
+    setting_of(settings, volume).sizing.size = r.size;
+  }
+  return volumes;
+}
+
 void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& result) {
   std::vector<Warning> warnings;
   for (Verdict& v : result.verdicts) {

@@ -69,11 +69,16 @@ std::optional<double> worst_scaled_jacobian(const MeshResult& result, int volume
 /// Halves, in `settings`, the size of every volume of `result` that
 /// meshed with a worst scaled Jacobian below `floor` and whose size the
 /// settings give; records it in `retries` (for_quality). The user's
-/// failing check would reject that mesh (and write nothing), so a finer
-/// one is tried first, as for a volume that failed. Returns the volumes
-/// halved.
+/// failing check would reject that mesh (and write nothing), so finer ones
+/// are tried first, as for a volume that failed (mesh_model keeps the best
+/// attempt). Returns the volumes halved.
 std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
                                     io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
+
+/// Halves, in `settings`, the size of `volumes` once more (their retry in
+/// `retries` says the latest size); returns them.
+std::vector<int> halve_volumes_again(const std::vector<int>& volumes, io::MeshSettings& settings,
+                                     std::map<int, FinerRetry>& retries);
 
 /// A warning for every retried volume that meshed; for one that still
 /// failed, its hint says which sizes (and which direction) were tried.

@@ -550,45 +550,52 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       retries = std::move(turned_retries);
     }
     // Volumes that meshed worse than a failing quality check allows: the
-    // run would write nothing, so half the size is tried first, kept while
-    // every such volume's worst element gets better and nothing is refused.
+    // run would write nothing, so they are meshed again at half their size,
+    // and half that, at most finer_retries times; the best attempt is kept
+    // (every retried volume better, nothing refused).
     const std::optional<double> floor = failing_scaled_jacobian_floor(options.quality_checks);
     if (floor && retries.empty() && !result.incomplete()) {
-      io::MeshSettings current = settings;
+      io::MeshSettings current = settings;  // the latest attempt's
+      std::map<int, FinerRetry> tried;      // the latest attempt's halvings
+      std::vector<int> halved;
+      std::optional<MeshResult> latest;  // the latest attempt, when not kept
+      bool restaged = false;             // an attempt after the kept one staged exports
       for (int round = 0; round < settings.finer_retries; ++round) {
-        io::MeshSettings candidate = current;
-        std::map<int, FinerRetry> tried = retries;
-        const std::vector<int> halved = halve_poor_volumes(result, *floor, candidate, tried);
+        // From the latest attempt: its volumes still below the floor, or,
+        // when it was refused, the same volumes once more.
+        halved = latest && latest->incomplete()
+                     ? halve_volumes_again(halved, current, tried)
+                     : halve_poor_volumes(latest ? *latest : result, *floor, current, tried);
         if (halved.empty()) break;
         for (int volume : halved)
-          log::info("volume " + std::to_string(volume) + " meshed at size " +
-                    number_text(2 * tried.at(volume).size) + " below the quality check's " +
-                    number_text(*floor) + "; meshing again at " +
+          log::info("volume " + std::to_string(volume) + " below the quality check's " +
+                    number_text(*floor) + "; meshing it again at size " +
                     number_text(tried.at(volume).size));
-        MeshResult other;
+        restaged = true;
         try {
-          other = mesh_attempt(model, candidate, registry, options);
-        } catch (const MeshingError& e) {  // e.g. above max_elements: the first mesh stays
+          latest = mesh_attempt(model, current, registry, options);
+        } catch (const MeshingError& e) {  // e.g. above max_elements
           log::info("meshing again failed: " + e.message());
-          result.mesh_replaced = true;
           break;
         }
-        bool better = !other.incomplete();
-        for (int volume : halved) {
+        bool better = !latest->incomplete();
+        for (const auto& [volume, r] : tried) {
           const auto before = worst_scaled_jacobian(result, volume);
-          const auto after = worst_scaled_jacobian(other, volume);
+          const auto after = worst_scaled_jacobian(*latest, volume);
           better = better && after && before && *after > *before;
         }
-        if (!better) {
-          earlier += seconds(other);
-          result.mesh_replaced = true;  // the exports staged beside it were other's
-          break;
+        if (better) {
+          earlier += seconds(result);
+          result = std::move(*latest);
+          latest.reset();
+          retries = tried;
+          restaged = false;
+        } else {
+          earlier += seconds(*latest);
         }
-        earlier += seconds(result);
-        result = std::move(other);
-        current = std::move(candidate);
-        retries = std::move(tried);
       }
+      // The exports staged beside a later attempt are another mesh's.
+      if (restaged) result.mesh_replaced = true;
     }
     if (earlier > 0) result.stages.insert(result.stages.begin(), {"failed attempts", earlier});
     report_finer_retries(retries, result);

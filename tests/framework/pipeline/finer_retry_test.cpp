@@ -395,6 +395,23 @@ TEST_F(FinerRetries, AWarningCheckOrNoRetriesKeepThePoorMesh) {
   EXPECT_FALSE(written("out.vtu"));
 }
 
+// At 0.5 the move inverts a hex (0.3 is more than the half-size hex's
+// diagonal allows) and the volume is refused; a quarter of the size is
+// tried from there and meshes as the map does.
+TEST_F(FinerRetries, ARefusedRetryIsHalvedAgain) {
+  use_poor_scheme(1000);
+  const RunResult r = run_job(journal(poor_cube("", "fail")), registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 4096u);
+  EXPECT_NEAR(hex_volume(r.mesh.mesh), 64.0, 1e-9);
+  ASSERT_FALSE(r.mesh.warnings.empty());
+  EXPECT_EQ(r.mesh.warnings.front().text().rfind(
+                "volume 1: meshed at size 0.25, a quarter the size asked for (1), where", 0),
+            0u)
+      << r.mesh.warnings.front().text();
+  EXPECT_TRUE(written("out.vtu"));
+}
+
 TEST_F(FinerRetries, ARetryNoBetterKeepsTheFirstMeshAndTheCheckFails) {
   use_poor_scheme(1000000);  // at 0.5 the same move inverts a hex: the retry is worse
   const RunResult r = run_job(journal(poor_cube("", "fail")), registry_, selector::mesh_options());
