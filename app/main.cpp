@@ -147,8 +147,7 @@ int run_mesh(const std::string& model, double size, int dim, const std::string& 
   options.binary = binary;
   if (!report.empty()) options.reports = {report};
   options.min_scaled_jacobian = min_scaled_jacobian;
-  io::Job job = pipeline::model_job(model, options);
-  return finish_run(job, dim, limits);
+  return finish_run(pipeline::model_job(model, options), dim, limits);
 }
 
 // `cooperage schemes`: the registry of a run without a journal.

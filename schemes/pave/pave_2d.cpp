@@ -144,17 +144,19 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
                                     int nb, const PaveOptions& options) {
   Laps laps(options.stats);
   std::vector<detail::Quad> quads;
-  if (ids.size() == 1 && ids[0].size() == 4 && detail::scaled_jacobian_2d(P, {0, 1, 2, 3}) > 1e-6) {
-    quads.push_back({0, 1, 2, 3});
-  } else if (ids.size() == 1 && ids[0].size() == 4) {
-    // A four-node loop with a reflex corner (a dart: an imprinted sliver
-    // between two features) is no quad; a quad inside it, joined to each
-    // corner, splits the reflex angle. Smoothing places the inner nodes.
-    V2 centre = V2::Zero();
-    for (int i = 0; i < 4; ++i) centre += 0.25 * P[static_cast<size_t>(i)];
-    for (int i = 0; i < 4; ++i) P.push_back(0.5 * (P[static_cast<size_t>(i)] + centre));
-    for (int i = 0; i < 4; ++i) quads.push_back({i, (i + 1) % 4, 4 + (i + 1) % 4, 4 + i});
-    quads.push_back({4, 5, 6, 7});
+  if (ids.size() == 1 && ids[0].size() == 4) {
+    if (detail::scaled_jacobian_2d(P, {0, 1, 2, 3}) > 1e-6) {
+      quads.push_back({0, 1, 2, 3});
+    } else {
+      // A four-node loop with a reflex corner (a dart: an imprinted sliver
+      // between two features) is no quad; a quad inside it, joined to each
+      // corner, splits the reflex angle. Smoothing places the inner nodes.
+      V2 centre = V2::Zero();
+      for (int i = 0; i < 4; ++i) centre += 0.25 * P[static_cast<size_t>(i)];
+      for (int i = 0; i < 4; ++i) P.push_back(0.5 * (P[static_cast<size_t>(i)] + centre));
+      for (int i = 0; i < 4; ++i) quads.push_back({i, (i + 1) % 4, 4 + (i + 1) % 4, 4 + i});
+      quads.push_back({4, 5, 6, 7});
+    }
   } else {
     // (b) coarse loops; small holes first get a ring of quads.
     std::vector<std::vector<int>> work = ids;
