@@ -74,9 +74,9 @@ bool Imprinter::keep_clear(const Loop& chain, bool closed, const std::vector<Loo
         for (int q : l) {
           if (q == p0 || q == p1) continue;
           const Vec2& hq = xy().at(q);
-          const Vec2 foot = closest_on_segment(hq, a, c);
-          if ((foot - a).norm() <= 0 || (foot - c).norm() <= 0) continue;  // beyond the edge
-          const double beyond = (hq - foot).dot(away);  // towards where the edge moves
+          const auto foot = foot_inside_segment(hq, a, c);
+          if (!foot) continue;                           // beyond the edge
+          const double beyond = (hq - *foot).dot(away);  // towards where the edge moves
           if (beyond > -kTouching * len) push = std::max(push, beyond + margin);
         }
         if (push <= 0 || push > 0.3 * len) continue;  // nothing near, or no sliver
@@ -106,10 +106,10 @@ bool Imprinter::keep_clear(const Loop& chain, bool closed, const std::vector<Loo
           const double len = (c - a).norm();
           if (len <= 0) continue;
           const Vec2& p = xy().at(w);
-          const Vec2 foot = closest_on_segment(p, a, c);
-          if ((foot - a).norm() <= 0 || (foot - c).norm() <= 0) continue;
+          const auto foot = foot_inside_segment(p, a, c);
+          if (!foot) continue;
           const Vec2 left(-(c - a).y() / len, (c - a).x() / len);
-          const double inside = (p - foot).dot(left);
+          const double inside = (p - *foot).dot(left);
           if (inside >= kTouching * edge || inside < -0.3 * edge) continue;
           r_.ends.xy[w] += (margin - inside) * left;
           moved = true;

@@ -84,6 +84,15 @@ Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   return a + t * d;
 }
 
+std::optional<Vec2> foot_inside_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = d.squaredNorm();
+  if (!(len2 > 0.0)) return std::nullopt;
+  const double t = (p - a).dot(d) / len2;
+  if (!(t > 1e-9 && t < 1.0 - 1e-9)) return std::nullopt;
+  return Vec2(a + t * d);
+}
+
 std::optional<double> segment_hit(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
   const Vec2 r = p1 - p0, s = q1 - q0;
   const double d = cross(r, s);

@@ -56,6 +56,10 @@ using Loop = std::vector<int>;
 double cross(const Vec2& a, const Vec2& b);
 /// The point of segment a-b nearest p.
 Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b);
+/// The foot of p's perpendicular on segment a-b when it falls inside the
+/// segment by more than 1e-9 of its length: a foot at an end, up to
+/// rounding, is the end's (a moved part gave the other answer there).
+std::optional<Vec2> foot_inside_segment(const Vec2& p, const Vec2& a, const Vec2& b);
 /// Parameter on p0-p1 where it meets q0-q1 (touching included), if it does.
 std::optional<double> segment_hit(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1);
 /// Even-odd point in polygon.

@@ -6,6 +6,7 @@
 // by ribs, equal areas, even loops, the same total area on both ends.
 #include "schemes/cooper/imprint_subcaps.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -725,6 +726,24 @@ TEST(ImprintPolygons, LoopsSharingAnEdgeAreJoined) {
   // Holes touching at a node only stay apart.
   std::vector<std::vector<int>> pinched = {{1, 2, 3, 4, 5}, {6, 7, 8, 9}, {8, 10, 11}};
   EXPECT_FALSE(detail::merge_touching_holes(pinched));
+}
+
+// A point whose perpendicular meets a segment at its end meets it there
+// however the two are turned: rounding must not make the foot an inner
+// point in one chart and the end in another (keep_clear moved a node off
+// such an edge in a turned part only; campaign seed 6 case 61).
+TEST(ImprintPolygons, AFootAtASegmentsEndStaysThereWhenTurned) {
+  for (int k = 0; k < 360; ++k) {
+    const double t = k * M_PI / 180;
+    const Eigen::Rotation2Dd turn(t);
+    const Vec2 a = turn * Vec2(3, 1), b = turn * Vec2(6.3, 1), off = turn * Vec2(0, 2.7);
+    EXPECT_FALSE(detail::foot_inside_segment(a + off, a, b)) << k << " degrees";
+    EXPECT_FALSE(detail::foot_inside_segment(b - off, a, b)) << k << " degrees";
+    const auto mid = detail::foot_inside_segment(0.5 * (a + b) + off, a, b);
+    ASSERT_TRUE(mid) << k << " degrees";
+    EXPECT_NEAR((*mid - 0.5 * (a + b)).norm(), 0, 1e-12);
+  }
+  EXPECT_FALSE(detail::foot_inside_segment({1, 1}, {2, 0}, {2, 0}));  // no segment
 }
 
 TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
