@@ -6,6 +6,7 @@
 #include "framework/geometry/types.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,10 @@ struct Surface {
   std::vector<int> volumes;
   std::shared_ptr<const SurfaceGeometry> geometry;
   double area = 0.0;
+  /// Area centroid (off the face where it curves: on a whole cylinder's
+  /// axis); it moves with the face, unlike the box's centre. Unset in
+  /// models built without OCCT.
+  std::optional<Vec3> centroid;
   BoundingBox box;
 };
 

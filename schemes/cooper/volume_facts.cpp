@@ -72,7 +72,12 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     f.planar = s.geometry->type() == geom::SurfaceType::Plane;
     f.area = s.area;
     for (int v : s.volumes) f.other_volumes += v != volume_id && v != 0 ? 1 : 0;
-    const auto at = s.geometry->project(0.5 * (s.box.min + s.box.max));
+    // Near the area centroid, which moves with the face: the box centre of
+    // a hole's wall cut open by a pocket lay near its axis, where every
+    // point of the wall is nearly nearest, and the projection picked one by
+    // rounding; a turned part found the wall facing the other way in
+    // slab_regions (campaign seed 4 case 15: refused unless turned).
+    const auto at = s.geometry->project(s.centroid ? *s.centroid : 0.5 * (s.box.min + s.box.max));
     f.centre = at.point;
     f.normal = geom::sign(model.sense_in(id, volume_id)) * at.normal.normalized();
     for (const auto& loop : s.loops) {

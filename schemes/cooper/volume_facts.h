@@ -31,7 +31,7 @@ struct FaceFact {
   std::vector<double> angles;
   bool planar = false;
   geom::Vec3 normal = geom::Vec3::Zero();  ///< unit, out of the volume, at the face's centre
-  geom::Vec3 centre = geom::Vec3::Zero();  ///< a point of the face near its box centre
+  geom::Vec3 centre = geom::Vec3::Zero();  ///< the point of the face nearest its area centroid
   double area = 0;
   /// The registry's submap accepts it (single loop): it may be a side.
   bool submappable = false;

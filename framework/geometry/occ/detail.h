@@ -136,6 +136,7 @@ struct Piece {
 /// tolerances), computed once per face and thread (face_facts.cpp).
 struct FaceFacts {
   double area = 0.0;
+  geom::Vec3 centroid = geom::Vec3::Zero();
   geom::BoundingBox box;
 };
 FaceFacts face_facts(const TopoDS_Face& face);

@@ -1,4 +1,4 @@
-// The area and tight bounding box of a face, remembered per face (same
+// The area, area centroid and tight bounding box of a face, remembered per face (same
 // TShape and location) for the thread's later model builds: the
 // decomposition search builds a model for every candidate cut, and a cut
 // leaves most faces as they were. The tight box (BRepBndLib::AddOptimal, a
@@ -30,6 +30,10 @@ FaceFacts face_facts(const TopoDS_Face& face) {
   GProp_GProps props;
   BRepGProp::SurfaceProperties(face, props);
   out.area = std::abs(props.Mass());
+  if (out.area > 0) {
+    const gp_Pnt c = props.CentreOfMass();
+    out.centroid = Vec3(c.X(), c.Y(), c.Z());
+  }
   Bnd_Box b;
   BRepBndLib::AddOptimal(face, b, Standard_False, Standard_False);
   if (!b.IsVoid()) {

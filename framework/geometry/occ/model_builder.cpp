@@ -132,6 +132,7 @@ class Numbering {
       s.geometry = detail::make_surface_geometry(f);
       const detail::FaceFacts facts = detail::face_facts(f);
       s.area = facts.area;
+      if (facts.area > 0) s.centroid = facts.centroid;
       s.box = facts.box;
       const int id = model.add_surface(s);
       for (const auto& loop : s.loops)

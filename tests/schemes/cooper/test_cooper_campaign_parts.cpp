@@ -264,5 +264,25 @@ TEST(CooperImprintSlivers, AFourNodeDartSubcapIsMeshed) {
   expect_meshes("pocket_corner_over_two_holes", pocket_corner_over_two_holes, {6.213}, 155);
 }
 
+// A through hole whose wall a pocket cuts open, beside a slot from the top
+// and a blind hole from below (campaign seed 4 case 15). The wall's box
+// centre lies near its axis, where every point of the wall is nearly
+// nearest: its projection picked a point by rounding, and as built the
+// wall faced away from the pocket ("side surface 11 walls the volume in at
+// one cap and a hole at another": refused), turned it meshed. The wall is
+// now asked at the point nearest its area centroid.
+void hole_cut_open_by_pocket(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {74.99, 22.15, 29.24});
+  wb.cylinder("hole", {40.38, 12.18, -29.24}, {0, 0, 1}, 4.4, 87.72);
+  wb.brick("slot", {16.38, 11.21, 17.13}, {17.04, 2.52, 41.35});
+  wb.brick("pocket", {40.36, 4.78, 10.41}, {11.8, 8.62, 48.07});
+  wb.cylinder("blind", {16.19, 8.49, -29.24}, {0, 0, 1}, 3.51, 40.45);
+  wb.cut("part", {"block", "hole", "slot", "pocket", "blind"});
+}
+
+TEST(CooperImprintSlivers, AHoleWallCutOpenByAPocketFacesTheSameWayTurned) {
+  expect_meshes("hole_cut_open_by_pocket", hole_cut_open_by_pocket, {3.266}, 15);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper

@@ -58,6 +58,32 @@ TEST(OccTopology, Cylinder) {
   EXPECT_EQ(closed, 2);
 }
 
+// A face's area centroid: a brick face's centre; half a cylinder's wall
+// 2r/pi off its axis, on the wall's side (Pappus), turned with the part.
+TEST(OccTopology, SurfaceCentroids) {
+  Workbench wb;
+  wb.cylinder("c", Vec3(0, 0, 0), Vec3(0, 0, 1), 2.0, 5.0);
+  wb.brick("cut", Vec3(-3, -3, -1), Vec3(6, 3, 7));  // y < 0 goes (the seam is at y = 0)
+  wb.cut("half", {"c", "cut"});
+  wb.rotate("half", Vec3(0, 0, 0), Vec3(0, 0, 1), 30);
+  const Model m = wb.build_model();
+  const Vec3 expected =
+      4.0 / kPi * Vec3(-std::sin(kPi / 6), std::cos(kPi / 6), 0) + Vec3(0, 0, 2.5);
+  int walls = 0, planes = 0;
+  for (const auto& s : m.surfaces()) {
+    ASSERT_TRUE(s.centroid);
+    if (s.geometry->type() == geom::SurfaceType::Cylinder) {
+      ++walls;
+      EXPECT_NEAR((*s.centroid - expected).norm(), 0, 1e-7);
+    } else if (std::abs(s.area - 4 * 5) < 1e-6) {
+      ++planes;  // the cut face, a 4 x 5 rectangle through the axis
+      EXPECT_NEAR((*s.centroid - Vec3(0, 0, 2.5)).norm(), 0, 1e-7);
+    }
+  }
+  EXPECT_EQ(walls, 1);
+  EXPECT_EQ(planes, 1);
+}
+
 TEST(OccTopology, SphereAndCone) {
   Workbench wb;
   wb.sphere("s", Vec3(0, 0, 0), 2.0);
