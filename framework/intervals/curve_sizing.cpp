@@ -171,7 +171,7 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
   std::map<int, TurningCurve> turning;
   for (const auto& [id, z] : out) {
     if (!(z.turning > 0)) continue;
-    turning[id] = {z.turning, std::max(z.min, static_cast<int>(std::lround(z.goal)))};
+    turning[id] = {z.turning, std::max(z.min, static_cast<int>(whole_goal(z.goal)))};
   }
   for (const auto& [id, n] : faceting_minima(model, turning, options.faceting)) {
     CurveSizing& z = out.at(id);
@@ -179,5 +179,7 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
   }
   return out;
 }
+
+double whole_goal(double goal) { return std::floor(goal + 0.5 + 1e-9 * std::abs(goal)); }
 
 }  // namespace cooperage::intervals

@@ -55,4 +55,10 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
                                         const std::function<double(int)>& size_of,
                                         const SizingOptions& options = {});
 
+/// A goal rounded to whole intervals, a half up with a margin of 1e-9 of
+/// it: a 25-long edge at size 10 is 2.5 intervals only up to the rounding
+/// of its measured length, and rounding to nearest gave 2 or 3 as the part
+/// was turned (campaign seed 4 case 49).
+double whole_goal(double goal);
+
 }  // namespace cooperage::intervals

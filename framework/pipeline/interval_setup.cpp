@@ -86,7 +86,8 @@ intervals::IntervalProblem build_interval_problem(const geom::Model& model,
     // Whole goals: with fractional ones from graded sizes the integer
     // program's relaxation was weak and CBC took minutes on large
     // components (real-cad impeller: > 2 min, whole: 3 s).
-    const double goal = std::max<double>({std::round(z.goal), 1.0, static_cast<double>(z.min)});
+    const double goal =
+        std::max<double>({intervals::whole_goal(z.goal), 1.0, static_cast<double>(z.min)});
     const int least = std::max(min, z.min);
     if (z.graded) problem.set_size_function(curve.id, z.sizes);
     const io::Firmness f = own ? own->sizing.firmness : io::Firmness::Default;

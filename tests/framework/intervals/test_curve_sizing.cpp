@@ -169,5 +169,40 @@ TEST(CurveSizing, IsInvariantUnderRigidMotion) {
   for (size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 1e-6 * (1 + a[k]));
 }
 
+TEST(CurveSizing, AWholeGoalRoundsHalvesUpWhateverTheRounding) {
+  EXPECT_EQ(whole_goal(2.5), 3);
+  EXPECT_EQ(whole_goal(std::nextafter(2.5, 0.0)), 3);
+  EXPECT_EQ(whole_goal(2.5 - 1e-6), 2);
+  EXPECT_EQ(whole_goal(2.4), 2);
+  EXPECT_EQ(whole_goal(0.3), 0);  // callers raise it to their minimum
+}
+
+// A 25 x 35 x 15 brick at size 10: its edges are 2.5, 3.5 and 1.5 sizes
+// long exactly, and only up to the rounding of their measured lengths;
+// turned any way they get 3, 4 and 2 intervals (campaign seed 4 case 49: a 23.59
+// edge at size 9.436 got 3 as built and 2 turned).
+TEST(CurveSizing, EdgesOfHalfSizesGetTheSameCountsTurned) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  io::MeshSettings settings;
+  settings.size = 10.0;
+  for (int turn = 0; turn < 24; ++turn) {
+    occ::Workbench bench;
+    bench.brick("b", {0, 0, 0}, {25, 35, 15});
+    const Vec3 axis(std::cos(turn), std::sin(2.0 * turn), 0.5 + std::cos(3.0 * turn));
+    bench.rotate("b", {0, 0, 0}, axis, 15.0 * turn);
+    bench.translate("b", {0.1 * turn, -0.3 * turn, 7.0});
+    const geom::Model model = bench.build_model();
+    const auto plan = selector::planner()(model, registry, settings, 3);
+    const IntervalSolution sol =
+        solve(pipeline::build_interval_problem(model, registry, plan, settings));
+    for (const auto& c : model.curves()) {
+      const int expected = c.length > 30 ? 4 : c.length > 20 ? 3 : 2;
+      EXPECT_EQ(sol.intervals.at(c.id), expected)
+          << "curve " << c.id << " of length " << c.length << ", turn " << turn;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::intervals
