@@ -9,13 +9,24 @@
 namespace cooperage::cooper {
 
 double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy) {
+  if (loop.empty()) return 0;
+  // From the first node: the rounding then follows the loop's size, not
+  // its distance from the chart's origin (which a moved part changes).
+  const Vec2& o = xy.at(loop.front());
   double a = 0;
   for (size_t i = 0; i < loop.size(); ++i) {
-    const Vec2& p = xy.at(loop[i]);
-    const Vec2& q = xy.at(loop[(i + 1) % loop.size()]);
+    const Vec2 p = xy.at(loop[i]) - o;
+    const Vec2 q = xy.at(loop[(i + 1) % loop.size()]) - o;
     a += p.x() * q.y() - p.y() * q.x();
   }
   return 0.5 * a;
+}
+
+bool flat_loop(const std::vector<int>& loop, const std::map<int, Vec2>& xy) {
+  double perimeter = 0;
+  for (size_t i = 0; i < loop.size(); ++i)
+    perimeter += (xy.at(loop[(i + 1) % loop.size()]) - xy.at(loop[i])).norm();
+  return std::abs(signed_area(loop, xy)) <= 1e-12 * perimeter * perimeter;
 }
 
 std::vector<std::vector<int>> oriented_loops(std::vector<std::vector<int>> loops,

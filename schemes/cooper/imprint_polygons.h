@@ -24,6 +24,9 @@ struct Subcap {
 
 /// Signed area of a loop (positive counter-clockwise).
 double signed_area(const std::vector<int>& loop, const std::map<int, Vec2>& xy);
+/// No area up to rounding: at most 1e-12 of its perimeter squared (a loop
+/// walked along a line and back, a split along the subcap's own edges).
+bool flat_loop(const std::vector<int>& loop, const std::map<int, Vec2>& xy);
 
 /// The loops with the largest (the outer loop) first and counter-clockwise,
 /// the others (holes) clockwise.

@@ -746,6 +746,25 @@ TEST(ImprintPolygons, AFootAtASegmentsEndStaysThereWhenTurned) {
   EXPECT_FALSE(detail::foot_inside_segment({1, 1}, {2, 0}, {2, 0}));  // no segment
 }
 
+// A piece split along a subcap's own edges has no area, only rounding: it
+// is flat wherever the chart puts it and however it is turned (an
+// absolute 1e-14 kept or dropped it by the rounding; campaign seed 3 case
+// 153). A sliver of a thousandth of its length across is not flat.
+TEST(ImprintPolygons, AFlatLoopIsFlatWhereverItLies) {
+  for (int k = 0; k < 360; k += 7) {
+    const Eigen::Rotation2Dd turn(k * M_PI / 180);
+    const Vec2 origin(40.0 + k, -55.0 + 0.3 * k), along = turn * Vec2(1, 0);
+    std::map<int, Vec2> xy;
+    for (int i = 0; i < 4; ++i) xy[i] = origin + (2.6 * i + 0.1 * i * i) * along;
+    const std::vector<int> flat = {0, 1, 2, 3, 2, 1};  // along the line and back
+    const std::vector<int> chord = {0, 1, 2, 3};       // a split along the line
+    EXPECT_TRUE(flat_loop(flat, xy)) << k << " degrees";
+    EXPECT_TRUE(flat_loop(chord, xy)) << k << " degrees";
+    xy[4] = origin + 4.0 * along + turn * Vec2(0, 0.008);
+    EXPECT_FALSE(flat_loop({0, 3, 4}, xy)) << k << " degrees";
+  }
+}
+
 TEST(ImprintPolygons, LongFigureEightSplitsIntoTwoLoops) {
   // 20,000 nodes: two long lobes crossing once in the middle.
   std::map<int, Vec2> xy;
