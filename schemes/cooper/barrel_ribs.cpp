@@ -38,6 +38,24 @@ std::vector<int> node_faces(const SweepState& s, int g) {
   return {};
 }
 
+// The chart's u axis follows the part, not the global axes, so a moved part
+// is imprinted in the moved chart and gives the moved mesh: towards the
+// upper ring's first node (its order comes from the topology), or the first
+// node off the axis when that one lies on it.
+Vec3 chart_u_hint(const std::vector<Vec3>& ring, const Vec3& centre, const Vec3& d) {
+  double reach = 0;
+  for (const Vec3& p : ring) {
+    const Vec3 r = p - centre;
+    reach = std::max(reach, (r - r.dot(d) * d).norm());
+  }
+  for (const Vec3& p : ring) {
+    const Vec3 r = p - centre;
+    const Vec3 across = r - r.dot(d) * d;
+    if (across.norm() > 0.1 * reach) return across.normalized();
+  }
+  return std::abs(d.x()) > 0.6 ? Vec3::UnitY() : Vec3::UnitX();
+}
+
 }  // namespace
 
 std::string SweepState::barrel_name(size_t b) const {
@@ -177,26 +195,6 @@ void form_ribs(SweepState& s) {
     }
   }
 }
-
-// The chart's u axis follows the part, not the global axes, so a moved part
-// is imprinted in the moved chart and gives the moved mesh: towards the
-// upper ring's first node (its order comes from the topology), or the first
-// node off the axis when that one lies on it.
-namespace {
-Vec3 chart_u_hint(const std::vector<Vec3>& ring, const Vec3& centre, const Vec3& d) {
-  double reach = 0;
-  for (const Vec3& p : ring) {
-    const Vec3 r = p - centre;
-    reach = std::max(reach, (r - r.dot(d) * d).norm());
-  }
-  for (const Vec3& p : ring) {
-    const Vec3 r = p - centre;
-    const Vec3 across = r - r.dot(d) * d;
-    if (across.norm() > 0.1 * reach) return across.normalized();
-  }
-  return std::abs(d.x()) > 0.6 ? Vec3::UnitY() : Vec3::UnitX();
-}
-}  // namespace
 
 // cite: Blacker 1996, sec. 5 (the two caps of a barrel, connected through
 // its ribs, compared in one plane) and sec. 6.1 (least-squares projection).
