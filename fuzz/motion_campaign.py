@@ -3,7 +3,7 @@
 invariant"; the paper's orientation insensitivity): a moved part gives the
 moved mesh.
 
-usage: fuzz/motion_campaign.py COUNT --bin BUILD/bin/cooperage [--seed S] [--out DIR]
+usage: fuzz/motion_campaign.py COUNT --bin BUILD/bin/cooperage [--seed S] [--out DIR] [--case C ...]
 
 Builds the random parts of parity_campaign.py (same seed, same parts) and
 runs each twice at its own size (no finer retry): as built, and turned
@@ -70,13 +70,15 @@ def main():
     ap.add_argument("--bin", required=True)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--out", default="motion_campaign")
+    ap.add_argument("--case", type=int, action="append",
+                    help="run only this case (repeatable; COUNT is then ignored)")
     args = ap.parse_args()
     os.makedirs(os.path.join(args.out, "cases"), exist_ok=True)
     tally = {}
     bad = 0
     with open(os.path.join(args.out, "results.jsonl"), "w") as results, \
             tempfile.TemporaryDirectory() as work:
-        for case in range(args.count):
+        for case in args.case or range(args.count):
             text, what = parity_campaign.random_part(random.Random(args.seed * 100003 + case))
             text = text.replace('decompose="off"', 'decompose="off" finer_retries="0"')
             rng = random.Random(7919 * args.seed + case)

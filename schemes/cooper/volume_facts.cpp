@@ -38,21 +38,41 @@ double VolumeFacts::extent(const std::vector<int>& curve_ids) const {
   return hi.x() >= lo.x() ? (hi - lo).norm() : 0.0;
 }
 
-double VolumeFacts::size() const {
-  if (vertices.empty()) return 1.0;
-  geom::Vec3 lo = vertices.begin()->second, hi = lo;
-  for (const auto& [id, p] : vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  for (const auto& [id, c] : curves) {
-    for (const geom::Vec3& p : c.samples) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
+double VolumeFacts::size() const { return known_size > 0 ? known_size : span(); }
+
+double VolumeFacts::span() const {
+  // The span of the vertices and curve samples, which a rigid motion keeps
+  // (the box's diagonal grew by up to 1.7 when a part was turned, and a
+  // 0.01 step between two floors was a level or not by the tolerance
+  // derived from it: campaign seed 5 case 176): from the first vertex the
+  // farthest point, from that the farthest again, while the distance grows.
+  // A box-shaped part gets its box's diagonal, as before.
+  std::vector<geom::Vec3> points;
+  for (const auto& [id, p] : vertices) points.push_back(p);
+  for (const auto& [id, c] : curves)
+    points.insert(points.end(), c.samples.begin(), c.samples.end());
+  if (points.empty()) return 1.0;
+  auto farthest = [&](const geom::Vec3& from) {
+    size_t best = 0;
+    double d2 = -1;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double e = (points[i] - from).squaredNorm();
+      if (e > d2) {
+        d2 = e;
+        best = i;
+      }
     }
+    return std::make_pair(best, std::sqrt(d2));
+  };
+  size_t at = 0;
+  double span = 0;
+  for (int round = 0; round < 4; ++round) {
+    const auto [next, d] = farthest(points[at]);
+    if (!(d > span)) break;
+    span = d;
+    at = next;
   }
-  const double d = (hi - lo).norm();
-  return d > 0 ? d : 1.0;
+  return span > 0 ? span : 1.0;
 }
 
 VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::Registry& registry,
@@ -130,6 +150,7 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
       }
     }
   }
+  out.known_size = out.span();
   return out;
 }
 

@@ -75,8 +75,12 @@ struct VolumeFacts {
   const FaceFact* face(int id) const;
   /// Faces of the volume whose loops use the curve (ascending, once each).
   std::vector<int> faces_of_curve(int curve) const;
-  /// Diagonal of the box of all vertices (a length scale for tolerances).
+  /// Span of the vertices and curve samples (a length scale for
+  /// tolerances): a long chord of the point set, the same for a moved part.
+  /// gather_facts() keeps it in `known_size`; hand-made facts measure it.
   double size() const;
+  double span() const;
+  double known_size = 0;
   /// Diagonal of the box of the given curves' samples (0 for none).
   double extent(const std::vector<int>& curve_ids) const;
 };

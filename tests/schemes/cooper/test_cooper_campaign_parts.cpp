@@ -284,5 +284,26 @@ TEST(CooperImprintSlivers, AHoleWallCutOpenByAPocketFacesTheSameWayTurned) {
   expect_meshes("hole_cut_open_by_pocket", hole_cut_open_by_pocket, {3.266}, 15);
 }
 
+// A cut from the top with its floor at 18.82 beside a pocket whose floor
+// is at 18.83, a through hole and a small boss (campaign seed 5 case 176).
+// Whether the two floors were one level of the sweep came from a tolerance
+// of 1e-4 of the part's box diagonal, 0.009 as built: turned, the box grew
+// and the 0.01 step became one level, and the walls' nodes moved up to 0.9.
+// The length scale is now the span of the part's points, which a motion
+// keeps.
+void floors_a_hundredth_apart(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {55.68, 40.1, 29.61});
+  wb.cylinder("hole", {36.57, 29.15, -29.61}, {0, 0, 1}, 5.89, 88.83);
+  wb.cylinder("cut", {43.31, 26.94, 18.82}, {0, 0, 1}, 9.6, 40.4);
+  wb.brick("pocket", {24.58, 16.55, 18.83}, {9.2, 5.12, 40.39});
+  wb.cylinder("boss", {33.05, 29.96, 29.61}, {0, 0, 1}, 3.11, 28.54);
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "hole", "cut", "pocket"});
+}
+
+TEST(CooperImprintSlivers, FloorsAHundredthApartAreLevelsTheSameWayTurned) {
+  expect_meshes("floors_a_hundredth_apart", floors_a_hundredth_apart, {4.202}, 176);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
