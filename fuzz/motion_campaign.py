@@ -28,7 +28,6 @@ import math
 import os
 import random
 import shutil
-import subprocess
 import sys
 import tempfile
 
@@ -55,13 +54,11 @@ def final_shape(text):
 
 
 def run(binary, journal):
-    try:
-        p = subprocess.run([binary, "run", "-q", journal], capture_output=True, text=True,
-                           timeout=parity_campaign.TIME_LIMIT)
-    except subprocess.TimeoutExpired:
-        return None, "timed out"
-    lines = [l for l in p.stderr.splitlines() if "error" in l]
-    return p.returncode, (lines[0][:200] if lines else "")
+    """Exit code (None when it hung) and the first error line."""
+    code, err, _, hung = parity_campaign.run([binary, "run", "-q", journal],
+                                             os.path.dirname(journal))
+    lines = [l for l in err.splitlines() if "error" in l]
+    return code, "timed out" if hung else (lines[0][:200] if lines else "")
 
 
 def main():
