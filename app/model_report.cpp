@@ -169,6 +169,10 @@ void write_model_json(const geom::Model& model, const std::string& source, std::
     } else {
       j.null();
     }
+    j.key("box_min");
+    vec(s.box.min);
+    j.key("box_max");
+    vec(s.box.max);
     j.key("loops");
     j.begin_array();
     for (const auto& loop : s.loops) {

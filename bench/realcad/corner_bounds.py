@@ -81,6 +81,9 @@ def main():
         for name in args.files:
             path = name if os.path.exists(name) else os.path.join(DEFAULT_FOLDER, name)
             model = info(args.bin, path)
+            if model is None:  # no solid (a surface model): run_realcad.py reports it
+                print("%s: no model (`cooperage info` fails)" % os.path.basename(path))
+                continue
             corner = {s["id"]: (s["sharpest_corner"] or {"degrees": 360.0})["degrees"]
                       for s in model["surfaces"]}
             out = os.path.join(tmp, "out.msh")

@@ -7,8 +7,8 @@ usage: bench/realcad/run_realcad.py --bin BUILD/bin/cooperage [--dim 3|2]
 
 For each file F (default: every .step/.stp/.brep of the folder):
   cooperage mesh F --size D/DIV --dim DIM -o OUT.vtu --threads 1
-with D the diagonal of the bounding box of all volumes (`cooperage info
---json`). A run counts as meshed when it exits 0 AND the .vtu passes this
+with D the diagonal of the bounding box of all volumes (of all surfaces in
+a surface model; `cooperage info --json`). A run counts as meshed when it exits 0 AND the .vtu passes this
 script's own checks, read with meshio (not Cooperage's readers):
   3D: only hexes (or wedges), every corner Jacobian positive, no element face
       in more than two elements, a closed boundary, the meshed volume within
@@ -48,7 +48,7 @@ def info(binary, path):
 
 
 def diagonal(model):
-    vs = model["volumes"]
+    vs = model["volumes"] or model["surfaces"]  # a surface model has no volume
     lo = [min(v["box_min"][i] for v in vs) for i in range(3)]
     hi = [max(v["box_max"][i] for v in vs) for i in range(3)]
     return math.dist(lo, hi)
@@ -136,8 +136,8 @@ def check_2d(path, cad_area):
 
 def run_one(binary, path, dim, div, timeout, tmp):
     model = info(binary, path)
-    if not model or not model["volumes"]:
-        return "no solid (cooperage info finds no volume)", 0, 0.0, None
+    if not model or not (model["volumes"] or model["surfaces"]):
+        return "no model (`cooperage info` fails)", 0, 0.0, None
     size = diagonal(model) / div
     out = os.path.join(tmp, os.path.basename(path) + ".vtu")
     t0 = time.monotonic()

@@ -5,7 +5,12 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/build_geometry.h"
 
+#include <algorithm>
 #include <chrono>
+#include <map>
+#include <string>
+#include <variant>
+#include <vector>
 
 namespace cooperage::pipeline {
 namespace {
@@ -46,6 +51,33 @@ bool scheme_pinned(const io::MeshSettings& s, int volume) {
   return false;
 }
 
+// A volume mesh of a model that has surfaces but no volume (a surface
+// model that no sewing closed, issue 16) is refused saying why, with the
+// curves that bound a single surface counted, not run as a surface mesh.
+void require_a_volume(const geom::Model& model, const io::Job& job) {
+  if (!model.volumes().empty() || model.surfaces().empty()) return;
+  std::vector<std::string> files;
+  for (const io::GeometryStep& step : job.geometry) {
+    if (const auto* import = std::get_if<io::ImportOp>(&step.op)) files.push_back(import->file);
+  }
+  std::map<int, int> uses;
+  for (const geom::Surface& s : model.surfaces()) {
+    for (const geom::Loop& loop : s.loops) {
+      for (const geom::CurveUse& use : loop.uses) ++uses[use.curve];
+    }
+  }
+  const auto open =
+      std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second == 1; });
+  throw MeshingError(
+      ErrorCode::InvalidInput, EntityRef::none(),
+      (files.size() == 1 ? files.front() + ": " : std::string()) + "no volume to mesh: " +
+          (model.surfaces().size() == 1
+               ? std::string("its one surface bounds none (")
+               : "its " + std::to_string(model.surfaces().size()) + " surfaces bound none (") +
+          std::to_string(open) + " curves bound a single surface, even after sewing)",
+      "`cooperage mesh FILE --dim 2` meshes the surfaces");
+}
+
 }  // namespace
 
 double decomposition_size(const io::MeshSettings& settings, const geom::Model& model) {
@@ -66,6 +98,7 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   out.model = bench.build_model(build);
   out.geometry_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (dim == 3) require_a_volume(out.model, job);
   out.decomposition.origin.clear();
   for (const geom::Volume& v : out.model.volumes()) out.decomposition.origin.push_back(v.id);
   if (dim != 3 || !job.mesh || job.mesh->decompose == io::Decompose::Off) return out;

@@ -303,7 +303,7 @@ TEST_F(RunCommand, PlanOfASphereSaysNoHexSchemeApplies) {
   EXPECT_EQ(j.out, "0 ['map', 'cooper']\n");
 }
 
-TEST_F(RunCommand, OpenShellIsRejectedWithTheFileAndNoOutput) {
+TEST_F(RunCommand, OpenShellIsRefusedAVolumeMeshButMeshesIn2D) {
   // A lone B-spline face: a shell that bounds no solid.
   occ::Workbench bench;
   std::vector<std::vector<geom::Vec3>> grid;
@@ -316,10 +316,24 @@ TEST_F(RunCommand, OpenShellIsRejectedWithTheFileAndNoOutput) {
   const auto r =
       run_command(kCli + " mesh " + path("sheet.step") + " --size 0.5 -q -o " + path("sheet.exo"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(lines(r.err), 1u) << r.err;
-  EXPECT_NE(r.err.find("sheet.step"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("no solids"), std::string::npos) << r.err;
+  EXPECT_LE(lines(r.err), 3u) << r.err;
+  // The file, the reason (its one face's four curves are free) and what to do.
+  EXPECT_NE(r.err.find("sheet.step: no volume to mesh: its one surface bounds none (4 curves bound "
+                       "a single surface, even after sewing)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--dim 2"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("sheet.exo")));
+  const auto plan = run_command(kCli + " plan " + path("sheet.step") + " --size 0.5");
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_NE(plan.err.find("no volume to mesh"), std::string::npos) << plan.err;
+  // Its surface meshes in 2D: 3 x 3 at size 0.5 is 6 x 6 quads or more.
+  const auto flat = run_command(kCli + " mesh " + path("sheet.step") + " --size 0.5 --dim 2 -o " +
+                                path("sheet.vtu"));
+  ASSERT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_TRUE(fs::exists(path("sheet.vtu")));
+  EXPECT_NE(flat.out.find("surface 1 "), std::string::npos) << flat.out;
+  EXPECT_NE(flat.out.find("hexes 0"), std::string::npos) << flat.out;
 }
 
 TEST_F(RunCommand, MeshCommandRejectsANonPositiveSize) {

@@ -126,7 +126,10 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
       s = fix.Shape();
     }
     s = solidify(s);
-    if (!detail::contains_solid(s)) parse_error(path, "the file holds no solids");
+    // A surface model that no sewing closes keeps its faces: they mesh in
+    // 2D, and a volume mesh of it is refused with the reason (pipeline).
+    if (!detail::contains_solid(s) && !TopExp_Explorer(s, TopAbs_FACE).More())
+      parse_error(path, "the file holds no solids and no faces");
     return s;
   });
   TopoDS_Shape merged;
