@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <set>
 
 namespace cooperage::cooper {
@@ -58,14 +59,31 @@ BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice
     }
     return regions;
   };
-  // Regions of slab `to` continuing the cycles of region r of slab `from`.
+  // Regions of slab `to` continuing the cycles of region r of slab `from`:
+  // a cycle passing the level between them unchanged, else one that keeps
+  // a face of it across the level (a wall whose ring gains a face between
+  // levels: a lug's conical underside joins the ring below the level it
+  // ends on, so the rings above and below that level differ by it).
   auto continuing = [&](size_t from, int r, size_t to) {
     std::set<int> regions;
-    const auto cycles = region_cycles(slabs.slabs[from], static_cast<size_t>(r));
+    const Slab& f = slabs.slabs[from];
     const Slab& t = slabs.slabs[to];
+    const auto cycles = region_cycles(f, static_cast<size_t>(r));
     for (size_t c = 0; c < t.cycles.size(); ++c) {
       if (std::find(cycles.begin(), cycles.end(), t.cycles[c].faces) != cycles.end()) {
         regions.insert(region_of_cycle(t, static_cast<int>(c)));
+      }
+    }
+    if (!regions.empty()) return regions;
+    for (int fc : f.regions[static_cast<size_t>(r)]) {
+      const Cycle& mine = f.cycles[static_cast<size_t>(fc)];
+      for (size_t c = 0; c < t.cycles.size(); ++c) {
+        const Cycle& theirs = t.cycles[c];
+        if (theirs.outer != mine.outer) continue;
+        std::vector<int> common;
+        std::set_intersection(mine.faces.begin(), mine.faces.end(), theirs.faces.begin(),
+                              theirs.faces.end(), std::back_inserter(common));
+        if (!common.empty()) regions.insert(region_of_cycle(t, static_cast<int>(c)));
       }
     }
     return regions;

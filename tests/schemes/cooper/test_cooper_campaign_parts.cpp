@@ -2,7 +2,8 @@
 // their own size (most at every size): imprinting where loops of a barrel's
 // two ends come within a sliver of each other (Blacker 1996, sec. 5), the
 // new nodes of a virtual cap between the barrel's ends, a side's columns
-// round a hole, a projected subcap folded. Each meshes all-hex, conformal,
+// round a hole, a projected subcap folded; and parts the plan refused
+// (barrel formation, sec. 4). Each meshes all-hex, conformal,
 // with no inverted element, the volume within 1 %, and the same mesh after
 // a rigid motion.
 #include "support/hex_mesh_check.h"
@@ -303,6 +304,27 @@ void floors_a_hundredth_apart(occ::Workbench& wb) {
 
 TEST(CooperImprintSlivers, FloorsAHundredthApartAreLevelsTheSameWayTurned) {
   expect_meshes("floors_a_hundredth_apart", floors_a_hundredth_apart, {4.202}, 176);
+}
+
+// A lug with a conical underside on a block's end wall and a blind hole
+// from the bottom whose floor (z = 16.13) lies above the cone's top rim
+// (z = 7.27; campaign seed 3 case 175). The cone joins the ring of side
+// faces between the levels 3.74 and 16.13, so the rings above and below
+// the floor's level differ by it, and the plan refused ("cap 11 bounds no
+// region between two levels"): the floor was placed only on a region whose
+// ring passes its level unchanged. A ring that keeps a face across the
+// level continues it now.
+void lug_cone_and_blind_hole(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {20.15, 32.88, 22.41});
+  wb.cylinder("lug", {20.15, 14.31, 7.27}, {0, 0, 1}, 7.14, 15.14);
+  wb.cone("under", {20.15, 14.31, 3.74}, {0, 0, 1}, 4.28, 7.14, 3.53);
+  wb.cylinder("hole", {13.28, 27.77, -22.41}, {0, 0, 1}, 2.66, 38.54);
+  wb.fuse("body", {"block", "lug", "under"});
+  wb.cut("part", {"body", "hole"});
+}
+
+TEST(CooperBarrelFormation, AHoleFloorAboveALugsConeEndsItsBarrel) {
+  expect_meshes("lug_cone_and_blind_hole", lug_cone_and_blind_hole, {3.954, 1.977}, 175);
 }
 
 }  // namespace

@@ -286,6 +286,65 @@ TEST(PlanSteps, ABlindPocketsFloorJoinsTheBarrelBelowIt) {
   EXPECT_TRUE(s.order.upper.at(floor));
 }
 
+// A 4 x 4 x 2 block with a blind hole from the bottom (1 x 1, floor at
+// 1.5) and a lug on its right wall (x 4 to 6, y 1 to 3, floor at 0.5) whose
+// outer bottom edge is chamfered up to 1.2: the chamfer is a side that
+// joins the ring between the levels 0.5 and 1.5 (a lug's conical underside
+// in the campaign), so the rings above and below the hole's floor differ
+// by it.
+std::vector<PolyFace> chamfered_lug_and_blind_hole() {
+  std::vector<PolyFace> f;
+  f.push_back(
+      {oriented(rect_xy(0, 0, 4, 4, 0), kDown), oriented(rect_xy(1, 1, 2, 2, 0), kDown, false)});
+  f.push_back({oriented(
+      {{0, 0, 2}, {4, 0, 2}, {4, 1, 2}, {6, 1, 2}, {6, 3, 2}, {4, 3, 2}, {4, 4, 2}, {0, 4, 2}},
+      kUp)});
+  f.push_back({oriented({{0, 0, 0}, {4, 0, 0}, {4, 0, 2}, {0, 0, 2}}, Vec3(0, -1, 0))});
+  f.push_back({oriented({{0, 4, 0}, {4, 4, 0}, {4, 4, 2}, {0, 4, 2}}, Vec3(0, 1, 0))});
+  f.push_back({oriented({{0, 0, 0}, {0, 4, 0}, {0, 4, 2}, {0, 0, 2}}, Vec3(-1, 0, 0))});
+  f.push_back({oriented(
+      {{4, 0, 0}, {4, 4, 0}, {4, 4, 2}, {4, 3, 2}, {4, 3, 0.5}, {4, 1, 0.5}, {4, 1, 2}, {4, 0, 2}},
+      Vec3(1, 0, 0))});
+  f.push_back({oriented(rect_xy(4, 1, 5.5, 3, 0.5), kDown)});  // the lug's floor
+  f.push_back({oriented({{5.5, 1, 0.5}, {5.5, 3, 0.5}, {6, 3, 1.2}, {6, 1, 1.2}},
+                        Vec3(0.7, 0, -0.5))});  // the chamfer
+  f.push_back({oriented({{6, 1, 1.2}, {6, 3, 1.2}, {6, 3, 2}, {6, 1, 2}}, Vec3(1, 0, 0))});
+  for (double y : {1.0, 3.0}) {
+    f.push_back({oriented({{4, y, 0.5}, {5.5, y, 0.5}, {6, y, 1.2}, {6, y, 2}, {4, y, 2}},
+                          Vec3(0, y > 2 ? 1 : -1, 0))});
+  }
+  for (const PolyFace& w : walls(1, 1, 2, 2, 0, 1.5, true)) f.push_back(w);
+  f.push_back({oriented(rect_xy(1, 1, 2, 2, 1.5), kDown)});  // the hole's floor
+  return f;
+}
+
+TEST(PlanSteps, AHolesFloorEndsTheBarrelAboveARingThatGainsAChamfer) {
+  const VolumeFacts facts = facts_test::polyhedron_facts(chamfered_lug_and_blind_hole());
+  ASSERT_EQ(facts.faces.size(), 16u);
+  const int floor = facts.faces.back().id;
+  const int lug_floor = 7, chamfer = 8;
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_TRUE(s.tree.ok) << s.tree.why;
+  ASSERT_EQ(s.slabs.slabs.size(), 3u);
+  // The chamfer is in the ring of the middle slab only.
+  for (size_t k = 0; k < 3; ++k) {
+    bool has = false;
+    for (const Cycle& c : s.slabs.slabs[k].cycles)
+      has = has || std::count(c.faces.begin(), c.faces.end(), chamfer) > 0;
+    EXPECT_EQ(has, k == 1) << k;
+  }
+  // Down from the top: the hole's floor ends the first barrel (with the
+  // virtual cap of the ring that continues), the lug's floor the second.
+  ASSERT_EQ(s.tree.barrels.size(), 3u);
+  EXPECT_EQ(s.tree.cap_end.at(floor).first, 0);
+  EXPECT_FALSE(s.tree.cap_end.at(floor).second);
+  EXPECT_EQ(s.tree.cap_end.at(lug_floor).first, 1);
+  EXPECT_FALSE(s.tree.cap_end.at(lug_floor).second);
+  const auto& lower = s.tree.barrels[0].lower;
+  EXPECT_TRUE(
+      std::any_of(lower.begin(), lower.end(), [&](const EndPiece& e) { return e.interface >= 0; }));
+}
+
 /// Every slab, top down, is one region: the block's walls (outer) round
 /// one hole of `hole_walls[k]` faces.
 void expect_walls_round_one_hole(const SlabRegions& slabs, const std::vector<size_t>& hole_walls) {
