@@ -327,5 +327,28 @@ TEST(CooperBarrelFormation, AHoleFloorAboveALugsConeEndsItsBarrel) {
   expect_meshes("lug_cone_and_blind_hole", lug_cone_and_blind_hole, {3.954, 1.977}, 175);
 }
 
+// A blind hole from the bottom (floor at 12.4) that opens into a notch cut
+// from the top into the front wall (floor at 9.51), with a through hole
+// and a boss (campaign seed 3 case 128). Between the two floors no cap
+// bounds the volume: the notch's floor faces up, the hole's down. There the
+// hole's wall walls the volume in (the hole and the notch are one opening
+// to the outside) and below the notch's floor a hole, and its facing is
+// mixed, so the plan refused ("side surface 1 walls the volume in at one
+// cap and a hole at another"). The faces of that ring that wall one side
+// at every cap (the block's and the notch's walls, all outer) decide now.
+void blind_hole_into_notch(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {60.93, 55.13, 18.38});
+  wb.cylinder("blind", {10.12, 21.76, -18.38}, {0, 0, 1}, 9.52, 30.78);
+  wb.cylinder("notch", {19.84, 8.36, 9.51}, {0, 0, 1}, 11.44, 27.25);
+  wb.cylinder("hole", {31.86, 41.46, -18.38}, {0, 0, 1}, 5.91, 55.14);
+  wb.brick("boss", {12.68, 36.9, 18.38}, {18.62, 5.82, 4.09});
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "blind", "notch", "hole"});
+}
+
+TEST(CooperBarrelFormation, ABlindHoleOpeningIntoANotchWallsTheVolumeIn) {
+  expect_meshes("blind_hole_into_notch", blind_hole_into_notch, {4.79, 3.5}, 128);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
