@@ -314,6 +314,12 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
                     " walls the volume in at one cap and a hole at another";
           return out;
         }
+      } else if (here == std::set<bool>{true} && on_holes.empty() && facing_now() < 0) {
+        // Outer by convex contacts on outer loops alone, while every wall
+        // faces the ring's middle: a hole whose rim has joined a cap's
+        // outer loop (it cuts into a boss's footprint that crosses the
+        // block's edge, so the rim and the footprint are one notch in it).
+        here = {false};
       }
       c.outer = here.empty() ? out.outer_face.at(faces.front()) : *here.begin();
       for (int f : faces) {

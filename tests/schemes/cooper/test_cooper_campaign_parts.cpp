@@ -350,5 +350,25 @@ TEST(CooperBarrelFormation, ABlindHoleOpeningIntoANotchWallsTheVolumeIn) {
   expect_meshes("blind_hole_into_notch", blind_hole_into_notch, {4.79, 3.5}, 128);
 }
 
+// A box boss on the top overhanging the block's left edge by 0.73 and a
+// blind hole from the top (floor at 11.69) that cuts into the boss's corner
+// (campaign seed 3 case 162). The boss's footprint crosses the edge, so it
+// notches the top's outer loop, and the hole's rim joins that notch: the
+// hole's wall meets the top on its outer loop only, which made it an outer
+// wall, and the plan refused ("two outer cycles of side faces (1, ...)
+// bound one region"). A ring whose walls all face its middle is a hole
+// when only such contacts say otherwise.
+void hole_rim_in_an_outer_loop(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {35.15, 44.6, 18.44});
+  wb.cylinder("blind", {14.46, 22.93, 11.69}, {0, 0, 1}, 6.17, 25.19);
+  wb.brick("boss", {-0.73, 27.52, 18.44}, {13.88, 14.7, 15.31});
+  wb.fuse("body", {"block", "boss"});
+  wb.cut("part", {"body", "blind"});
+}
+
+TEST(CooperBarrelFormation, AHoleWhoseRimJoinsTheTopsOuterLoopIsAHole) {
+  expect_meshes("hole_rim_in_an_outer_loop", hole_rim_in_an_outer_loop, {3.901}, 162);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
