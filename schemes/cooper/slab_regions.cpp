@@ -107,6 +107,13 @@ int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const 
   }
   if (n == 0) return 0;
   middle /= static_cast<double>(n);
+  // A ring of one face (a whole cylinder closed by its seam): its contacts
+  // may be arcs on one side of it, and its one point says nothing about
+  // where the rest lies; its area centroid lies inside the ring.
+  if (cycle.faces.size() == 1) {
+    const FaceFact& face = *facts.face(cycle.faces.front());
+    if (across(face.centroid - face.centre).norm() > 1e-6 * facts.size()) middle = face.centroid;
+  }
   int away = 0, towards = 0;
   for (int f : cycle.faces) {
     const FaceFact& face = *facts.face(f);
@@ -199,6 +206,20 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
     const auto [it, added] = out.outer_face.emplace(k.face, outer_at(k));
     if (!added && it->second != outer_at(k)) mixed.insert(k.face);
   }
+  // Whether a cycle is called outer by convex contacts on caps' outer
+  // loops alone: those of the caps bounding its slab (`here`), or where no
+  // cap bounds it, its faces' own roles, none of them from a hole loop.
+  auto outer_by_outer_loops = [&](const std::set<bool>& here, const std::set<bool>& on_holes,
+                                  const std::vector<int>& faces) {
+    if (!on_holes.empty()) return false;
+    if (!here.empty()) return here == std::set<bool>{true};
+    for (int f : faces) {
+      if (mixed.count(f) || !out.outer_face.at(f)) return false;
+    }
+    return std::none_of(lattice.contacts.begin(), lattice.contacts.end(), [&](const CapContact& k) {
+      return k.cap_loop != 0 && std::binary_search(faces.begin(), faces.end(), k.face);
+    });
+  };
   for (bool progress = true; progress;) {
     progress = false;
     for (int s : lattice.sides) {
@@ -314,11 +335,12 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
                     " walls the volume in at one cap and a hole at another";
           return out;
         }
-      } else if (here == std::set<bool>{true} && on_holes.empty() && facing_now() < 0) {
+      } else if (outer_by_outer_loops(here, on_holes, faces) && facing_now() < 0) {
         // Outer by convex contacts on outer loops alone, while every wall
         // faces the ring's middle: a hole whose rim has joined a cap's
         // outer loop (it cuts into a boss's footprint that crosses the
-        // block's edge, so the rim and the footprint are one notch in it).
+        // block's edge, so the rim and the footprint are one notch in it;
+        // or it cuts a foot's edge at the foot's bottom).
         here = {false};
       }
       c.outer = here.empty() ? out.outer_face.at(faces.front()) : *here.begin();

@@ -97,7 +97,8 @@ VolumeFacts gather_facts(const geom::Model& model, int volume_id, const scheme::
     // point of the wall is nearly nearest, and the projection picked one by
     // rounding; a turned part found the wall facing the other way in
     // slab_regions (campaign seed 4 case 15: refused unless turned).
-    const auto at = s.geometry->project(s.centroid ? *s.centroid : 0.5 * (s.box.min + s.box.max));
+    f.centroid = s.centroid ? *s.centroid : 0.5 * (s.box.min + s.box.max);
+    const auto at = s.geometry->project(f.centroid);
     f.centre = at.point;
     f.normal = geom::sign(model.sense_in(id, volume_id)) * at.normal.normalized();
     for (const auto& loop : s.loops) {

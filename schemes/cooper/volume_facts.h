@@ -32,6 +32,9 @@ struct FaceFact {
   bool planar = false;
   geom::Vec3 normal = geom::Vec3::Zero();  ///< unit, out of the volume, at the face's centre
   geom::Vec3 centre = geom::Vec3::Zero();  ///< the point of the face nearest its area centroid
+  /// The area centroid itself: off the face where it curves (a whole
+  /// cylinder's lies on its axis, inside a hole's wall, outside a boss's).
+  geom::Vec3 centroid = geom::Vec3::Zero();
   double area = 0;
   /// The registry's submap accepts it (single loop): it may be a side.
   bool submappable = false;

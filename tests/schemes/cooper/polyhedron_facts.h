@@ -53,6 +53,7 @@ inline VolumeFacts polyhedron_facts(const std::vector<PolyFace>& faces) {
     Vec3 c = Vec3::Zero();
     for (const Vec3& p : outer) c += p / static_cast<double>(outer.size());
     ff.centre = c;
+    ff.centroid = c;
     for (const PolyLoop& loop : faces[f]) {
       ff.loops.emplace_back();
       for (size_t k = 0; k < loop.size(); ++k) {

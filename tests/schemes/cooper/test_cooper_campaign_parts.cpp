@@ -370,5 +370,29 @@ TEST(CooperBarrelFormation, AHoleWhoseRimJoinsTheTopsOuterLoopIsAHole) {
   expect_meshes("hole_rim_in_an_outer_loop", hole_rim_in_an_outer_loop, {3.901}, 162);
 }
 
+// A blind hole from the bottom (up to 19.19) that cuts into the edge of a
+// foot below the block, with a blind hole from the top and a lug (campaign
+// seed 7 case 40). The hole's rim at the foot's bottom joins the foot's
+// outline, so its wall met caps on outer loops only and counted as an
+// outer wall; in the block, between the block's bottom and the hole's
+// ceiling, no cap bounds it and its own role stood: "cap 16 bounds no
+// region between two levels". A ring of such walls that all face its
+// middle is a hole there too (the one-face ring's middle is its area
+// centroid, on the hole's axis). The foot overhangs the back wall by 0.1:
+// the minimum scaled Jacobian is 0.053 at every size.
+void hole_cutting_a_foots_edge(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {73.36, 47.42, 27.19});
+  wb.cylinder("blind", {34.51, 24.89, -27.19}, {0, 0, 1}, 9.11, 46.38);
+  wb.cylinder("top", {48.65, 14.75, 17.7}, {0, 0, 1}, 5.45, 36.68);
+  wb.cylinder("lug", {73.36, 33.88, 13.07}, {0, 0, 1}, 5.23, 14.12);
+  wb.cylinder("foot", {34.23, 39.37, -26.39}, {0, 0, 1}, 8.15, 26.39);
+  wb.fuse("body", {"block", "lug", "foot"});
+  wb.cut("part", {"body", "blind", "top"});
+}
+
+TEST(CooperBarrelFormation, AHoleCuttingAFootsEdgeIsAHoleInTheBlock) {
+  expect_meshes("hole_cutting_a_foots_edge", hole_cutting_a_foots_edge, {4.959, 3.0}, 40);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
