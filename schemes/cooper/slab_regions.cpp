@@ -316,20 +316,24 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
         facing_known = true;
         return facing;
       };
-      if (here.size() > 1 || (any_mixed && on_holes.empty())) {
-        // No cap bounds this slab on its material side (it lies between a
-        // blind hole's floor and a notch's floor that face away from it):
-        // the faces that wall one side at every cap decide when they agree
-        // (a blind hole opening into a notch in the outer wall above it:
-        // the hole's wall walls the volume in beside the notch).
+      // The sides the cycle's faces wall at every cap (all but the mixed).
+      auto own_sides = [&] {
         std::set<bool> own;
         for (int f : faces) {
           if (!mixed.count(f)) own.insert(out.outer_face.at(f));
         }
+        return own;
+      };
+      if (here.size() > 1 || (any_mixed && on_holes.empty())) {
         if (facing_now()) {
           here = {facing > 0};
-        } else if (here.empty() && own.size() == 1) {
-          here = own;
+        } else if (here.empty() && own_sides().size() == 1) {
+          // No cap bounds this slab on its material side (it lies between
+          // a blind hole's floor and a notch's floor that face away from
+          // it): the faces that wall one side at every cap decide when they
+          // agree (the blind hole opens into the notch in the outer wall
+          // above it: the hole's wall walls the volume in beside the notch).
+          here = own_sides();
         } else if (here.size() != 1) {
           out.why = "side surface " + std::to_string(faces.front()) +
                     " walls the volume in at one cap and a hole at another";
