@@ -327,13 +327,13 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
       if (here.size() > 1 || (any_mixed && on_holes.empty())) {
         if (facing_now()) {
           here = {facing > 0};
-        } else if (here.empty() && own_sides().size() == 1) {
+        } else if (const std::set<bool> own = own_sides(); here.empty() && own.size() == 1) {
           // No cap bounds this slab on its material side (it lies between
           // a blind hole's floor and a notch's floor that face away from
           // it): the faces that wall one side at every cap decide when they
           // agree (the blind hole opens into the notch in the outer wall
           // above it: the hole's wall walls the volume in beside the notch).
-          here = own_sides();
+          here = own;
         } else if (here.size() != 1) {
           out.why = "side surface " + std::to_string(faces.front()) +
                     " walls the volume in at one cap and a hole at another";
