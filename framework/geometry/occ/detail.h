@@ -140,6 +140,14 @@ struct FaceFacts {
   geom::BoundingBox box;
 };
 FaceFacts face_facts(const TopoDS_Face& face);
+/// Remembers facts computed elsewhere (the import child's) for this thread's
+/// later face_facts calls: the parent then does not bound every face again.
+void remember_face_facts(const TopoDS_Face& face, const FaceFacts& facts);
+
+/// A solid's volume, computed once per solid and thread (solid_volume.cpp);
+/// remember_solid_volume seeds it as remember_face_facts does.
+double solid_volume(const TopoDS_Shape& solid);
+void remember_solid_volume(const TopoDS_Shape& solid, double volume);
 
 /// Solids and free faces of the named shapes, in creation order
 /// (model_builder.cpp).

@@ -2,7 +2,9 @@
 // TShape and location) for the thread's later model builds: the
 // decomposition search builds a model for every candidate cut, and a cut
 // leaves most faces as they were. The tight box (BRepBndLib::AddOptimal, a
-// particle swarm over the surface) was a fifth of a refused screw's search.
+// particle swarm over the surface) was a fifth of a refused screw's search,
+// and a quarter of a B-spline part's run in 2D, computed once in the import
+// child and once again in the parent until the child sent its facts along.
 #include "framework/geometry/occ/detail.h"
 
 #include <BRepBndLib.hxx>
@@ -21,10 +23,23 @@ namespace {
 // another face. Bounded: cleared when it grows past kMaxFaces.
 constexpr int kMaxFaces = 20000;
 
+using FactsByFace = NCollection_DataMap<TopoDS_Shape, FaceFacts, TopTools_ShapeMapHasher>;
+
+FactsByFace& known_facts() {
+  thread_local FactsByFace known;
+  return known;
+}
+
 }  // namespace
 
+void remember_face_facts(const TopoDS_Face& face, const FaceFacts& facts) {
+  FactsByFace& known = known_facts();
+  if (known.Extent() >= kMaxFaces) known.Clear();
+  known.Bind(face, facts);
+}
+
 FaceFacts face_facts(const TopoDS_Face& face) {
-  thread_local NCollection_DataMap<TopoDS_Shape, FaceFacts, TopTools_ShapeMapHasher> known;
+  FactsByFace& known = known_facts();
   if (const FaceFacts* f = known.Seek(face)) return *f;
   FaceFacts out;
   GProp_GProps props;
@@ -42,8 +57,7 @@ FaceFacts face_facts(const TopoDS_Face& face) {
     out.box.add(Vec3(x0, y0, z0));
     out.box.add(Vec3(x1, y1, z1));
   }
-  if (known.Extent() >= kMaxFaces) known.Clear();
-  known.Bind(face, out);
+  remember_face_facts(face, out);
   return out;
 }
 

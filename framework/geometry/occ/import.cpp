@@ -9,7 +9,8 @@
 // so the file is read in a forked child with a time and memory limit
 // (framework/core/isolate.h). The child reads, heals, checks that the model
 // can be built and is valid, and sends the shape back in OCCT's binary
-// format, which round-trips exactly; the parent never runs the readers.
+// format, which round-trips exactly, with the measures it took of its faces
+// and solids on the way; the parent never runs the readers.
 #include "framework/core/isolate.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/detail.h"
@@ -26,7 +27,9 @@
 #include <BRep_Builder.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
@@ -38,6 +41,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -104,6 +109,55 @@ TopoDS_Shape solidify(const TopoDS_Shape& shape) {
   return shape;
 }
 
+/// The measures of the shape's faces (detail::face_facts) and solids
+/// (detail::solid_volume), remembered from the model built in the child, as
+/// raw doubles in TopExp::MapShapes order: the parent reads the same faces
+/// and solids in the same order from the binary shape, and need not measure
+/// them again (bounding B-spline faces tightly is a particle swarm each).
+constexpr std::size_t kDoublesPerFace = 10;
+
+std::string measures_of(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape faces, solids;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  std::vector<double> values;
+  values.reserve(kDoublesPerFace * static_cast<std::size_t>(faces.Extent()) +
+                 static_cast<std::size_t>(solids.Extent()));
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    const detail::FaceFacts f = detail::face_facts(TopoDS::Face(faces(i)));
+    values.push_back(f.area);
+    for (const geom::Vec3* v : {&f.centroid, &f.box.min, &f.box.max})
+      values.insert(values.end(), v->data(), v->data() + 3);
+  }
+  for (int i = 1; i <= solids.Extent(); ++i) values.push_back(detail::solid_volume(solids(i)));
+  return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+}
+
+/// Seeds this thread's measures from the child's; ignored unless they cover
+/// exactly the faces and solids read (the parent then measures them itself).
+void remember_measures(const TopoDS_Shape& shape, const std::string& bytes) {
+  TopTools_IndexedMapOfShape faces, solids;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  const std::size_t nf = static_cast<std::size_t>(faces.Extent());
+  const std::size_t ns = static_cast<std::size_t>(solids.Extent());
+  std::vector<double> values(nf * kDoublesPerFace + ns);
+  if (bytes.size() != values.size() * sizeof(double)) return;
+  std::memcpy(values.data(), bytes.data(), bytes.size());
+  for (std::size_t i = 0; i < nf; ++i) {
+    const double* v = values.data() + i * kDoublesPerFace;
+    detail::FaceFacts f;
+    f.area = v[0];
+    f.centroid = geom::Vec3(v[1], v[2], v[3]);
+    f.box.min = geom::Vec3(v[4], v[5], v[6]);
+    f.box.max = geom::Vec3(v[7], v[8], v[9]);
+    detail::remember_face_facts(TopoDS::Face(faces(static_cast<int>(i) + 1)), f);
+  }
+  for (std::size_t i = 0; i < ns; ++i)
+    detail::remember_solid_volume(solids(static_cast<int>(i) + 1),
+                                  values[nf * kDoublesPerFace + i]);
+}
+
 /// Which reader a file needs, from its extension.
 enum class CadKind { Step, Iges, Brep };
 
@@ -151,9 +205,10 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
   if (merge) builder.Add(both, merged);
   std::ostringstream bytes(std::ios::binary);
   BinTools::Write(both, bytes, Standard_False, Standard_False, BinTools_FormatVersion_CURRENT);
+  const std::string shapes = bytes.str();
   char header[96];
-  std::snprintf(header, sizeof header, "%s %.17g\n", unit.occt, unit.metres);
-  out = header + bytes.str();
+  std::snprintf(header, sizeof header, "%s %.17g %zu\n", unit.occt, unit.metres, shapes.size());
+  out = header + shapes + measures_of(both);
 }
 
 /// Time and memory the child may take: generous for real files (30 s of
@@ -214,19 +269,23 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
     throw MeshingError(ErrorCode::ParseError,
                        path + ": the CAD kernel could not read it (" + run.describe(limits) + ")");
 
-  // "<unit name> <metres>\n" then the binary shape, both from our child.
+  // "<unit name> <metres> <shape bytes>\n", the binary shape, then the
+  // measures of its faces and solids, all from our child.
   const std::size_t eol = run.payload.find('\n');
   Unit unit{"MM", 1e-3};
   char unit_name[16] = {0};
+  std::size_t shape_bytes = 0;
   if (eol == std::string::npos ||
-      std::sscanf(run.payload.substr(0, eol).c_str(), "%15s %lf", unit_name, &unit.metres) != 2 ||
-      !unit_from_name(unit_name, unit))
+      std::sscanf(run.payload.substr(0, eol).c_str(), "%15s %lf %zu", unit_name, &unit.metres,
+                  &shape_bytes) != 3 ||
+      !unit_from_name(unit_name, unit) || shape_bytes > run.payload.size() - eol - 1)
     throw MeshingError(ErrorCode::Internal, path + ": the import child sent a malformed header");
   TopoDS_Shape both, shape, merged;
   detail::guarded(ErrorCode::Internal, path, [&] {
-    std::istringstream bytes(run.payload.substr(eol + 1), std::ios::binary);
+    std::istringstream bytes(run.payload.substr(eol + 1, shape_bytes), std::ios::binary);
     BinTools::Read(both, bytes);
   });
+  remember_measures(both, run.payload.substr(eol + 1 + shape_bytes));
   int k = 0;
   for (TopoDS_Iterator it(both); it.More(); it.Next(), ++k) (k == 0 ? shape : merged) = it.Value();
   if (shape.IsNull())

@@ -16,13 +16,11 @@
 
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
 #include <BRepClass3d.hxx>
-#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <TopoDS_Compound.hxx>
-#include <GProp_GProps.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -146,9 +144,7 @@ class Numbering {
     for (size_t v = 0; v < solids.size(); ++v) {
       geom::Volume vol;
       vol.shells = shells_[v];
-      GProp_GProps props;
-      BRepGProp::VolumeProperties(solids[v].shape, props);
-      vol.volume = std::abs(props.Mass());
+      vol.volume = detail::solid_volume(solids[v].shape);
       // The union of its faces' tight boxes: what BRepBndLib::AddOptimal
       // gives for the solid, without bounding every face a second time (an
       // optimisation per face; the decomposition search builds a model for

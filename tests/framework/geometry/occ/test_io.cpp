@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace cooperage::occ::test {
 namespace {
@@ -80,6 +81,45 @@ TEST(OccIo, IdsAreStableOverTwoLoads) {
     EXPECT_EQ(a.surfaces()[i].volumes, b.surfaces()[i].volumes);
   }
   EXPECT_EQ(geom::euler_characteristic(a), 2 * 2 - 2 * 3);
+}
+
+// The import child measures every face (area, centroid, tight box) and solid
+// (volume) and the parent takes its numbers instead of measuring again; a
+// thread of its own starts with nothing remembered and measures from
+// scratch. Faces of different sizes and two solids: a mix-up of the order
+// would give a face another's numbers.
+TEST(OccIo, MeasuresSentByTheImportChildAreThoseMeasuredAgain) {
+  TempDir dir;
+  Workbench made;
+  made.brick("plate", Vec3(0, 0, 0), Vec3(10, 4, 1));
+  for (int i = 0; i < 3; ++i)
+    made.cylinder("hole" + std::to_string(i), Vec3(2 + 3 * i, 2, -1), Vec3(0, 0, 1), 0.3 + 0.2 * i,
+                  3);
+  made.cut("part", {"plate", "hole0", "hole1", "hole2"});
+  made.sphere("dome", Vec3(1, 1, 1), 0.8);
+  made.fuse("body", {"part", "dome"});
+  made.brick("lid", Vec3(5, 0, 1), Vec3(3, 4, 1.5));
+  const std::string path = dir.file("parts.stp");
+  made.write(path);
+
+  Workbench wb;
+  wb.import_file("p", path);
+  const Model sent = wb.build_model();
+  Model measured;
+  std::thread([&] { measured = wb.build_model(); }).join();
+  ASSERT_EQ(sent.volumes().size(), 2u);
+  ASSERT_EQ(sent.surfaces().size(), measured.surfaces().size());
+  for (size_t i = 0; i < sent.surfaces().size(); ++i) {
+    const geom::Surface& a = sent.surfaces()[i];
+    const geom::Surface& b = measured.surfaces()[i];
+    EXPECT_EQ(a.area, b.area) << "surface " << i + 1;
+    EXPECT_EQ(a.centroid, b.centroid) << "surface " << i + 1;
+    EXPECT_EQ(a.box.min, b.box.min) << "surface " << i + 1;
+    EXPECT_EQ(a.box.max, b.box.max) << "surface " << i + 1;
+  }
+  for (size_t i = 0; i < sent.volumes().size(); ++i)
+    EXPECT_EQ(sent.volumes()[i].volume, measured.volumes()[i].volume) << "volume " << i + 1;
+  EXPECT_NE(sent.volumes()[0].volume, sent.volumes()[1].volume);
 }
 
 TEST(OccIo, BrepRoundTrip) {
