@@ -1,7 +1,10 @@
 #include "schemes/cooper/slab_regions.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -83,10 +86,52 @@ int keep_widest_outer(const VolumeFacts& facts, const SideLattice& lattice,
   return 1;
 }
 
+/// The signed area of a cycle's cross-section about `axis`, measured from
+/// `middle`: positive when its walls enclose the volume, negative round a
+/// hole. Each face's loop runs round its outward normal, so along its
+/// lowest rims (the face lies above them) it runs along up x normal:
+/// anticlockwise round an outer wall, clockwise round a hole, whatever the
+/// ring's shape (an L, a crescent: where the middle lies outside it and
+/// some walls face it and some away). Projected across the sweep, the
+/// faces' lowest rims close into the section (the curves linking levels
+/// project to points), so the faces need no order.
+double section_area(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order,
+                    const Cycle& cycle, const geom::Vec3& axis, const geom::Vec3& middle) {
+  double area = 0;
+  for (int f : cycle.faces) {
+    const FaceFact& face = *facts.face(f);
+    auto level = [&](const UseFact& u) {
+      return order
+          .height[static_cast<size_t>(lattice.vertex_class.at(facts.curves.at(u.curve).start))];
+    };
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const UseFact& u : face.loops.front()) {
+      if (lattice.along.count(u.curve)) lowest = std::min(lowest, level(u));
+    }
+    for (const UseFact& u : face.loops.front()) {
+      if (!lattice.along.count(u.curve) || level(u) > lowest + 1e-9 * facts.size()) continue;
+      std::vector<geom::Vec3> q = facts.curves.at(u.curve).samples;
+      if (!u.forward) std::reverse(q.begin(), q.end());
+      if (q.size() < 2) continue;
+      // Which way is up here: the face's centre lies above its lowest rim.
+      geom::Vec3 rim = geom::Vec3::Zero();
+      for (const geom::Vec3& p : q) rim += p;
+      rim /= static_cast<double>(q.size());
+      const double up = axis.dot(face.centre - rim) >= 0 ? 1.0 : -1.0;
+      for (size_t i = 0; i + 1 < q.size(); ++i)
+        area += 0.5 * up * axis.dot((q[i] - middle).cross(q[i + 1] - middle));
+    }
+  }
+  return area;
+}
+
 /// For a cycle the caps bounding its slab do not decide, or decide against
 /// its faces' own roles: which way its faces face across the sweep. A hole's walls face the middle
-/// of its rims, an outer wall faces away from it. +1 outer, -1 hole, 0 undecided.
-int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const Cycle& cycle) {
+/// of its rims, an outer wall faces away from it; where they do not agree
+/// and nothing else decides (`by_section`), the sign of the section's area.
+/// +1 outer, -1 hole, 0 undecided.
+int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const SweepOrder& order,
+                    const Cycle& cycle, bool by_section) {
   geom::Vec3 axis = geom::Vec3::Zero();
   for (int cap : lattice.caps) {
     if (facts.face(cap)->planar) {
@@ -124,7 +169,11 @@ int facing_of_cycle(const VolumeFacts& facts, const SideLattice& lattice, const 
   }
   if (away > 0 && towards == 0) return 1;
   if (towards > 0 && away == 0) return -1;
-  return 0;
+  if (!by_section) return 0;
+  const double area = section_area(facts, lattice, order, cycle, axis, middle);
+  const double extent = rim_extent(facts, lattice, cycle);
+  if (std::abs(area) <= 1e-3 * extent * extent) return 0;
+  return area > 0 ? 1 : -1;
 }
 
 }  // namespace
@@ -312,9 +361,15 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
       int facing = 0;
       bool facing_known = false;
       auto facing_now = [&] {
-        if (!facing_known) facing = order.straight ? facing_of_cycle(facts, lattice, c) : 0;
+        if (!facing_known)
+          facing = order.straight ? facing_of_cycle(facts, lattice, order, c, false) : 0;
         facing_known = true;
         return facing;
+      };
+      // Where nothing else decides, the section's sign does (added last, so
+      // that no ring decided before is decided anew).
+      auto section_sign = [&] {
+        return order.straight ? facing_of_cycle(facts, lattice, order, c, true) : 0;
       };
       // The sides the cycle's faces wall at every cap (all but the mixed).
       auto own_sides = [&] {
@@ -335,9 +390,13 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
           // above it: the hole's wall walls the volume in beside the notch).
           here = own;
         } else if (here.size() != 1) {
-          out.why = "side surface " + std::to_string(faces.front()) +
-                    " walls the volume in at one cap and a hole at another";
-          return out;
+          const int sign = section_sign();
+          if (sign == 0) {
+            out.why = "side surface " + std::to_string(faces.front()) +
+                      " walls the volume in at one cap and a hole at another";
+            return out;
+          }
+          here = {sign > 0};
         }
       } else if (outer_by_outer_loops(here, on_holes, faces) && facing_now() < 0) {
         // Outer by convex contacts on outer loops alone, while every wall
@@ -352,6 +411,10 @@ SlabRegions slab_regions(const VolumeFacts& facts, const SideLattice& lattice,
         if (mixed.count(f) || out.outer_face.at(f) == c.outer) continue;
         if (facing_now()) {
           c.outer = facing > 0;
+          break;
+        }
+        if (const int sign = section_sign()) {
+          c.outer = sign > 0;
           break;
         }
         out.why = "the sides " + std::to_string(faces.front()) + " and " + std::to_string(f) +

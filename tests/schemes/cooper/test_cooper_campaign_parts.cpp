@@ -394,5 +394,46 @@ TEST(CooperBarrelFormation, AHoleCuttingAFootsEdgeIsAHoleInTheBlock) {
   expect_meshes("hole_cutting_a_foots_edge", hole_cutting_a_foots_edge, {4.959, 3.0}, 40);
 }
 
+// Two box pockets from the top that overlap in an L, floors at 3.34 and
+// 10.33, the deeper one through a box boss on the top, a round foot below
+// (campaign seed 5 case 73). Between the floors the ring round the L is
+// one hole, but the caps' contacts give its walls different roles and
+// its walls do not all face the middle of its rims (an L's middle need
+// not lie inside it):
+// the plan refused ("the sides 9 and 24 form one cycle but wall the volume
+// on different sides"). The sign of the ring's section area decides: its
+// walls run clockwise round the sweep axis, a hole's.
+void pockets_overlapping_in_an_l(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {54.89, 42.58, 15.35});
+  wb.brick("deep", {36.64, 13.75, 3.34}, {9.44, 14.16, 27.36});
+  wb.brick("boss", {34.44, 20.24, 15.35}, {15.82, 16.64, 7.83});
+  wb.cylinder("foot", {20.4, 32.95, -6.23}, {0, 0, 1}, 10.2, 6.23);
+  wb.brick("shallow", {29.33, 4.97, 10.33}, {18.2, 10.92, 20.37});
+  wb.fuse("body", {"block", "boss", "foot"});
+  wb.cut("part", {"body", "deep", "shallow"});
+}
+
+TEST(CooperBarrelFormation, PocketsOverlappingInAnLAreOneHoleByTheSignOfItsSection) {
+  expect_meshes("pockets_overlapping_in_an_l", pockets_overlapping_in_an_l, {2.661, 2.0}, 73);
+}
+
+// The same family under a boss (campaign seed 7 case 134): two box pockets
+// overlapping in an L from the top of a box boss, floors at 7.67 and
+// 15.71, a round foot below. It plans by the section's sign and meshes at
+// half its size (at its own size a subcap's boundary is odd: 67 nodes).
+void pockets_overlapping_under_a_boss(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {42.81, 42.76, 31.11});
+  wb.brick("deep", {27.87, 14.7, 7.67}, {9.16, 6.36, 54.55});
+  wb.cylinder("foot", {27.07, 25.81, -13.92}, {0, 0, 1}, 10.01, 13.92);
+  wb.brick("shallow", {23.87, 17.58, 15.71}, {6.66, 15.84, 46.51});
+  wb.brick("boss", {16.67, 8.83, 31.11}, {17.02, 13.06, 22.12});
+  wb.fuse("body", {"block", "foot", "boss"});
+  wb.cut("part", {"body", "deep", "shallow"});
+}
+
+TEST(CooperBarrelFormation, PocketsOverlappingUnderABossAreOneHole) {
+  expect_meshes("pockets_overlapping_under_a_boss", pockets_overlapping_under_a_boss, {1.949}, 134);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
