@@ -435,5 +435,25 @@ TEST(CooperBarrelFormation, PocketsOverlappingUnderABossAreOneHole) {
   expect_meshes("pockets_overlapping_under_a_boss", pockets_overlapping_under_a_boss, {1.949}, 134);
 }
 
+// Two box pockets and two round ones from the top, overlapping (campaign
+// seed 5 case 122): two of the pockets' walls meet at 9.4 degrees along
+// the sweep. The plan refused sides meeting within 10 degrees of folding
+// flat (imprinting cannot resolve the slivers of a cusp); it refuses
+// within 8 now, and this part meshes (minimum scaled Jacobian 0.18 at its
+// own size, 0.28 at 8).
+void pockets_meeting_at_nine_degrees(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {54.46, 50.03, 37.79});
+  wb.brick("box1", {19.01, 1.89, 21.86}, {12.9, 19.58, 53.72});
+  wb.brick("box2", {5.16, 11.27, 14.99}, {18.44, 16.82, 60.59});
+  wb.cylinder("round1", {12.81, 36.11, 18.56}, {0, 0, 1}, 8.13, 57.02);
+  wb.cylinder("round2", {15.98, 39.13, 25.2}, {0, 0, 1}, 3.52, 50.38);
+  wb.cut("part", {"block", "box1", "box2", "round1", "round2"});
+}
+
+TEST(CooperBarrelFormation, PocketWallsMeetingAtNineDegreesMesh) {
+  expect_meshes("pockets_meeting_at_nine_degrees", pockets_meeting_at_nine_degrees, {13.713, 8.0},
+                122);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
