@@ -6,41 +6,28 @@
 // and a quarter of a B-spline part's run in 2D, computed once in the import
 // child and once again in the parent until the child sent its facts along.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/shape_memo.h"
 
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
-#include <NCollection_DataMap.hxx>
-#include <TopTools_ShapeMapHasher.hxx>
 
 #include <cmath>
 
 namespace cooperage::occ::detail {
 namespace {
 
-// Holding the face keeps its TShape alive, so a key is never reused by
-// another face. Bounded: cleared when it grows past kMaxFaces.
-constexpr int kMaxFaces = 20000;
-
-using FactsByFace = NCollection_DataMap<TopoDS_Shape, FaceFacts, TopTools_ShapeMapHasher>;
-
-FactsByFace& known_facts() {
-  thread_local FactsByFace known;
-  return known;
-}
+using KnownFacts = ShapeMemo<FaceFacts, 20000>;
 
 }  // namespace
 
 void remember_face_facts(const TopoDS_Face& face, const FaceFacts& facts) {
-  FactsByFace& known = known_facts();
-  if (known.Extent() >= kMaxFaces) known.Clear();
-  known.Bind(face, facts);
+  KnownFacts::remember(face, facts);
 }
 
 FaceFacts face_facts(const TopoDS_Face& face) {
-  FactsByFace& known = known_facts();
-  if (const FaceFacts* f = known.Seek(face)) return *f;
+  if (const FaceFacts* f = KnownFacts::find(face)) return *f;
   FaceFacts out;
   GProp_GProps props;
   BRepGProp::SurfaceProperties(face, props);
