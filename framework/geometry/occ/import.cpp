@@ -192,11 +192,15 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
                              [&] { return detail::merge_alone(shape); });
   }
   // A MeshingError from the trial reaches the parent the same way when it
-  // builds; only faults must stay here.
+  // builds; only faults must stay here. The measures go along only from a
+  // model that built (measuring the faces of one that did not could take
+  // the child's whole time limit, hiding the build's own error).
+  bool built = true;
   try {
     (void)detail::build_model_of({NamedShape{"part", merge ? merged : shape, {}}},
                                  BuildOptions{false}, 0.0);
   } catch (const MeshingError&) {
+    built = false;
   }
   TopoDS_Compound both;
   BRep_Builder builder;
@@ -208,7 +212,7 @@ void read_in_child(const std::string& path, CadKind kind, bool heal, bool merge,
   const std::string shapes = bytes.str();
   char header[96];
   std::snprintf(header, sizeof header, "%s %.17g %zu\n", unit.occt, unit.metres, shapes.size());
-  out = header + shapes + measures_of(both);
+  out = header + shapes + (built ? measures_of(merge ? merged : shape) : std::string());
 }
 
 /// Time and memory the child may take: generous for real files (30 s of
@@ -285,7 +289,6 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
     std::istringstream bytes(run.payload.substr(eol + 1, shape_bytes), std::ios::binary);
     BinTools::Read(both, bytes);
   });
-  remember_measures(both, run.payload.substr(eol + 1 + shape_bytes));
   int k = 0;
   for (TopoDS_Iterator it(both); it.More(); it.Next(), ++k) (k == 0 ? shape : merged) = it.Value();
   if (shape.IsNull())
@@ -297,6 +300,8 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
     impl_->unit_in_metres = unit.metres;
     impl_->unit_name = unit.occt;
   }
+  // The measures are of the shape the child built its model from.
+  remember_measures(merged.IsNull() ? shape : merged, run.payload.substr(eol + 1 + shape_bytes));
   impl_->add(name, shape);
   impl_->find(name)->merged = merged;
 }
