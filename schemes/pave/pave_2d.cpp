@@ -138,10 +138,24 @@ void check_tiling(const std::vector<V2>& P, const std::vector<std::vector<int>>&
   }
 }
 
+/// The smoothed points of the unsmoothed meshes an earlier attempt smoothed:
+/// retry settings often change nothing on a face (no tip near the angles
+/// they move, no four-node hole), and smoothing is most of an attempt's time
+/// and depends on nothing but the mesh and its smoothing options, which all
+/// attempts share.
+struct SmoothMemo {
+  struct Entry {
+    std::vector<V2> before, after;
+    std::vector<detail::Quad> quads;
+    int sweeps = 0;
+  };
+  std::vector<Entry> entries;
+};
+
 /// Steps (b)-(f) on the canonical points P (the nb loop nodes first) with
 /// one set of options; returns the quads and extends P.
 std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::vector<int>>& ids,
-                                    int nb, const PaveOptions& options) {
+                                    int nb, const PaveOptions& options, SmoothMemo& memo) {
   Laps laps(options.stats);
   std::vector<detail::Quad> quads;
   if (ids.size() == 1 && ids[0].size() == 4) {
@@ -252,8 +266,18 @@ std::vector<detail::Quad> mesh_once(std::vector<V2>& P, const std::vector<std::v
     detail::remove_doublets(P, quads, fixed);
   }
   laps.lap(&PaveStats::cleanup);
-  const int sweeps = detail::smooth_quads_2d(P, quads, fixed, options.smooth);
-  if (options.stats != nullptr) options.stats->sweeps = sweeps;
+  const auto same = std::find_if(memo.entries.begin(), memo.entries.end(),
+                                 [&](const auto& e) { return e.quads == quads && e.before == P; });
+  if (same != memo.entries.end()) {
+    P = same->after;
+    if (options.stats != nullptr) options.stats->sweeps = same->sweeps;
+  } else {
+    SmoothMemo::Entry entry{P, {}, quads, 0};
+    entry.sweeps = detail::smooth_quads_2d(P, quads, fixed, options.smooth);
+    entry.after = P;
+    if (options.stats != nullptr) options.stats->sweeps = entry.sweeps;
+    memo.entries.push_back(std::move(entry));
+  }
   laps.lap(&PaveStats::smooth);
   for (size_t k = 0; k < quads.size(); ++k) {
     if (options.check_inversion && !(detail::scaled_jacobian_2d(P, quads[k]) > 1e-6)) {
@@ -400,11 +424,12 @@ QuadMesh2D pave_2d_once(const std::vector<std::vector<V2>>& loops, const PaveOpt
   std::vector<detail::Quad> quads;
   MeshScore best;
   if (options.stats != nullptr) *options.stats = PaveStats{};
+  SmoothMemo memo;
   for (size_t k = 0; k < attempts.size(); ++k) {
     if (options.stats != nullptr) ++options.stats->attempts;
     std::vector<V2> Pk = P0;
     try {
-      std::vector<detail::Quad> qk = mesh_once(Pk, ids, nb, attempts[k]);
+      std::vector<detail::Quad> qk = mesh_once(Pk, ids, nb, attempts[k], memo);
       const MeshScore score = score_mesh(Pk, qk);
       if (score.better_than(best, options.retry_below)) {
         best = score;
