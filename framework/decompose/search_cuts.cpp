@@ -96,8 +96,8 @@ std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Mode
                                 const Context& context) {
   // The pieces of one split share their cut faces already; among other
   // solids they are imprinted and merged with them first.
-  if (!context) return check_(alone ? *alone : pieces.build_model(true), last_resort_);
-  return check_(context(pieces).build_model(true), last_resort_);
+  if (!context) return check_(alone ? *alone : pieces.build_model(true, true), last_resort_);
+  return check_(context(pieces).build_model(true, true), last_resort_);
 }
 
 std::optional<SolidPlan> CutSearch::solve_turned(const occ::SolidPieces& solid) {

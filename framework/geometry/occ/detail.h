@@ -155,7 +155,12 @@ void collect(const std::vector<NamedShape>& shapes, std::vector<Piece>& solids,
              std::vector<Piece>& faces);
 /// Imprint + merge: one general fuse of every piece; each piece is replaced by
 /// its images (a solid partly overlapping another splits into several).
-void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces);
+/// `touching_only`: the pieces are known to share faces at most, never to
+/// overlap (pieces of cuts of merged solids), so the fuse may glue them
+/// (OCCT's BOPAlgo_GlueShift: faces that do not coincide are not
+/// intersected).
+void imprint_merge(std::vector<Piece>& solids, std::vector<Piece>& faces,
+                   bool touching_only = false);
 /// The model of the pieces: volumes in solid order, names from
 /// names[owner] (".k" appended when an owner has several solids); validated.
 geom::Model number_model(const std::vector<Piece>& solids, const std::vector<Piece>& faces,

@@ -25,6 +25,9 @@ struct SolidPieces::Impl {
   std::vector<detail::Piece> faces;
   std::vector<std::string> names;  ///< by owner
   double unit_in_metres = 0.0;
+  /// The solids and faces share faces at most, never overlap: imprinted and
+  /// merged on import, or pieces of one cut (build_model may glue them).
+  bool touching_only = false;
 };
 
 SolidPieces::SolidPieces() : impl_(std::make_unique<Impl>()) {}
@@ -54,6 +57,7 @@ SolidPieces SolidPieces::of(const Workbench& bench, const BuildOptions& options)
       detail::collect(shapes, out.impl_->solids, out.impl_->faces);
       if (options.imprint_merge) detail::imprint_merge(out.impl_->solids, out.impl_->faces);
     }
+    out.impl_->touching_only = options.imprint_merge;
   });
   for (const NamedShape& s : bench.impl_->shapes) out.impl_->names.push_back(s.name);
   out.impl_->unit_in_metres = bench.impl_->unit_in_metres;
@@ -129,6 +133,7 @@ SolidPieces SolidPieces::only(int index) const {
   p.owner = 0;
   out.impl_->solids.push_back(p);
   out.impl_->unit_in_metres = impl_->unit_in_metres;
+  out.impl_->touching_only = true;
   return out;
 }
 
@@ -139,6 +144,7 @@ SolidPieces SolidPieces::split(int index, const CutSurface& cut) const {
   SolidPieces out;
   out.impl_->names = {impl_->names[static_cast<size_t>(target.owner)]};
   out.impl_->unit_in_metres = impl_->unit_in_metres;
+  out.impl_->touching_only = true;  // the pieces of one solid
   detail::guarded(ErrorCode::GeometryError, "cutting solid " + std::to_string(index + 1), [&] {
     BRepAlgoAPI_Splitter splitter;
     TopTools_ListOfShape args, tools;
@@ -167,16 +173,19 @@ SolidPieces SolidPieces::replace(int index, const SolidPieces& pieces) const {
   std::vector<detail::Piece> added;
   for (const detail::Piece& p : pieces.impl_->solids) added.push_back({p.shape, owner});
   solids.insert(solids.begin() + index, added.begin(), added.end());
+  // The pieces of the solid they replace (or none) overlap nothing else.
+  out.impl_->touching_only =
+      impl_->touching_only && (pieces.impl_->solids.empty() || pieces.impl_->touching_only);
   return out;
 }
 
-geom::Model SolidPieces::build_model(bool imprint_merge) const {
+geom::Model SolidPieces::build_model(bool imprint_merge, bool trial) const {
   silence_kernel_output();
   return detail::guarded(ErrorCode::GeometryError, "building the model of the pieces", [&] {
     std::vector<detail::Piece> solids = impl_->solids, faces = impl_->faces;
     if (solids.empty() && faces.empty())
       throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
-    if (imprint_merge) detail::imprint_merge(solids, faces);
+    if (imprint_merge) detail::imprint_merge(solids, faces, trial && impl_->touching_only);
     return detail::number_model(solids, faces, impl_->names, impl_->unit_in_metres);
   });
 }

@@ -118,6 +118,67 @@ TEST(SolidPieces, ReplacingASolidByItsPiecesKeepsTheOthersAndImprints) {
   EXPECT_NEAR(total_volume(m), 8.0, 1e-9);
 }
 
+// What decides the model: its volumes, faces, curves and the faces two
+// volumes share.
+struct Shape {
+  size_t volumes, surfaces, curves;
+  int shared;
+  double volume;
+};
+Shape shape_of(const geom::Model& m) {
+  int shared = 0;
+  for (const auto& s : m.surfaces()) shared += s.volumes.size() == 2 ? 1 : 0;
+  return {m.volumes().size(), m.surfaces().size(), m.curves().size(), shared, total_volume(m)};
+}
+void expect_same(const Shape& a, const Shape& b) {
+  EXPECT_EQ(a.volumes, b.volumes);
+  EXPECT_EQ(a.surfaces, b.surfaces);
+  EXPECT_EQ(a.curves, b.curves);
+  EXPECT_EQ(a.shared, b.shared);
+  EXPECT_NEAR(a.volume, b.volume, 1e-9);
+}
+
+// A trial model glues pieces that only touch (build_model(true, true)); it
+// must imprint as the full fuse does: a piece cut again whose cut ends
+// inside a neighbour's face (b's bottom, split by the first cut and then
+// by the second across one half), and an edge of a cut lying in it.
+TEST(SolidPieces, ATrialModelOfTouchingPiecesImprintsAsTheFullFuse) {
+  Workbench bench;
+  bench.brick("a", {0, 0, 0}, {4, 4, 1});
+  bench.brick("b", {0, 0, 1}, {4, 4, 1});
+  const SolidPieces all = SolidPieces::of(bench);
+  const SolidPieces halves = all.split(0, {CutSurface::Kind::Plane, {2, 0, 0}, {1, 0, 0}, 0});
+  const SolidPieces once = all.replace(0, halves);
+  const SolidPieces quarters =
+      once.only(1).split(0, {CutSurface::Kind::Plane, {0, 1, 0}, {0, 1, 0}, 0});
+  const SolidPieces twice = once.replace(1, quarters);
+  ASSERT_EQ(twice.size(), 4);
+  const Shape full = shape_of(twice.build_model(true));
+  EXPECT_EQ(full.volumes, 4u);
+  EXPECT_EQ(full.shared, 6);  // two cut faces, b's bottom in three, a's halves' cut face in two
+  EXPECT_NEAR(full.volume, 32.0, 1e-9);
+  expect_same(shape_of(twice.build_model(true, true)), full);
+  // A cylinder cut of the top brick whose rim lies in the bottom's faces.
+  const SolidPieces core =
+      twice.only(3).split(0, {CutSurface::Kind::Cylinder, {1, 1, 0}, {0, 0, 1}, 0.5});
+  const SolidPieces cored = twice.replace(3, core);
+  expect_same(shape_of(cored.build_model(true, true)), shape_of(cored.build_model(true)));
+}
+
+// Solids imported without imprinting may overlap: a trial model fuses
+// them in full (glued, the overlap would be lost).
+TEST(SolidPieces, OverlappingSolidsAreNeverGlued) {
+  Workbench bench;
+  bench.brick("a", {0, 0, 0}, {2, 2, 2});
+  bench.brick("b", {1, 1, 1}, {2, 2, 2});
+  BuildOptions separate;
+  separate.imprint_merge = false;
+  const SolidPieces all = SolidPieces::of(bench, separate);
+  const Shape full = shape_of(all.build_model(true));
+  EXPECT_EQ(full.volumes, 3u);  // a - b, a & b, b - a
+  expect_same(shape_of(all.build_model(true, true)), full);
+}
+
 TEST(SolidPieces, AnIndexOutOfRangeIsAnError) {
   Workbench bench;
   bench.brick("a", {0, 0, 0}, {1, 1, 1});
