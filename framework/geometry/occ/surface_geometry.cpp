@@ -3,6 +3,7 @@
 // (surface_projector.h: closed forms, a warm-started Newton step, and OCCT's
 // global projector kept per thread), so it is safe to share across threads.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/shape_memo.h"
 #include "framework/geometry/occ/surface_projector.h"
 
 #include <BRepTools.hxx>
@@ -33,13 +34,27 @@ geom::SurfaceType surface_type(GeomAbs_SurfaceType t) {
   }
 }
 
+// A face's projector, kept for the calling thread while the face lives on in
+// later models: a decomposition builds a model of every trial's pieces, most
+// of whose faces are the uncut faces of the solid, and each new projector
+// built OCCT's sampling grid again for its first global projection
+// (occt_CrankArm --dim 3: 11 % of a refusal). A projector's answers depend
+// on the query alone, so sharing it changes no result. Fewer entries than
+// face_facts keeps: a B-spline face's projector holds sample grids.
+using KnownProjectors = ShapeMemo<std::shared_ptr<const SurfaceProjector>, 4096>;
+
 class FaceSurface final : public geom::SurfaceGeometry {
  public:
   explicit FaceSurface(const TopoDS_Face& face)
       : surface_(BRep_Tool::Surface(face)), flip_(face.Orientation() == TopAbs_REVERSED) {
     BRepTools::UVBounds(face, u0_, u1_, v0_, v1_);
     type_ = surface_type(GeomAdaptor_Surface(surface_).GetType());
-    projector_ = std::make_unique<SurfaceProjector>(surface_, u0_, u1_, v0_, v1_);
+    if (const auto* known = KnownProjectors::find(face)) {
+      projector_ = *known;
+    } else {
+      projector_ = std::make_shared<const SurfaceProjector>(surface_, u0_, u1_, v0_, v1_);
+      KnownProjectors::remember(face, projector_);
+    }
   }
 
   geom::SurfaceType type() const override { return type_; }
@@ -78,7 +93,7 @@ class FaceSurface final : public geom::SurfaceGeometry {
   bool flip_ = false;
   double u0_ = 0, u1_ = 0, v0_ = 0, v1_ = 0;
   geom::SurfaceType type_ = geom::SurfaceType::Other;
-  std::unique_ptr<SurfaceProjector> projector_;
+  std::shared_ptr<const SurfaceProjector> projector_;
 
   geom::SurfaceProjection at(const Vec3& p, const Vec2& uv) const {
     geom::SurfaceProjection out;

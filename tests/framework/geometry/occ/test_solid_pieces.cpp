@@ -80,6 +80,49 @@ TEST(SolidPieces, RememberedFaceAreasAndBoxesEqualFreshOnes) {
   EXPECT_NEAR(box.min.y(), -2.0, 1e-6);
 }
 
+// A face's projector is kept for the thread while the face lives on in later
+// models (surface_geometry.cpp); what a model seen before projects equals
+// what a fresh thread's model projects, whatever was asked before.
+TEST(SolidPieces, ProjectionsOnAFaceSeenBeforeEqualFreshOnes) {
+  Workbench bench;
+  const auto square = [](double side, double z, double shift) {
+    const double h = 0.5 * side;
+    return std::vector<Vec3>{
+        {-h + shift, -h, z}, {h + shift, -h, z}, {h + shift, h, z}, {-h + shift, h, z}};
+  };
+  bench.loft("l", {square(4, 0, 0), square(3, 2, 0.5), square(4, 4, 0)}, false);
+  const SolidPieces one = SolidPieces::of(bench);
+  const auto queries = [](const geom::Model& m, double offset) {
+    std::vector<geom::SurfaceProjection> out;
+    for (const auto& s : m.surfaces()) {
+      const Vec3 c = 0.5 * (s.box.min + s.box.max);
+      for (const Vec3& d :
+           {Vec3(offset, 0, 0), Vec3(0, offset, 1), Vec3(-offset, 0.3, -1), Vec3(0, -offset, 2)})
+        out.push_back(s.geometry->project(c + d));
+    }
+    return out;
+  };
+  (void)queries(one.build_model(false), 0.7);  // the thread's projectors answer these first
+  const geom::Model again = one.build_model(false);
+  const auto seen = queries(again, 1.3);
+  geom::Model fresh_model;
+  std::vector<geom::SurfaceProjection> fresh;
+  std::thread([&] {
+    fresh_model = one.build_model(false);
+    fresh = queries(fresh_model, 1.3);
+  }).join();
+  ASSERT_EQ(seen.size(), fresh.size());
+  ASSERT_GT(seen.size(), 20u);
+  size_t bspline = 0;
+  for (const auto& s : again.surfaces())
+    bspline += s.geometry->type() == geom::SurfaceType::BSpline;
+  EXPECT_GE(bspline, 4u);
+  for (size_t k = 0; k < seen.size(); ++k) {
+    EXPECT_EQ(seen[k].uv, fresh[k].uv) << k;
+    EXPECT_EQ(seen[k].point, fresh[k].point) << k;
+  }
+}
+
 TEST(SolidPieces, APlaneMissingTheSolidGivesOnePiece) {
   Workbench bench;
   bench.brick("b", {0, 0, 0}, {1, 1, 1});
