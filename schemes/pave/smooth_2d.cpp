@@ -46,89 +46,24 @@ struct Local {
   double mean = 0.0;
 };
 
-/// What of one of node i's quads does not move with the node: its next and
-/// previous corners, the two edges at its opposite corner and that corner's
-/// value. Taken once per node while its neighbours stay put (a pattern
-/// search evaluates hundreds of positions of one node), it leaves two edges
-/// and three corners to compute per position, in scaled_jacobian_2d's
-/// operations and order, so the quads' values are the same bits.
-struct FixedPart {
-  double nx, ny, px, py;  // next and previous corners
-  double e1x, e1y, e2x, e2y, l1, l2, opp;
-};
-
-void fix_ring(const std::vector<V2>& pts, const Ring& ring, size_t i, std::vector<FixedPart>& f) {
+/// Node i's quads as seen from i about to move (moving_corner_quad), taken
+/// once while its neighbours stay put: a pattern search evaluates hundreds
+/// of positions of one node.
+void fix_ring(const std::vector<V2>& pts, const Ring& ring, size_t i,
+              std::vector<MovingCornerQuad>& f) {
   f.clear();
   for (const Ring::Corner* c = ring.begin(i); c != ring.end(i); ++c) {
-    const V2& n = pts[static_cast<size_t>(c->next)];
-    const V2& o = pts[static_cast<size_t>(c->opp)];
-    const V2& p = pts[static_cast<size_t>(c->prev)];
-    FixedPart k;
-    k.nx = n.x();
-    k.ny = n.y();
-    k.px = p.x();
-    k.py = p.y();
-    k.e1x = o.x() - n.x();
-    k.e1y = o.y() - n.y();
-    k.e2x = p.x() - o.x();
-    k.e2y = p.y() - o.y();
-    k.l1 = std::sqrt(k.e1x * k.e1x + k.e1y * k.e1y);
-    k.l2 = std::sqrt(k.e2x * k.e2x + k.e2y * k.e2y);
-    k.opp = (k.e1x * k.e2y - k.e1y * k.e2x) / (k.l1 * k.l2);
-    f.push_back(k);
+    f.push_back(moving_corner_quad(pts[static_cast<size_t>(c->next)],
+                                   pts[static_cast<size_t>(c->opp)],
+                                   pts[static_cast<size_t>(c->prev)]));
   }
 }
 
 /// Quality of node i's quads with i placed at x (f from fix_ring); the
-/// quads' values go to out (one per ring entry). Two quads at a time, one
-/// per lane, as scaled_jacobian_2d_pair.
-Local local_quality(const std::vector<FixedPart>& f, const V2& x, double* out) {
+/// quads' values go to out (one per ring entry).
+Local local_quality(const std::vector<MovingCornerQuad>& f, const V2& x, double* out) {
   const size_t n = f.size();
-  const Pair2d xx = {x.x(), x.x()};
-  const Pair2d xy = {x.y(), x.y()};
-  size_t k = 0;
-  for (; k + 2 <= n; k += 2) {
-    const FixedPart& a = f[k];
-    const FixedPart& b = f[k + 1];
-    const Pair2d e0x = Pair2d{a.nx, b.nx} - xx;
-    const Pair2d e0y = Pair2d{a.ny, b.ny} - xy;
-    const Pair2d e3x = xx - Pair2d{a.px, b.px};
-    const Pair2d e3y = xy - Pair2d{a.py, b.py};
-    const Pair2d l0 = sqrt_pair(e0x * e0x + e0y * e0y);
-    const Pair2d l3 = sqrt_pair(e3x * e3x + e3y * e3y);
-    const Pair2d e1x = {a.e1x, b.e1x}, e1y = {a.e1y, b.e1y};
-    const Pair2d e2x = {a.e2x, b.e2x}, e2y = {a.e2y, b.e2y};
-    const Pair2d l1 = {a.l1, b.l1}, l2 = {a.l2, b.l2};
-    const auto valid = (l0 > 0) & (l1 > 0) & (l2 > 0) & (l3 > 0);
-    Pair2d m = {1.0, 1.0};
-    const Pair2d v0 = (e3x * e0y - e3y * e0x) / (l3 * l0);
-    m = v0 < m ? v0 : m;
-    const Pair2d v1 = (e0x * e1y - e0y * e1x) / (l0 * l1);
-    m = v1 < m ? v1 : m;
-    const Pair2d v2 = {a.opp, b.opp};
-    m = v2 < m ? v2 : m;
-    const Pair2d v3 = (e2x * e3y - e2y * e3x) / (l2 * l3);
-    m = v3 < m ? v3 : m;
-    out[k] = valid[0] ? m[0] : -1.0;
-    out[k + 1] = valid[1] ? m[1] : -1.0;
-  }
-  if (k < n) {
-    const FixedPart& a = f[k];
-    const double e0x = a.nx - x.x(), e0y = a.ny - x.y();
-    const double e3x = x.x() - a.px, e3y = x.y() - a.py;
-    const double l0 = std::sqrt(e0x * e0x + e0y * e0y);
-    const double l3 = std::sqrt(e3x * e3x + e3y * e3y);
-    if (!(l0 > 0) || !(a.l1 > 0) || !(a.l2 > 0) || !(l3 > 0)) {
-      out[k] = -1.0;
-    } else {
-      double m = 1.0;
-      m = std::min(m, (e3x * e0y - e3y * e0x) / (l3 * l0));
-      m = std::min(m, (e0x * a.e1y - e0y * a.e1x) / (l0 * a.l1));
-      m = std::min(m, a.opp);
-      m = std::min(m, (a.e2x * e3y - a.e2y * e3x) / (a.l2 * l3));
-      out[k] = m;
-    }
-  }
+  scaled_jacobians_at(f.data(), n, x, out);
   Local l;
   for (size_t q = 0; q < n; ++q) {
     l.worst = std::min(l.worst, out[q]);
@@ -279,7 +214,7 @@ int smooth_quads_2d(std::vector<V2>& pts, const std::vector<Quad>& quads,
   std::vector<double> quality(quads.size());
   for (size_t k = 0; k < quads.size(); ++k) quality[k] = scaled_jacobian_2d(pts, quads[k]);
   std::vector<double> values(widest);
-  std::vector<FixedPart> fixed_part;
+  std::vector<MovingCornerQuad> fixed_part;
   fixed_part.reserve(widest);
 
   int sweeps = 0;

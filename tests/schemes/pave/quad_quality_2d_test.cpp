@@ -13,38 +13,47 @@ namespace {
 
 using V2 = Eigen::Vector2d;
 
-TEST(QuadQuality2d, PairEqualsTheScalarFunctionBitForBit) {
+// A node's quads as smoothing evaluates them (its corner moves, the rest is
+// taken once): the same bits as the scalar function, in both lanes and for
+// an odd quad left over.
+TEST(QuadQuality2d, MovingCornerQuadsEqualTheScalarFunctionBitForBit) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> jitter(-0.7, 0.7);
-  std::vector<std::array<V2, 4>> quads;
-  for (int i = 0; i < 400; ++i) {
-    std::array<V2, 4> q = {V2(0, 0), V2(1, 0), V2(1, 1), V2(0, 1)};
+  int inverted = 0, compared = 0;
+  for (int ring = 0; ring < 80; ++ring) {
     const double scale = std::pow(10.0, jitter(rng) * 8);  // 1e-5.6 .. 1e5.6
-    for (V2& p : q) p = scale * (p + V2(jitter(rng), jitter(rng)));
-    quads.push_back(q);
-  }
-  quads.push_back({V2(0, 0), V2(0, 0), V2(1, 1), V2(0, 1)});  // a zero edge: -1
-  quads.push_back({V2(0, 0), V2(1, 0), V2(0, 1), V2(1, 1)});  // bow tie
-  int inverted = 0;
-  for (size_t i = 0; i + 1 < quads.size(); i += 2) {
-    const V2* p[4];
-    const V2* q[4];
-    for (int k = 0; k < 4; ++k) p[k] = &quads[i][static_cast<size_t>(k)];
-    for (int k = 0; k < 4; ++k) q[k] = &quads[i + 1][static_cast<size_t>(k)];
-    double pair[2];
-    scaled_jacobian_2d_pair(p, q, pair);
-    for (int lane = 0; lane < 2; ++lane) {
-      const auto& quad = quads[i + static_cast<size_t>(lane)];
-      const double expected = scaled_jacobian_2d(quad[0], quad[1], quad[2], quad[3]);
-      inverted += expected < 0;
-      EXPECT_EQ(pair[lane], expected) << "quad " << i + static_cast<size_t>(lane);
+    const size_t n = 1 + static_cast<size_t>(ring % 7);    // odd and even valences
+    std::vector<std::array<V2, 3>> rest;
+    std::vector<MovingCornerQuad> fixed;
+    for (size_t k = 0; k < n; ++k) {
+      std::array<V2, 3> q = {V2(1, 0), V2(1, 1), V2(0, 1)};
+      for (V2& p : q) p = scale * (p + V2(jitter(rng), jitter(rng)));
+      rest.push_back(q);
+      fixed.push_back(moving_corner_quad(q[0], q[1], q[2]));
+    }
+    for (int trial = 0; trial < 5; ++trial) {
+      const V2 x = scale * V2(jitter(rng), jitter(rng));
+      std::vector<double> out(n);
+      scaled_jacobians_at(fixed.data(), n, x, out.data());
+      for (size_t k = 0; k < n; ++k) {
+        const double expected = scaled_jacobian_2d(x, rest[k][0], rest[k][1], rest[k][2]);
+        inverted += expected < 0;
+        ++compared;
+        EXPECT_EQ(out[k], expected) << "ring " << ring << " quad " << k;
+      }
     }
   }
-  EXPECT_GT(inverted, 20);  // the sample reaches reflex and inverted quads
-  const V2* zero_edge[4] = {&quads[400][0], &quads[400][1], &quads[400][2], &quads[400][3]};
-  double pair[2];
-  scaled_jacobian_2d_pair(zero_edge, zero_edge, pair);
-  EXPECT_EQ(pair[0], -1.0);
+  EXPECT_GT(compared, 1000);
+  EXPECT_GT(inverted, 100);  // the sample reaches reflex and inverted quads
+  // A zero edge at the moving corner, and one among the fixed ones: -1.
+  const MovingCornerQuad fixed[2] = {moving_corner_quad(V2(0, 0), V2(1, 1), V2(0, 1)),
+                                     moving_corner_quad(V2(1, 0), V2(1, 0), V2(0, 1))};
+  double out[2];
+  scaled_jacobians_at(fixed, 2, V2(0, 0), out);
+  EXPECT_EQ(out[0], -1.0);
+  EXPECT_EQ(out[1], -1.0);
+  scaled_jacobians_at(fixed + 1, 1, V2(0.2, 0.1), out);
+  EXPECT_EQ(out[0], -1.0);
 }
 
 }  // namespace
