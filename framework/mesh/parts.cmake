@@ -4,5 +4,6 @@ cooperage_framework_part(mesh SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/corner_sine.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loop_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/split_poor_quads.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/strip_elements.cpp
   ${CMAKE_CURRENT_LIST_DIR}/improve_split_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/tfi.cpp)

@@ -5,6 +5,8 @@
 #include "framework/geometry/projection_walk.h"
 #include "framework/mesh/corner_sine.h"
 #include "framework/mesh/improve_split_nodes.h"
+#include "framework/mesh/loop_nodes.h"
+#include "framework/mesh/strip_elements.h"
 #include "framework/scheme/vertex_angles.h"
 
 #include <algorithm>
@@ -31,6 +33,64 @@ struct Candidate {
   scheme::EntityMesh mesh;
   mesh::SurfaceMeshQuality quality;
 };
+
+// Rungs of a strip's row at most this many mean boundary edges long.
+constexpr double kStripWidth = 3.0;
+
+// A face of one loop between two tips (its sharpest corner below 90
+// degrees, the next below 180) and thinner than its elements, as one row of
+// elements (strip_elements.h); nullopt for any other face.
+std::optional<scheme::EntityMesh> strip_mesh(const scheme::SurfaceView& view) {
+  const geom::Surface& s = view.surface();
+  if (!view.mesh || s.loops.size() != 1) return std::nullopt;
+  std::vector<scheme::LoopCorner> corners = scheme::loop_corners(view.model, view.surface_id, 0);
+  if (corners.size() < 2) return std::nullopt;
+  std::stable_sort(corners.begin(), corners.end(),
+                   [](const auto& x, const auto& y) { return x.angle < y.angle; });
+  if (corners[0].angle >= 90.0 || corners[1].angle >= 180.0) return std::nullopt;
+  const std::vector<int> ring =
+      mesh::surface_loop_nodes(view.model, view.surface_id, *view.mesh)[0];
+  std::vector<size_t> tips;
+  for (size_t c = 0; c < 2; ++c) {
+    const int node = view.mesh->vertex_node(corners[c].vertex);
+    size_t found = 0, at = 0;
+    for (size_t k = 0; k < ring.size(); ++k) {
+      if (ring[k] == node) {
+        ++found;
+        at = k;
+      }
+    }
+    if (found != 1) return std::nullopt;  // a vertex the loop passes twice
+    tips.push_back(at);
+  }
+  std::vector<Vec3> x;
+  for (int node : ring) x.push_back(view.mesh->node(node));
+  const auto elements =
+      mesh::strip_elements(x, std::min(tips[0], tips[1]), std::max(tips[0], tips[1]));
+  if (!elements) return std::nullopt;
+  // Thinner than its elements: no rung of the row longer than kStripWidth
+  // mean boundary edges (a wide face in one row would be far coarser than
+  // its curves ask).
+  const size_t n = x.size();
+  double perimeter = 0, widest = 0;
+  for (size_t k = 0; k < n; ++k) perimeter += (x[(k + 1) % n] - x[k]).norm();
+  const auto rung = [&](int u, int v) {  // an element edge across the face
+    const size_t a = static_cast<size_t>(u), b = static_cast<size_t>(v);
+    if ((a + 1) % n != b && (b + 1) % n != a) widest = std::max(widest, (x[a] - x[b]).norm());
+  };
+  for (const mesh::Quad& q : elements->quads) {
+    for (int k = 0; k < 4; ++k) rung(q[k], q[(k + 1) % 4]);
+  }
+  for (const mesh::Tri& t : elements->tris) {
+    for (int k = 0; k < 3; ++k) rung(t[k], t[(k + 1) % 3]);
+  }
+  if (widest > kStripWidth * perimeter / static_cast<double>(n)) return std::nullopt;
+  scheme::EntityMesh out;
+  for (size_t k = 0; k < ring.size(); ++k) out.add(x[k], ring[k]);
+  out.quads = elements->quads;
+  out.tris = elements->tris;
+  return out;
+}
 
 }  // namespace
 
@@ -181,7 +241,18 @@ scheme::EntityMesh FallbackChain::mesh(const scheme::SurfaceView& view,
     qd.quality = mesh::surface_mesh_quality(qd.mesh.coords, qd.mesh.quads, qd.mesh.tris, normal_at);
     if (consider(std::move(qd))) return finish(true);
   }
-  // 4. Triangles.
+  // 4. A strip between two tips: one row of quads, a triangle at each tip.
+  try {
+    if (auto strip = strip_mesh(view)) {
+      const mesh::SurfaceMeshQuality q =
+          mesh::surface_mesh_quality(strip->coords, strip->quads, strip->tris, normal_at);
+      const std::string what = "one row of elements between its two tips";
+      if (consider({what, std::move(*strip), q})) return finish(true);
+    }
+  } catch (const MeshingError& e) {
+    given_up.push_back("one row of elements between its two tips failed (" + e.message() + ")");
+  }
+  // 5. Triangles.
   if (triangles_ && run(*triangles_, "a triangle mesh (" + std::string(triangles_->name()) + ")")) {
     return finish(true);
   }

@@ -7,7 +7,10 @@
 //   2. the all-quad fallback (pave), if the primary is not pave;
 //   3. quad-dominant: the best quad mesh of 1-2 with its quads below
 //      min_quality split into triangles (framework/mesh/split_poor_quads.h);
-//   4. triangles (the tri scheme), the last resort.
+//   4. on a strip (one loop between two tips, thinner than its elements: a
+//      thread's flank), one row of quads with a triangle at each tip
+//      (framework/mesh/strip_elements.h), where triangles would be needles;
+//   5. triangles (the tri scheme), the last resort.
 // A face with a corner sharper than asin(min_quality) cannot reach it: no
 // element at a corner of angle a exceeds sin(a). There the bar is
 // reachable_floor(): a mesh that reaches what the corner allows is kept as
