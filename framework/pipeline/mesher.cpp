@@ -15,6 +15,7 @@
 #include "framework/report/report_from_run.h"
 #include "framework/pipeline/mesh_size.h"
 #include "framework/pipeline/partial_mesh.h"
+#include "framework/pipeline/worst_element.h"
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -422,6 +423,22 @@ MeshResult mesh_attempt(const geom::Model& model, const io::MeshSettings& job_se
     }
     if (d > tolerance) deviates[m.entity.id] = text + "; the tolerance is " + percent(tolerance);
     result.measures.push_back(m);
+  }
+
+  // A valid but poor volume mesh says where its worst element is and
+  // whether the part's corners allow better.
+  if (dim == 3) {
+    std::set<int> poor;
+    for (const auto& block : result.quality.blocks) {
+      const auto* sj = block.find("scaled_jacobian");
+      if (block.dim == 3 && sj && sj->inverted == 0 && sj->min < kPoorElement)
+        poor.insert(block.id);
+    }
+    for (int v : poor) {
+      if (refusals.refused(v)) continue;
+      std::string note = worst_element_note(model, result.mesh, v);
+      if (!note.empty()) result.warnings.push_back({EntityRef::volume(v), std::move(note)});
+    }
   }
 
   // Verdicts, in id order.

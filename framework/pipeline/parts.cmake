@@ -6,6 +6,7 @@ cooperage_framework_part(pipeline SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/mesh_curves.cpp
   ${CMAKE_CURRENT_LIST_DIR}/commit_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/quality_report.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/worst_element.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_size.cpp
   ${CMAKE_CURRENT_LIST_DIR}/measure_check.cpp
   ${CMAKE_CURRENT_LIST_DIR}/partial_mesh.cpp

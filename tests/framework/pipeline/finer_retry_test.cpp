@@ -386,7 +386,12 @@ TEST_F(FinerRetries, AWarningCheckOrNoRetriesKeepThePoorMesh) {
   EXPECT_FALSE(warned.failed());
   EXPECT_EQ(warned.mesh.mesh.hex_count(), 64u);
   EXPECT_NEAR(warned.quality.blocks.at(0).find("scaled_jacobian")->min, 0.182342, 1e-6);
-  EXPECT_TRUE(warned.mesh.warnings.empty());
+  // Only the note on the worst element (below 0.2), no retry.
+  ASSERT_EQ(warned.mesh.warnings.size(), 1u);
+  EXPECT_EQ(
+      warned.mesh.warnings.front().message.rfind("its worst hex has a scaled Jacobian of 0.182", 0),
+      0u)
+      << warned.mesh.warnings.front().text();
   std::filesystem::remove(dir_ / "out.vtu");
   const RunResult none = run_job(journal(poor_cube(" finer_retries=\"0\"", "fail")), registry_,
                                  selector::mesh_options());
@@ -417,7 +422,9 @@ TEST_F(FinerRetries, ARetryNoBetterKeepsTheFirstMeshAndTheCheckFails) {
   const RunResult r = run_job(journal(poor_cube("", "fail")), registry_, selector::mesh_options());
   EXPECT_TRUE(r.failed());
   EXPECT_EQ(r.mesh.mesh.hex_count(), 64u);
-  EXPECT_TRUE(r.mesh.warnings.empty());
+  // No retry was kept: the only warning is the note on the worst element.
+  ASSERT_EQ(r.mesh.warnings.size(), 1u);
+  EXPECT_EQ(r.mesh.warnings.front().message.rfind("its worst hex has a scaled Jacobian of", 0), 0u);
   EXPECT_FALSE(written("out.vtu"));
 }
 

@@ -1,0 +1,126 @@
+// The note on a volume's worst element (framework/pipeline/worst_element.h):
+// a blade whose face has an 8-degree corner is bounded there at any size,
+// and the note says so; a hex made poor in the middle of a cube is not
+// bounded by any corner, and the note says where it is; a good mesh gets
+// no note. Values are checked against the hexes' own scaled Jacobians.
+#include "framework/pipeline/worst_element.h"
+
+#include "support/mesh_checks.h"
+
+#include "framework/geometry/occ/workbench.h"
+#include "framework/pipeline/mesher.h"
+#include "schemes/builtin_schemes.h"
+#include "selector/select_schemes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cooperage::pipeline {
+namespace {
+
+using geom::Vec3;
+
+const scheme::Registry& builtin() {
+  static const scheme::Registry& r = *[] {
+    auto* registry = new scheme::Registry;  // lives for the whole test run
+    register_builtin_schemes(*registry);
+    return registry;
+  }();
+  return r;
+}
+
+io::MeshSettings sized(double size) {
+  io::MeshSettings s;
+  s.size = size;
+  s.finer_retries = 0;
+  return s;
+}
+
+double worst_hex(const mesh::MeshDB& db, int volume) {
+  double worst = 1.0;
+  for (const mesh::Hex& h : db.volume(volume).hexes)
+    worst = std::min(worst, testing::hex_scaled_jacobian(testing::hex_points(db, h)));
+  return worst;
+}
+
+std::string number3(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+// A prism 1 thick on the profile (0,0) (L,0) (L,2) (2/tan 8deg, 2): its
+// faces at z = 0 and 1 have a corner of 8 degrees at x = y = 0, and every
+// hex there has a face with that corner: sin 8 = 0.139 at most.
+TEST(WorstElement, AnEightDegreeCornerIsNamedAsTheBound) {
+  const double tip = 2.0 / std::tan(8.0 * M_PI / 180.0);
+  occ::Workbench wb;
+  wb.prism("blade", {{0, 0, 0}, {tip + 4, 0, 0}, {tip + 4, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
+  const geom::Model model = wb.build_model();
+  const MeshResult r = mesh_model(model, sized(0.5), builtin(), selector::mesh_options());
+  const double worst = worst_hex(r.mesh, 1);
+  ASSERT_GT(worst, 0.0);
+  ASSERT_LT(worst, std::sin(8.0 * M_PI / 180.0) + 0.01);
+  const std::string note = worst_element_note(model, r.mesh, 1);
+  EXPECT_NE(note.find("scaled Jacobian of " + number3(worst)), std::string::npos) << note;
+  EXPECT_NE(note.find("has a corner of 8.0 degrees"), std::string::npos) << note;
+  EXPECT_NE(note.find("(0.139)"), std::string::npos) << note;
+  // The run carries it as the volume's warning.
+  bool warned = false;
+  for (const auto& w : r.warnings) warned = warned || w.message == note;
+  EXPECT_TRUE(warned);
+}
+
+// A 2 x 2 x 2 grid of hexes in the unit cube with its centre node moved
+// 0.155 along each axis: the hex towards (1, 1, 1) nearly folds at it (at
+// 1/6 it would), and no model corner is at that node.
+TEST(WorstElement, APoorHexAwayFromCornersSaysWhereItIs) {
+  occ::Workbench wb;
+  wb.brick("cube", {0, 0, 0}, {1, 1, 1});
+  const geom::Model model = wb.build_model();
+  mesh::MeshDB db;
+  int node[3][3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) {
+        Vec3 x(0.5 * i, 0.5 * j, 0.5 * k);
+        const bool centre = i == 1 && j == 1 && k == 1;
+        if (centre) x += Vec3(0.155, 0.155, 0.155);
+        node[i][j][k] = db.add_node(x, {static_cast<std::int8_t>(centre ? 3 : 2), 1});
+      }
+    }
+  }
+  auto& hexes = db.mutable_volume(1).hexes;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      for (int k = 0; k < 2; ++k) {
+        hexes.push_back({node[i][j][k], node[i + 1][j][k], node[i + 1][j + 1][k], node[i][j + 1][k],
+                         node[i][j][k + 1], node[i + 1][j][k + 1], node[i + 1][j + 1][k + 1],
+                         node[i][j + 1][k + 1]});
+      }
+    }
+  }
+  const double worst = worst_hex(db, 1);
+  ASSERT_GT(worst, 0.0);
+  ASSERT_LT(worst, 0.2);
+  const std::string note = worst_element_note(model, db, 1);
+  EXPECT_EQ(note.rfind("its worst hex has a scaled Jacobian of " + number3(worst), 0), 0u) << note;
+  EXPECT_NE(note.find("no corner of the part there bounds it"), std::string::npos) << note;
+  // Below a bar under its worst value there is nothing to say.
+  EXPECT_EQ(worst_element_note(model, db, 1, worst - 1e-9), "");
+}
+
+TEST(WorstElement, AGoodMeshHasNoNote) {
+  occ::Workbench wb;
+  wb.brick("b", {0, 0, 0}, {2, 3, 4});
+  const geom::Model model = wb.build_model();
+  const MeshResult r = mesh_model(model, sized(0.5), builtin(), selector::mesh_options());
+  EXPECT_EQ(worst_element_note(model, r.mesh, 1), "");
+  EXPECT_TRUE(r.warnings.empty());
+}
+
+}  // namespace
+}  // namespace cooperage::pipeline
