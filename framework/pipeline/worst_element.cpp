@@ -4,6 +4,7 @@
 #include "framework/quality/wedge_metrics.h"
 #include "framework/scheme/vertex_angles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -36,6 +37,64 @@ Corner sharpest_at(const geom::Model& model, int volume, int vertex) {
       for (const scheme::LoopCorner& c : scheme::loop_corners(model, s, static_cast<int>(l))) {
         if (c.vertex == vertex && c.angle < best.degrees) best = {s, c.angle};
       }
+    }
+  }
+  return best;
+}
+
+// The sharpest convex edge of `volume` that an edge of the element runs
+// along: a curve both of whose nodes lie on it (or at its vertices), between
+// two faces of the volume; the interior angle from their outward normals
+// at the edge's middle, when the element's centre lies behind both faces
+// (convex: no bound is read from a concave edge).
+struct Edge {
+  int curve = 0;
+  int surfaces[2] = {0, 0};
+  double degrees = 360.0;
+};
+
+bool on_curve(const geom::Model& model, const mesh::NodeOwner& o, int curve) {
+  if (o.dim == 1) return o.id == curve;
+  if (o.dim != 0) return false;
+  const geom::Curve& c = model.curve(curve);
+  return c.start_vertex == o.id || c.end_vertex == o.id;
+}
+
+Edge sharpest_edge(const geom::Model& model, const mesh::MeshDB& db, int volume,
+                   const std::vector<int>& nodes, const std::vector<std::pair<int, int>>& edges,
+                   const geom::Vec3& centre) {
+  Edge best;
+  const std::vector<int> faces = model.surfaces_of(volume);
+  for (const auto& [a, b] : edges) {
+    const mesh::NodeOwner& oa = db.owner(nodes[static_cast<size_t>(a)]);
+    const mesh::NodeOwner& ob = db.owner(nodes[static_cast<size_t>(b)]);
+    std::set<int> curves;
+    for (const mesh::NodeOwner* o : {&oa, &ob}) {
+      if (o->dim == 1) curves.insert(o->id);
+      if (o->dim == 0)
+        curves.insert(model.vertex(o->id).curves.begin(), model.vertex(o->id).curves.end());
+    }
+    for (int c : curves) {
+      if (!on_curve(model, oa, c) || !on_curve(model, ob, c)) continue;
+      std::vector<int> sides;
+      for (int s : model.curve(c).surfaces) {
+        if (std::find(faces.begin(), faces.end(), s) != faces.end()) sides.push_back(s);
+      }
+      if (sides.size() != 2) continue;
+      const geom::Vec3 mid =
+          0.5 * (db.node(nodes[static_cast<size_t>(a)]) + db.node(nodes[static_cast<size_t>(b)]));
+      geom::Vec3 n[2];
+      bool behind = true;
+      for (int k = 0; k < 2; ++k) {
+        const geom::SurfaceProjection p = model.surface(sides[k]).geometry->project(mid);
+        const double out = model.sense_in(sides[k], volume) == geom::Sense::Forward ? 1.0 : -1.0;
+        n[k] = out * p.normal;
+        behind = behind && (centre - p.point).dot(n[k]) < 0;
+      }
+      if (!behind) continue;
+      const double degrees =
+          180.0 - std::acos(std::clamp(n[0].dot(n[1]), -1.0, 1.0)) * 180.0 / M_PI;
+      if (degrees < best.degrees) best = {c, {sides[0], sides[1]}, degrees};
     }
   }
   return best;
@@ -98,13 +157,29 @@ std::string worst_element_note(const geom::Model& model, const mesh::MeshDB& db,
            " degrees: no element there can exceed sin of that angle (" + number(cap, "%.3f") +
            "), at any size";
   }
+  // An edge of the part the element runs along, as sharp.
+  static const std::vector<std::pair<int, int>> kHexEdges = {{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                                             {4, 5}, {5, 6}, {6, 7}, {7, 4},
+                                                             {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  static const std::vector<std::pair<int, int>> kWedgeEdges = {
+      {0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {0, 3}, {1, 4}, {2, 5}};
+  const Edge edge =
+      sharpest_edge(model, db, volume, nodes, nodes.size() == 8 ? kHexEdges : kWedgeEdges, centre);
+  const double edge_cap = std::sin(edge.degrees * M_PI / 180.0);
+  if (edge.curve > 0 && edge.degrees < 90.0 && edge_cap < worst + 0.05) {
+    return out + ", along curve " + std::to_string(edge.curve) + ", where surfaces " +
+           std::to_string(edge.surfaces[0]) + " and " + std::to_string(edge.surfaces[1]) +
+           " meet at " + number(edge.degrees, "%.1f") +
+           " degrees: no element along it can exceed sin of that angle (" +
+           number(edge_cap, "%.3f") + "), at any size";
+  }
   std::string near;
   if (!vertices.empty())
     near = "vertex " + std::to_string(*vertices.begin());
   else if (!curves.empty())
     near = "curve " + std::to_string(*curves.begin());
   if (!near.empty()) out += ", next to " + near;
-  return out + "; no corner of the part there bounds it: a smaller size on volume " +
+  return out + "; no corner or edge of the part there bounds it: a smaller size on volume " +
          std::to_string(volume) + " or a cut through that spot may raise it";
 }
 

@@ -108,9 +108,42 @@ TEST(WorstElement, APoorHexAwayFromCornersSaysWhereItIs) {
   ASSERT_LT(worst, 0.2);
   const std::string note = worst_element_note(model, db, 1);
   EXPECT_EQ(note.rfind("its worst hex has a scaled Jacobian of " + number3(worst), 0), 0u) << note;
-  EXPECT_NE(note.find("no corner of the part there bounds it"), std::string::npos) << note;
+  EXPECT_NE(note.find("no corner or edge of the part there bounds it"), std::string::npos) << note;
   // Below a bar under its worst value there is nothing to say.
   EXPECT_EQ(worst_element_note(model, db, 1, worst - 1e-9), "");
+}
+
+// One hex in the middle of the blade's 8-degree edge (the z-line through
+// the origin), away from its vertices: no face corner is at it, the edge
+// between the two side faces bounds it.
+TEST(WorstElement, AnEightDegreeEdgeIsNamedAsTheBound) {
+  const double angle = 8.0 * M_PI / 180.0;
+  const double tip = 2.0 / std::tan(angle);
+  occ::Workbench wb;
+  wb.prism("blade", {{0, 0, 0}, {tip + 4, 0, 0}, {tip + 4, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
+  const geom::Model model = wb.build_model();
+  int edge = 0;
+  for (const auto& c : model.curves()) {
+    const Vec3 a = model.vertex(c.start_vertex).point, b = model.vertex(c.end_vertex).point;
+    if (a.head<2>().norm() < 1e-9 && b.head<2>().norm() < 1e-9) edge = c.id;
+  }
+  ASSERT_GT(edge, 0);
+  mesh::MeshDB db;
+  const Vec3 along(1, 0, 0), slant(std::cos(angle), std::sin(angle), 0);
+  std::vector<int> n;
+  for (const double z : {0.25, 0.75}) {
+    n.push_back(db.add_node({0, 0, z}, {1, edge}));
+    n.push_back(db.add_node(0.5 * along + Vec3(0, 0, z), {2, 1}));
+    n.push_back(db.add_node(0.5 * (along + slant) + Vec3(0, 0, z), {3, 1}));
+    n.push_back(db.add_node(0.5 * slant + Vec3(0, 0, z), {2, 2}));
+  }
+  db.mutable_volume(1).hexes.push_back({n[0], n[1], n[2], n[3], n[4], n[5], n[6], n[7]});
+  const double worst = worst_hex(db, 1);
+  ASSERT_GT(worst, 0.0);
+  const std::string note = worst_element_note(model, db, 1, 1.0);
+  EXPECT_NE(note.find("along curve " + std::to_string(edge)), std::string::npos) << note;
+  EXPECT_NE(note.find("meet at 8.0 degrees"), std::string::npos) << note;
+  EXPECT_EQ(note.find("has a corner"), std::string::npos) << note;
 }
 
 TEST(WorstElement, AGoodMeshHasNoNote) {
