@@ -450,9 +450,17 @@ class Selector {
     // volume is refused like one no scheme applies to (plan lists it).
     const bool pinned =
         std::any_of(asks.begin(), asks.end(), [](const Request& a) { return a.pin; });
-    throw MeshingError(pinned ? ErrorCode::InvalidInput : ErrorCode::NotApplicable,
-                       EntityRef::volume(id),
-                       "no applicable scheme fits its neighbours: " + conflicts);
+    // Two sweeps ending on one shared surface from its two sides (a
+    // bracket's foot swept down onto a plate swept up): a cut or another
+    // scheme for this volume does not help, so the hint says what does.
+    const bool both_sweep = conflicts.find("would be meshed by both") != std::string::npos;
+    throw MeshingError(
+        pinned ? ErrorCode::InvalidInput : ErrorCode::NotApplicable, EntityRef::volume(id),
+        "no applicable scheme fits its neighbours: " + conflicts,
+        both_sweep ? "one surface cannot yet take the imprints of two sweeps (README, Limits); a "
+                     "sweep hint that starts one of them from that surface (<volume sources>) "
+                     "may fit, else --allow-partial writes the volumes that mesh"
+                   : "");
   }
 
   void choose_surface(int id) {
