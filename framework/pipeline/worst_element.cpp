@@ -100,34 +100,35 @@ Edge sharpest_edge(const geom::Model& model, const mesh::MeshDB& db, int volume,
   return best;
 }
 
+// The element with the smallest scaled Jacobian below `value` so far.
+struct Worst {
+  double value;
+  std::vector<int> nodes;
+  const char* kind;
+};
+
+template <class Nodes, class Element, class Metric>
+void scan(const std::vector<Element>& elements, const mesh::MeshDB& db, Metric metric,
+          const char* kind, Worst& worst) {
+  for (const Element& e : elements) {
+    Nodes p;
+    for (size_t k = 0; k < e.size(); ++k) p[k] = db.node(e[k]);
+    const double q = metric(p);
+    if (q < worst.value) worst = {q, std::vector<int>(e.begin(), e.end()), kind};
+  }
+}
+
 }  // namespace
 
 std::string worst_element_note(const geom::Model& model, const mesh::MeshDB& db, int volume,
                                double bar) {
   const mesh::VolumeMeshData& v = db.volume(volume);
-  double worst = bar;
-  std::vector<int> nodes;
-  const char* kind = "hex";
-  for (const mesh::Hex& h : v.hexes) {
-    quality::HexNodes p;
-    for (int k = 0; k < 8; ++k) p[static_cast<size_t>(k)] = db.node(h[static_cast<size_t>(k)]);
-    const double q = quality::hex_scaled_jacobian(p);
-    if (q < worst) {
-      worst = q;
-      nodes.assign(h.begin(), h.end());
-      kind = "hex";
-    }
-  }
-  for (const mesh::Wedge& w : v.wedges) {
-    quality::WedgeNodes p;
-    for (int k = 0; k < 6; ++k) p[static_cast<size_t>(k)] = db.node(w[static_cast<size_t>(k)]);
-    const double q = quality::wedge_scaled_jacobian(p);
-    if (q < worst) {
-      worst = q;
-      nodes.assign(w.begin(), w.end());
-      kind = "wedge";
-    }
-  }
+  Worst w{bar, {}, "hex"};
+  scan<quality::HexNodes>(v.hexes, db, quality::hex_scaled_jacobian, "hex", w);
+  scan<quality::WedgeNodes>(v.wedges, db, quality::wedge_scaled_jacobian, "wedge", w);
+  const double worst = w.value;
+  const std::vector<int>& nodes = w.nodes;
+  const char* kind = w.kind;
   if (nodes.empty() || !(worst > 0)) return {};
   geom::Vec3 centre = geom::Vec3::Zero();
   for (int n : nodes) centre += db.node(n) / static_cast<double>(nodes.size());

@@ -9,6 +9,7 @@
 
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/mesher.h"
+#include "pipeline_helpers.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
@@ -23,21 +24,8 @@ namespace {
 
 using geom::Vec3;
 
-const scheme::Registry& builtin() {
-  static const scheme::Registry& r = *[] {
-    auto* registry = new scheme::Registry;  // lives for the whole test run
-    register_builtin_schemes(*registry);
-    return registry;
-  }();
-  return r;
-}
-
-io::MeshSettings sized(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;
-  return s;
-}
+using testing::builtin_registry;
+using testing::sized_without_retries;
 
 double worst_hex(const mesh::MeshDB& db, int volume) {
   double worst = 1.0;
@@ -60,7 +48,8 @@ TEST(WorstElement, AnEightDegreeCornerIsNamedAsTheBound) {
   occ::Workbench wb;
   wb.prism("blade", {{0, 0, 0}, {tip + 4, 0, 0}, {tip + 4, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
   const geom::Model model = wb.build_model();
-  const MeshResult r = mesh_model(model, sized(0.5), builtin(), selector::mesh_options());
+  const MeshResult r =
+      mesh_model(model, sized_without_retries(0.5), builtin_registry(), selector::mesh_options());
   const double worst = worst_hex(r.mesh, 1);
   ASSERT_GT(worst, 0.0);
   ASSERT_LT(worst, std::sin(8.0 * M_PI / 180.0) + 0.01);
@@ -150,7 +139,8 @@ TEST(WorstElement, AGoodMeshHasNoNote) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {2, 3, 4});
   const geom::Model model = wb.build_model();
-  const MeshResult r = mesh_model(model, sized(0.5), builtin(), selector::mesh_options());
+  const MeshResult r =
+      mesh_model(model, sized_without_retries(0.5), builtin_registry(), selector::mesh_options());
   EXPECT_EQ(worst_element_note(model, r.mesh, 1), "");
   EXPECT_TRUE(r.warnings.empty());
 }
