@@ -28,7 +28,7 @@ using testing::hex_scaled_jacobian;
 using testing::hex_volume;
 
 using testing::builtin_registry;
-using testing::sized_without_retries;
+using testing::sized;
 
 const MeshOptions kOptions = selector::mesh_options();
 
@@ -68,7 +68,7 @@ TEST(Mesher, Brick2x3x4AtHalfGivesExactCountsVolumeAndConformity) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {2, 3, 4});
   const geom::Model model = bench.build_model();
-  const MeshResult r = mesh_model(model, sized_without_retries(0.5), builtin_registry(), kOptions);
+  const MeshResult r = mesh_model(model, sized(0.5), builtin_registry(), kOptions);
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "map");
   EXPECT_EQ(r.mesh.hex_count(), 4u * 6u * 8u);
   EXPECT_NEAR(total_hex_volume(r.mesh), 24.0, 1e-9);
@@ -87,7 +87,7 @@ TEST(Mesher, QuarterAnnulusExtrudedMeshesByVolumeMapWithGoodQuality) {
   bench.revolve("q", {{1, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}}, {0, 0, 0}, {0, 0, 1}, 90);
   const geom::Model model = bench.build_model();
   ASSERT_EQ(model.surfaces().size(), 6u);
-  const MeshResult r = mesh_model(model, sized_without_retries(0.2), builtin_registry(), kOptions);
+  const MeshResult r = mesh_model(model, sized(0.2), builtin_registry(), kOptions);
   EXPECT_EQ(r.plan.volumes.at(1).scheme, "map");
   double min_sj = 1;
   for (const auto& h : r.mesh.volume(1).hexes) {
@@ -113,7 +113,7 @@ TEST(Mesher, TwoMergedBricksShareTheNodesOfTheirCommonFace) {
   bench.brick("b", {1, 0, 0}, {1, 1, 1});
   const geom::Model model = bench.build_model();
   ASSERT_EQ(model.volumes().size(), 2u);
-  const MeshResult r = mesh_model(model, sized_without_retries(0.25), builtin_registry(), kOptions);
+  const MeshResult r = mesh_model(model, sized(0.25), builtin_registry(), kOptions);
   EXPECT_EQ(r.mesh.hex_count(), 2u * 64u);
   EXPECT_EQ(r.mesh.node_count(), 9u * 5u * 5u);
   EXPECT_EQ(duplicate_node_pairs(r.mesh, 1e-9), 0);
@@ -132,8 +132,8 @@ TEST(Mesher, RigidTransformGivesTheTransformedMesh) {
     return bench.build_model();
   };
   const geom::Model m0 = build(false), m1 = build(true);
-  const MeshResult r0 = mesh_model(m0, sized_without_retries(0.25), builtin_registry(), kOptions);
-  const MeshResult r1 = mesh_model(m1, sized_without_retries(0.25), builtin_registry(), kOptions);
+  const MeshResult r0 = mesh_model(m0, sized(0.25), builtin_registry(), kOptions);
+  const MeshResult r1 = mesh_model(m1, sized(0.25), builtin_registry(), kOptions);
   ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count());
   ASSERT_EQ(r0.mesh.hex_count(), r1.mesh.hex_count());
   EXPECT_EQ(r0.mesh.volume(1).hexes, r1.mesh.volume(1).hexes);  // same connectivity
@@ -146,7 +146,7 @@ TEST(Mesher, SphereHasNoApplicableSchemeAndSaysWhy) {
   bench.sphere("s", {0, 0, 0}, 1);
   const geom::Model model = bench.build_model();
   try {
-    mesh_model(model, sized_without_retries(0.2), builtin_registry(), kOptions);
+    mesh_model(model, sized(0.2), builtin_registry(), kOptions);
     FAIL() << "a sphere was meshed";
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
@@ -163,8 +163,8 @@ TEST(Mesher, SameInputSameMeshForAnyThreadCount) {
   const geom::Model model = bench.build_model();
   MeshOptions one = selector::mesh_options(3, 1);
   MeshOptions many = selector::mesh_options(3, 4);
-  const MeshResult a = mesh_model(model, sized_without_retries(0.2), builtin_registry(), one);
-  const MeshResult b = mesh_model(model, sized_without_retries(0.2), builtin_registry(), many);
+  const MeshResult a = mesh_model(model, sized(0.2), builtin_registry(), one);
+  const MeshResult b = mesh_model(model, sized(0.2), builtin_registry(), many);
   ASSERT_EQ(a.mesh.node_count(), b.mesh.node_count());
   for (size_t n = 0; n < a.mesh.node_count(); ++n) {
     EXPECT_EQ(a.mesh.node(static_cast<int>(n)), b.mesh.node(static_cast<int>(n)));

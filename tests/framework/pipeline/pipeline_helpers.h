@@ -1,9 +1,9 @@
 // The registry and settings the pipeline tests mesh CAD models with.
 #pragma once
 
-#include "framework/io/job.h"
 #include "framework/scheme/registry.h"
 #include "schemes/builtin_schemes.h"
+#include "support/sized_settings.h"
 
 namespace cooperage::testing {
 
@@ -15,14 +15,6 @@ inline const scheme::Registry& builtin_registry() {
     return registry;
   }();
   return r;
-}
-
-/// An element size and no retry at a finer one: the scheme at this size.
-inline io::MeshSettings sized_without_retries(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;
-  return s;
 }
 
 }  // namespace cooperage::testing

@@ -25,7 +25,7 @@ namespace {
 using geom::Vec3;
 
 using testing::builtin_registry;
-using testing::sized_without_retries;
+using testing::sized;
 
 double worst_hex(const mesh::MeshDB& db, int volume) {
   double worst = 1.0;
@@ -48,8 +48,7 @@ TEST(WorstElement, AnEightDegreeCornerIsNamedAsTheBound) {
   occ::Workbench wb;
   wb.prism("blade", {{0, 0, 0}, {tip + 4, 0, 0}, {tip + 4, 2, 0}, {tip, 2, 0}}, {}, {0, 0, 1});
   const geom::Model model = wb.build_model();
-  const MeshResult r =
-      mesh_model(model, sized_without_retries(0.5), builtin_registry(), selector::mesh_options());
+  const MeshResult r = mesh_model(model, sized(0.5), builtin_registry(), selector::mesh_options());
   const double worst = worst_hex(r.mesh, 1);
   ASSERT_GT(worst, 0.0);
   ASSERT_LT(worst, std::sin(8.0 * M_PI / 180.0) + 0.01);
@@ -139,8 +138,7 @@ TEST(WorstElement, AGoodMeshHasNoNote) {
   occ::Workbench wb;
   wb.brick("b", {0, 0, 0}, {2, 3, 4});
   const geom::Model model = wb.build_model();
-  const MeshResult r =
-      mesh_model(model, sized_without_retries(0.5), builtin_registry(), selector::mesh_options());
+  const MeshResult r = mesh_model(model, sized(0.5), builtin_registry(), selector::mesh_options());
   EXPECT_EQ(worst_element_note(model, r.mesh, 1), "");
   EXPECT_TRUE(r.warnings.empty());
 }

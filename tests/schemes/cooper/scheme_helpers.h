@@ -6,6 +6,7 @@
 #include "framework/scheme/registry.h"
 #include "schemes/builtin_schemes.h"
 #include "schemes/pave/pave_2d.h"
+#include "support/sized_settings.h"
 
 #include <memory>
 #include <vector>
@@ -27,14 +28,6 @@ inline std::unique_ptr<scheme::Registry> builtin() {
   auto r = std::make_unique<scheme::Registry>();
   register_builtin_schemes(*r);
   return r;
-}
-
-/// The scheme at this size, not a retry at a finer one.
-inline io::MeshSettings sized(double size) {
-  io::MeshSettings s;
-  s.size = size;
-  s.finer_retries = 0;
-  return s;
 }
 
 }  // namespace cooperage::testing
