@@ -15,6 +15,16 @@ namespace {
 
 using Vec2 = Eigen::Vector2d;
 
+// A corner this close to its floor (relative) counts as on it.
+constexpr double kAtFloor = 1e-9;
+// Newton's steps are damped by this fraction of the Hessian's trace: a node
+// with two nearly parallel active corners has a nearly singular Hessian,
+// whose undamped steps shoot far along the free direction and come back by
+// halving, so that rounding chose the step (campaign seed 4 case 159, size
+// 10.3: a moved part's untangled cap was 0.2 from the part's, 1.9 after
+// raise_worst_elements; seed 7 case 50 inverted a hex as built only).
+constexpr double kDamping = 1e-3;
+
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // One corner of a face: the node, the next and the previous one
@@ -72,15 +82,17 @@ Vec2 minimise(const std::vector<Corner>& corners, const std::vector<int>& mine,
       const Corner& c = corners[static_cast<size_t>(ci)];
       const double a = area(c, xy, v, x);
       const double d = c.floor - a;
-      if (d <= 0) continue;
+      // A corner on its floor (where a neighbour's minimisation left it)
+      // shapes the step whichever side of it rounding put it.
+      if (d <= -kAtFloor * c.floor) continue;
       // The area is linear in x: its gradient from two unit differences.
       const Vec2 da(area(c, xy, v, x + Vec2(1, 0)) - a, area(c, xy, v, x + Vec2(0, 1)) - a);
-      grad -= 2 * d * da;
+      grad -= 2 * std::max(d, 0.0) * da;
       hess += 2 * da * da.transpose();
     }
     const double scale = hess.trace();
     if (!(scale > 0)) break;
-    const Vec2 dir = -(hess + 1e-9 * scale * Eigen::Matrix2d::Identity()).ldlt().solve(grad);
+    const Vec2 dir = -(hess + kDamping * scale * Eigen::Matrix2d::Identity()).ldlt().solve(grad);
     bool dropped = false;
     for (double t = 1.0; t > 1e-4; t *= 0.5) {
       const Vec2 y = x + t * dir;
@@ -140,10 +152,13 @@ bool untangle_cap(std::vector<mesh::Vec3>& points, const std::vector<mesh::Vec3>
     for (size_t c = 0; c < corners.size(); ++c) corners[c].floor = fraction * ratio * from_area[c];
     for (int sweep = 0; sweep < 200 && visits < 200 * static_cast<long>(n); ++sweep) {
       // The movable nodes of faces with a corner under its floor, in order.
+      // The minimisations leave corners on their floors, where rounding
+      // alone would decide (and a moved part decide otherwise): a corner
+      // within kAtFloor of its floor has reached it.
       std::vector<char> todo(n, 0);
       bool any = false;
       for (const Corner& c : corners) {
-        if (area(c, xy, -1, Vec2::Zero()) >= c.floor) continue;
+        if (area(c, xy, -1, Vec2::Zero()) >= c.floor * (1 - kAtFloor)) continue;
         for (int v : {c.at, c.next, c.prev}) {
           if (movable[static_cast<size_t>(v)]) {
             todo[static_cast<size_t>(v)] = 1;

@@ -50,10 +50,11 @@ pipeline::MeshResult mesh_at(const geom::Model& model, double size) {
 // Meshes `build` at each size with cooper and checks the mesh: conformal,
 // nothing inverted (check_hex_mesh), no wedge, no warning but the worst
 // element's note (no retry, no fallback), the hex volume within 1 % of the solid's (round faces are
-// meshed by chords); then the same part after a rigid motion gives the
-// moved mesh at each size.
+// meshed by chords); then the same part after `motion` gives the moved
+// mesh at each size, every node within `tolerance`.
 void expect_meshes(const char* name, void (*build)(occ::Workbench&),
-                   const std::vector<double>& sizes, unsigned seed) {
+                   const std::vector<double>& sizes, const testing::RigidMotion& motion,
+                   double tolerance) {
   occ::Workbench wb;
   build(wb);
   const geom::Model model = wb.build_model();
@@ -74,7 +75,6 @@ void expect_meshes(const char* name, void (*build)(occ::Workbench&),
         "[campaign part] %s, size %.4g: %zu hexes, min scaled Jacobian %.3f, volume %+.3f %%\n",
         name, size, s.hexes, s.min_sj, 100 * (s.volume - solid) / solid);
   }
-  const auto motion = testing::RigidMotion::random(seed);
   occ::Workbench moved;
   build(moved);
   motion.apply(moved, "part");
@@ -83,9 +83,15 @@ void expect_meshes(const char* name, void (*build)(occ::Workbench&),
     const pipeline::MeshResult r0 = mesh_at(model, size);
     const pipeline::MeshResult r1 = mesh_at(moved_model, size);
     ASSERT_EQ(r0.mesh.node_count(), r1.mesh.node_count()) << name << " at " << size;
-    EXPECT_LT(testing::moved_node_distance(r0.mesh, r1.mesh, motion), 1e-7)
+    EXPECT_LT(testing::moved_node_distance(r0.mesh, r1.mesh, motion), tolerance)
         << name << " at " << size;
   }
+}
+
+// The same with the motion of `seed`, nodes within 1e-7.
+void expect_meshes(const char* name, void (*build)(occ::Workbench&),
+                   const std::vector<double>& sizes, unsigned seed) {
+  expect_meshes(name, build, sizes, testing::RigidMotion::random(seed), 1e-7);
 }
 
 TEST(CooperImprintSlivers, AHoleWhoseRibsTwistBetweenABossAndAFootIsImprinted) {
@@ -173,6 +179,70 @@ void lug_cone_beside_through_pocket(occ::Workbench& wb) {
 TEST(CooperCapStacks, AFoldedProjectedSubcapIsUntangled) {
   expect_meshes("lug_cone_beside_through_pocket", lug_cone_beside_through_pocket, {6.632, 3.316},
                 180);
+}
+
+// Folded projected subcaps whose untangling does not settle in its 200
+// sweeps (rigid-motion campaign): the part as built and moved by the
+// campaign's own motion gave meshes 1.9 apart (seed 4 case 159, a blind
+// hole and a pocket under a boss's side; size 10.29) and 0.26 apart (seed 7
+// case 149, a lug's cone beside a square boss; 5.892), and seed 7 case 50
+// (pockets beside a through hole over a foot; 5.907) inverted a hex as
+// built only. The untangling's Newton steps took a corner into account or
+// not as rounding put it on either side of the floor a neighbour's step
+// had left it on, and were undamped where two corners pulled a node almost
+// the same way. Now within 1e-5 of the element (4/159's untangling stops
+// at its 200 sweeps before it settles: 3e-6 apart; the others 1e-7).
+void blind_hole_and_pocket_under_boss_side(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {76.08, 42.07, 25.37});
+  wb.cylinder("boss", {46.85, 14.53, 25.37}, {0, 0, 1}, 7.21, 20.48);
+  wb.cylinder("blind", {16.85, 26.99, 11.58}, {0, 0, 1}, 2.67, 39.16);
+  wb.brick("square", {14.53, 5.96, 25.37}, {29.42, 16.78, 22.94});
+  wb.brick("pocket", {43.03, 22.63, 18.86}, {24.84, 4.46, 31.88});
+  wb.fuse("body", {"block", "boss", "square"});
+  wb.cut("part", {"body", "blind", "pocket"});
+}
+
+void lug_cone_beside_square_boss(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {40.78, 36.55, 33.77});
+  wb.brick("boss", {17.19, 27.66, 33.77}, {7.64, 5.32, 30.35});
+  wb.cylinder("lug", {40.78, 14.27, 17.28}, {0, 0, 1}, 7.35, 16.49);
+  wb.cone("under", {40.78, 14.27, 12.6}, {0, 0, 1}, 1.22, 7.35, 4.68);
+  wb.cylinder("foot", {30.75, 25.9, -31.91}, {0, 0, 1}, 7.89, 31.91);
+  wb.fuse("part", {"block", "boss", "lug", "under", "foot"});
+}
+
+void pockets_beside_through_hole_over_foot(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {39.39, 20.92, 30.01});
+  wb.brick("pocket", {8.37, 5.7, 19.75}, {5.56, 4.06, 40.27});
+  wb.cylinder("hole", {12.43, 13.3, -30.01}, {0, 0, 1}, 3.88, 90.03);
+  wb.brick("deeper", {7.64, 1.92, 9.83}, {6.14, 6.4, 50.19});
+  wb.cylinder("foot", {17.63, 4.76, -29.21}, {0, 0, 1}, 4.44, 29.21);
+  wb.fuse("body", {"block", "foot"});
+  wb.cut("part", {"body", "pocket", "hole", "deeper"});
+}
+
+testing::RigidMotion campaign_motion(const Eigen::Vector3d& axis, double degrees,
+                                     const Eigen::Vector3d& shift) {
+  testing::RigidMotion m;
+  m.axis = axis.normalized();
+  m.angle_deg = degrees;
+  m.shift = shift;
+  return m;
+}
+
+TEST(CooperCapStacks, AnUntangledSubcapIsTheSameTurned) {
+  expect_meshes(
+      "blind_hole_and_pocket_under_boss_side", blind_hole_and_pocket_under_boss_side, {10.29},
+      campaign_motion({0.33155, 0.348095, 0.52398}, 161.08453, {-1.479558, 4.167026, 4.925518}),
+      1e-5 * 10.29);
+  expect_meshes("lug_cone_beside_square_boss", lug_cone_beside_square_boss, {5.892},
+                campaign_motion({0.334007, -0.419304, -0.959714}, -173.482058,
+                                {-4.778212, -2.073325, 4.162723}),
+                1e-5 * 5.892);
+  expect_meshes(
+      "pockets_beside_through_hole_over_foot", pockets_beside_through_hole_over_foot, {5.907},
+      campaign_motion({0.182842, 0.631001, 0.163907}, 125.876291, {3.004649, -3.024658, -3.530092}),
+      1e-5 * 5.907);
 }
 
 // A pocket from the top, a hole from the bottom into its floor and a
