@@ -107,14 +107,25 @@ struct Worst {
   const char* kind;
 };
 
+// Elements within this of the smallest scaled Jacobian are as bad: a sweep
+// repeats a cap's worst shape layer after layer, and rounding alone chose
+// among them (a moved part's note named another element).
+constexpr double kAsBad = 1e-6;
+
+// With `first` false: lowers worst.value to the smallest value below it.
+// With `first` true: takes the first element within kAsBad of worst.value
+// (once worst.nodes is set, no later one), so that the element named does
+// not depend on rounding.
 template <class Nodes, class Element, class Metric>
 void scan(const std::vector<Element>& elements, const mesh::MeshDB& db, Metric metric,
-          const char* kind, Worst& worst) {
+          const char* kind, bool first, Worst& worst) {
   for (const Element& e : elements) {
+    if (first && !worst.nodes.empty()) return;
     Nodes p;
     for (size_t k = 0; k < e.size(); ++k) p[k] = db.node(e[k]);
     const double q = metric(p);
-    if (q < worst.value) worst = {q, std::vector<int>(e.begin(), e.end()), kind};
+    if (!first && q < worst.value) worst.value = q;
+    if (first && q <= worst.value + kAsBad) worst = {q, std::vector<int>(e.begin(), e.end()), kind};
   }
 }
 
@@ -124,8 +135,11 @@ std::string worst_element_note(const geom::Model& model, const mesh::MeshDB& db,
                                double bar) {
   const mesh::VolumeMeshData& v = db.volume(volume);
   Worst w{bar, {}, "hex"};
-  scan<quality::HexNodes>(v.hexes, db, quality::hex_scaled_jacobian, "hex", w);
-  scan<quality::WedgeNodes>(v.wedges, db, quality::wedge_scaled_jacobian, "wedge", w);
+  for (const bool first : {false, true}) {
+    if (first && !(w.value < bar)) return {};
+    scan<quality::HexNodes>(v.hexes, db, quality::hex_scaled_jacobian, "hex", first, w);
+    scan<quality::WedgeNodes>(v.wedges, db, quality::wedge_scaled_jacobian, "wedge", first, w);
+  }
   const double worst = w.value;
   const std::vector<int>& nodes = w.nodes;
   const char* kind = w.kind;

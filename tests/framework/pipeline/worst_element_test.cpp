@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace cooperage::pipeline {
 namespace {
@@ -132,6 +133,52 @@ TEST(WorstElement, AnEightDegreeEdgeIsNamedAsTheBound) {
   EXPECT_NE(note.find("along curve " + std::to_string(edge)), std::string::npos) << note;
   EXPECT_NE(note.find("meet at 8.0 degrees"), std::string::npos) << note;
   EXPECT_EQ(note.find("has a corner"), std::string::npos) << note;
+}
+
+// A column of sheared hexes (a sweep repeats a cap's worst shape layer
+// after layer); `shears` gives each one's top face shift in x over its
+// height of 1, so its scaled Jacobian is 1 / sqrt(1 + shear^2). The first
+// `count` hexes only.
+mesh::MeshDB sheared_column(const std::vector<double>& shears, size_t count) {
+  mesh::MeshDB db;
+  std::vector<int> below;
+  double x = 0;
+  for (size_t level = 0; level <= shears.size(); ++level) {
+    std::vector<int> ring;
+    for (const Vec3& c : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)})
+      ring.push_back(db.add_node(c + Vec3(x, 0, static_cast<double>(level)), {3, 1}));
+    if (level > 0 && level <= count) {
+      db.mutable_volume(1).hexes.push_back(
+          {below[0], below[1], below[2], below[3], ring[0], ring[1], ring[2], ring[3]});
+    }
+    if (level < shears.size()) x += shears[level];
+    below = ring;
+  }
+  return db;
+}
+
+// Hexes within 1e-6 of the worst are as bad: the note names the first of
+// them, whichever rounding made smallest (a moved part named another), and
+// a hex worse by more is named wherever it is.
+TEST(WorstElement, OfHexesAsBadTheFirstIsNamed) {
+  occ::Workbench wb;
+  wb.brick("column", {0, 0, 0}, {40, 1, 4});
+  const geom::Model model = wb.build_model();
+  const double shear = 10.0;  // 0.0995
+  // The first hex better by 1e-8, which rounding can do too.
+  const double first = std::sqrt(1.0 / std::pow(1.0 / std::sqrt(1 + shear * shear) + 1e-8, 2) - 1);
+  const mesh::MeshDB column = sheared_column({first, shear, shear, shear}, 4);
+  ASSERT_LT(worst_hex(column, 1),
+            testing::hex_scaled_jacobian(testing::hex_points(column, column.volume(1).hexes[0])));
+  const std::string note = worst_element_note(model, column, 1);
+  EXPECT_EQ(note, worst_element_note(model, sheared_column({first, shear, shear, shear}, 1), 1));
+  // The last hex worse by 1e-3 is the one named.
+  const double worse = std::sqrt(1.0 / std::pow(1.0 / std::sqrt(1 + shear * shear) - 1e-3, 2) - 1);
+  const mesh::MeshDB last_worse = sheared_column({first, shear, shear, worse}, 4);
+  const std::string named = worst_element_note(model, last_worse, 1);
+  EXPECT_NE(named, note);
+  EXPECT_NE(named.find("at ("), std::string::npos) << named;
+  EXPECT_NE(named.find(", 3.5)"), std::string::npos) << named;  // the centre of the fourth
 }
 
 TEST(WorstElement, AGoodMeshHasNoNote) {
