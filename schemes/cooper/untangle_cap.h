@@ -21,8 +21,11 @@ namespace cooperage::cooper {
 /// corner's area about `normal` reaches a floor: `fraction` of the same
 /// corner's area in `source` (a fold-free mesh of the same faces), scaled
 /// by the ratio of the two meshes' total signed areas. Node by node in index
-/// order, each minimising its own convex objective (deterministic); every
-/// move followed by `project` (onto the cap's surface; identity in a plane).
+/// order, each minimising its own convex objective (deterministic) by damped
+/// Newton steps that count a corner within 1e-9 of its floor as on it, so
+/// that a rigidly moved cap is untangled the same way (rounding alone once
+/// moved nodes by a fifth of an element); every move followed by `project`
+/// (onto the cap's surface; identity in a plane).
 /// The fractions 1/4, 1/20 and 1/100 are tried in turn until no corner is
 /// folded; then the movable nodes of faces with a corner sine below 0.3
 /// move to raise the worst element around them (mesh::raise_worst_elements,
