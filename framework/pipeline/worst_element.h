@@ -20,9 +20,10 @@ inline constexpr double kPoorElement = 0.2;
 /// A sentence on `volume`'s worst element when it is below `bar` and not
 /// inverted (inverted elements are refused elsewhere), else empty: its
 /// value, where it is (of elements within 1e-6 of the worst, the first in
-/// the volume's order, so that a moved part names the moved element), and either the corner of a face, or the convex edge
-/// between two faces, at it that allows no better (sin of its angle), or
-/// that the part allows more there.
+/// the volume's order, so that a moved part names the moved element), and
+/// either the corner of a face, or the convex edge between two faces, at
+/// it that allows no better (sin of its angle), or that the part allows
+/// more there.
 std::string worst_element_note(const geom::Model& model, const mesh::MeshDB& db, int volume,
                                double bar = kPoorElement);
 
