@@ -184,14 +184,14 @@ TEST(CooperCapStacks, AFoldedProjectedSubcapIsUntangled) {
 // Folded projected subcaps whose untangling does not settle in its 200
 // sweeps (rigid-motion campaign): the part as built and moved by the
 // campaign's own motion gave meshes 1.9 apart (seed 4 case 159, a blind
-// hole and a pocket under a boss's side; size 10.29) and 0.26 apart (seed 7
+// hole and a pocket under a boss's side; size 10.29) and 3.5 apart (seed 7
 // case 149, a lug's cone beside a square boss; 5.892), and seed 7 case 50
 // (pockets beside a through hole over a foot; 5.907) inverted a hex as
 // built only. The untangling's Newton steps took a corner into account or
 // not as rounding put it on either side of the floor a neighbour's step
 // had left it on, and were undamped where two corners pulled a node almost
 // the same way. Now within 1e-5 of the element (4/159's untangling stops
-// at its 200 sweeps before it settles: 3e-6 apart; the others 1e-7).
+// at its 200 sweeps before it settles: 3e-6 apart; the others below 6e-7).
 void blind_hole_and_pocket_under_boss_side(occ::Workbench& wb) {
   wb.brick("block", {0, 0, 0}, {76.08, 42.07, 25.37});
   wb.cylinder("boss", {46.85, 14.53, 25.37}, {0, 0, 1}, 7.21, 20.48);
