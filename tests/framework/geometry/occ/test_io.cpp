@@ -136,6 +136,61 @@ TEST(OccIo, BrepRoundTrip) {
   EXPECT_TRUE(near_rel(after.volume(1).volume, before.volume(1).volume, 1e-12));
 }
 
+// Files written from assemblies nest placements, each of a shape's chain
+// composed on every query; the import moves them into the geometry. A brick
+// placed through a chain of twelve (rotations about z and moves along it,
+// which commute, so the order of the chain cannot matter) must come out
+// where the whole chain puts it.
+TEST(OccIo, NestedPlacementsOfABrepPlaceItsGeometry) {
+  TempDir dir;
+  Workbench wb;
+  wb.brick("b", Vec3(1, 2, 0), Vec3(2, 3, 4));
+  const Model made = wb.build_model();
+  const std::string plain = dir.file("plain.brep");
+  wb.write(plain);
+  std::string text = read_text(plain);
+  const std::string none = "Locations 0";
+  const auto at = text.find(none);
+  ASSERT_NE(at, std::string::npos) << "the writer's location table changed";
+  std::ostringstream table;
+  table.precision(17);
+  table << "Locations 13\n";
+  double turn = 0.0, rise = 0.0;
+  for (int k = 0; k < 12; ++k) {
+    const double a = k % 2 ? 0.1 * (k + 1) : 0.0;
+    const double dz = k % 2 ? 0.0 : 0.5 * (k + 1);
+    turn += a;
+    rise += dz;
+    table << "1\n"
+          << std::cos(a) << " " << -std::sin(a) << " 0 0\n"
+          << std::sin(a) << " " << std::cos(a) << " 0 0\n"
+          << "0 0 1 " << dz << "\n";
+  }
+  table << "2 ";
+  for (int k = 1; k <= 12; ++k) table << " " << k << " 1";
+  table << " 0";
+  text.replace(at, none.size(), table.str());
+  // The root's reference, the file's last line: the brick under the chain.
+  const auto root = text.rfind("+1 0");
+  ASSERT_NE(root, std::string::npos);
+  text.replace(root, 4, "+1 13");
+  const std::string placed = dir.file("placed.brep");
+  write_text(placed, text);
+
+  Workbench again;
+  again.import_file("b", placed, /*heal=*/false);
+  const Model m = again.build_model();
+  ASSERT_EQ(m.vertices().size(), made.vertices().size());
+  EXPECT_TRUE(near_rel(m.volume(1).volume, 24.0, 1e-12));
+  const Eigen::Matrix3d turned = Eigen::AngleAxisd(turn, Vec3::UnitZ()).toRotationMatrix();
+  for (const geom::Vertex& v : made.vertices()) {
+    const Vec3 want = turned * v.point + Vec3(0, 0, rise);
+    double nearest = 1e300;
+    for (const geom::Vertex& w : m.vertices()) nearest = std::min(nearest, (w.point - want).norm());
+    EXPECT_LT(nearest, 1e-9) << "vertex " << v.id << " of the brick is not where the chain puts it";
+  }
+}
+
 TEST(OccIo, IgesRoundTrip) {
   TempDir dir;
   Workbench wb;
