@@ -316,6 +316,7 @@ class Selector {
           n.made.insert(use.surface);
         } else if (!it->second.takes_existing) {
           n.kept.insert(use.surface);
+          n.kept_schemes[use.surface] = it->second.scheme;
         }
       }
     }
@@ -341,7 +342,8 @@ class Selector {
     }
     // A round after a request asks every volume again; an answer depends
     // only on the volume and what its neighbours fix.
-    auto& known = evaluated_[{id, neighbours.made, neighbours.kept, neighbours.closing}];
+    auto& known = evaluated_[{id, neighbours.made, neighbours.kept, neighbours.closing,
+                              neighbours.kept_schemes}];
     if (known.empty()) known = evaluate(schemes, view);
     Choice choice{3, id, known, {}, {}, false, false};
     std::vector<const Candidate*> order;
@@ -597,7 +599,8 @@ class Selector {
   std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it
   std::map<int, scheme::NeighbourMeshes> yield_;  // requests made of a volume
   bool restart_ = false;                          // a request was added this round
-  std::map<std::tuple<int, std::set<int>, std::set<int>, std::set<int>>, std::vector<Candidate>>
+  std::map<std::tuple<int, std::set<int>, std::set<int>, std::set<int>, std::map<int, std::string>>,
+           std::vector<Candidate>>
       evaluated_;
   Selection selection_;
   intervals::SolveMemo memo_;

@@ -52,6 +52,10 @@ struct NeighbourMeshes {
   /// A neighbour needs these from their surface scheme and does not take a
   /// volume's mesh (a sweep's side): this volume must not mesh them itself.
   std::set<int> kept;
+  /// The surface scheme the neighbour needs on each of `kept` (submap on a
+  /// sweep's side, the cap scheme on its source): needing another scheme
+  /// there conflicts too (a wedge sweep's caps need triangles).
+  std::map<int, std::string> kept_schemes;
   /// Meshing these itself would close a cycle of volumes waiting for each
   /// other's meshes (a ring of sweeps round an axis, each taking the last
   /// one's target as its source): a sweep ending on one should take the

@@ -334,8 +334,10 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
 // Shared surfaces the plan contradicts the neighbours on: one a neighbour
 // meshes itself that this plan does not take as a cap meshed beforehand
 // (weight 2: that neighbour usually has no other way), or one a neighbour
-// keeps for its surface scheme that this plan meshes (weight 1: the
-// selector may ask that neighbour to take the mesh instead). The selector
+// keeps for its surface scheme that this plan meshes, or gives another
+// surface scheme as a cap (weight 1: the selector may ask that neighbour
+// to take the mesh instead; a wedge sweep's triangle cap on a neighbour's
+// quad side has no such way out, but another sweep direction may). The selector
 // refuses such a plan as it stands (docs/design.md, "Volumes that wait for
 // a neighbour"); 0 when nothing is known of the neighbours.
 int neighbour_conflicts(const VolumePlan& p, const scheme::NeighbourMeshes& n) {
@@ -344,6 +346,14 @@ int neighbour_conflicts(const VolumePlan& p, const scheme::NeighbourMeshes& n) {
   for (const std::set<int>* list : {&n.kept, &n.closing}) {
     for (int s : *list)
       count += std::binary_search(p.roles.by_volume.begin(), p.roles.by_volume.end(), s) ? 1 : 0;
+  }
+  for (const auto& [s, theirs] : n.kept_schemes) {
+    const auto mine = p.roles.scheme.find(s);
+    if (mine == p.roles.scheme.end() || mine->second == theirs) continue;
+    // A mappable surface is the same mesh either way (the selector checks).
+    const bool mapped = (mine->second == "map" && theirs == "submap") ||
+                        (mine->second == "submap" && theirs == "map");
+    count += mapped ? 0 : 1;
   }
   return count;
 }

@@ -231,6 +231,34 @@ TEST(CooperWedge, AutoOnABrickPicksCooperNotTheVolumeMap) {
   expect_conformal_wedges(r.mesh);
 }
 
+// Two bricks touching on a face, both in wedges: the first sweeps along y,
+// so the shared face is one of its quad sides; the second must sweep so
+// that the face is a side of it too (along y or z), not its triangle cap.
+// It used to take the shared face as its source and be refused ("needs tri
+// for volume 2 but submap for volume 1").
+TEST(CooperWedge, TouchingBricksKeepTheirSharedFaceASide) {
+  occ::Workbench wb;
+  wb.brick("a", {0, 0, 0}, {2, 1, 1});
+  wb.brick("b", {2, 0, 0}, {1, 1, 1});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  io::MeshSettings settings = wedge_settings(0.25, "auto");
+  io::VolumeSetting second = settings.volumes.front();
+  second.id = 2;
+  settings.volumes.push_back(second);
+  const auto registry = builtin();
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
+  EXPECT_EQ(r.plan.volumes.at(1).scheme, "cooper");
+  EXPECT_EQ(r.plan.volumes.at(2).scheme, "cooper");
+  // Conformal across the shared face (its quads used by both volumes).
+  const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, r.mesh);
+  EXPECT_EQ(m.hexes, 0u);
+  EXPECT_GT(m.wedges, 0u);
+  EXPECT_NEAR(m.volume, 3.0, 3.0 * 1e-9);
+  EXPECT_GT(m.min_wedge_sj, 0.5);
+}
+
 TEST(CooperWedge, ApplicableBothWays) {
   // A one-barrel plate: applicable in both modes, tri source cap in wedge mode.
   occ::Workbench plate;
