@@ -129,6 +129,17 @@ int run_journal(const std::string& file, const std::string& report, const RunLim
   return finish_run(job, 3, limits);
 }
 
+/// The element kind a `--elements` value names (checked by the parser).
+io::ElementKind element_kind(const std::string& name) {
+  return name == "wedge"   ? io::ElementKind::Wedge
+         : name == "mixed" ? io::ElementKind::Mixed
+                           : io::ElementKind::Hex;
+}
+
+io::Decompose decompose_mode(const std::string& name) {
+  return name == "off" ? io::Decompose::Off : io::Decompose::Auto;
+}
+
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
 int run_mesh(const std::string& model, double size, int dim, const std::string& output,
@@ -278,6 +289,19 @@ int main(int argc, char** argv) {
   plan->add_option("--dim", plan_dim,
                    "3: volumes and surfaces (default); 2: surfaces only, as `mesh --dim 2` plans")
       ->check(CLI::IsMember({2, 3}));
+  // The options of `mesh` that change the plan, so that a plan shows what
+  // that command would do.
+  bool plan_no_imprint = false;
+  plan->add_flag("--no-imprint", plan_no_imprint,
+                 "Keep touching solids separate, as `mesh --no-imprint` (a CAD file)");
+  std::optional<std::string> plan_elements, plan_decompose;
+  plan->add_option("--elements", plan_elements,
+                   "hex (default), wedge or mixed, as `mesh --elements` (a CAD file)")
+      ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
+  plan->add_option("--decompose", plan_decompose,
+                   "auto (default for a CAD file) or off, as `mesh --decompose`; overrides a "
+                   "journal's <mesh decompose>")
+      ->check(CLI::IsMember({"auto", "off"}));
 
   bool schemes_json = false;
   CLI::App* schemes =
@@ -321,18 +345,18 @@ int main(int argc, char** argv) {
       return app::run_quality(quality_file, quality_json, std::cout, report_file);
     }
     if (*plan) {
+      pipeline::PlanOverrides overrides;
+      if (plan_no_imprint) overrides.imprint_merge = false;
+      if (plan_elements) overrides.elements = element_kind(*plan_elements);
+      if (plan_decompose) overrides.decompose = decompose_mode(*plan_decompose);
       return app::run_plan(plan_file,
                            plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
-                           plan_json, plugins, std::cout, plan_dim);
+                           plan_json, plugins, std::cout, plan_dim, overrides);
     }
     if (*mesh) {
-      const io::ElementKind elements = mesh_elements == "wedge"   ? io::ElementKind::Wedge
-                                       : mesh_elements == "mixed" ? io::ElementKind::Mixed
-                                                                  : io::ElementKind::Hex;
       return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
-                      mesh_no_imprint, elements, limits,
-                      mesh_decompose == "off" ? io::Decompose::Off : io::Decompose::Auto,
-                      mesh_finer_retries, mesh_min_sj);
+                      mesh_no_imprint, element_kind(mesh_elements), limits,
+                      decompose_mode(mesh_decompose), mesh_finer_retries, mesh_min_sj);
     }
   } catch (const MeshingError& e) {
     print_error(e);

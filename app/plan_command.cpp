@@ -286,7 +286,8 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
 }  // namespace
 
 int run_plan(const std::string& file, std::optional<double> size, bool json,
-             const std::vector<std::string>& plugins, std::ostream& out, int dim) {
+             const std::vector<std::string>& plugins, std::ostream& out, int dim,
+             const pipeline::PlanOverrides& overrides) {
   // The decomposition's registry: the command line's plug-ins take part in
   // it (a journal's are known only once it is read).
   scheme::Registry defaults;
@@ -296,12 +297,12 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   pipeline::PlanInput input;
   std::string decomposition_failed;
   try {
-    input = dim == 3 ? pipeline::plan_input(file, size, &defaults, selector::planner())
-                     : pipeline::plan_input(file, size, nullptr, {});
+    input = dim == 3 ? pipeline::plan_input(file, size, &defaults, selector::planner(), overrides)
+                     : pipeline::plan_input(file, size, nullptr, {}, overrides);
   } catch (const MeshingError& e) {
     if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
     decomposition_failed = "volume " + std::to_string(e.entity().id) + ": " + e.message();
-    input = pipeline::plan_input(file, size, nullptr, {});
+    input = pipeline::plan_input(file, size, nullptr, {}, overrides);
   }
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;

@@ -75,13 +75,26 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
 }
 
 PlanInput plan_input(const std::string& file, std::optional<double> size,
-                     const scheme::Registry* registry, const Planner& planner) {
+                     const scheme::Registry* registry, const Planner& planner,
+                     const PlanOverrides& overrides) {
   std::string ext = std::filesystem::path(file).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   PlanInput in;
   if (ext == ".xml") {
+    // A journal says how its solids are merged (<imprint_merge>) and which
+    // elements each volume gets (<volume elements>).
+    if (overrides.imprint_merge || overrides.elements) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         overrides.origin + ": " +
+                             (overrides.imprint_merge ? "--no-imprint" : "--elements") +
+                             " is for a CAD file; a journal sets it itself (" +
+                             (overrides.imprint_merge ? "<imprint_merge enabled=\"false\"/>"
+                                                      : "<volume elements=\"...\"/>") +
+                             ")");
+    }
     io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;
+    if (overrides.decompose) in.settings.decompose = *overrides.decompose;
     in.plugins = job.plugins;
     if (registry) {
       if (size) in.settings.size = size;
@@ -92,16 +105,23 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
     } else {
       in.model = build_geometry(job);
     }
-  } else if (registry) {
+  } else {
     ModelJobOptions options;
     options.size = size.value_or(1.0);
+    options.origin = overrides.origin;
+    options.imprint_merge = overrides.imprint_merge.value_or(true);
+    options.elements = overrides.elements.value_or(io::ElementKind::Hex);
+    options.decompose = overrides.decompose.value_or(io::Decompose::Auto);
     io::Job job = model_job(file, options);
     if (!size) job.mesh->size.reset();
-    DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
-    in.model = std::move(g.model);
-    in.decomposition = std::move(g.decomposition);
-  } else {
-    in.model = load_any(file);
+    in.settings = *job.mesh;
+    if (registry) {
+      DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
+      in.model = std::move(g.model);
+      in.decomposition = std::move(g.decomposition);
+    } else {
+      in.model = load_any(file, options.imprint_merge);
+    }
   }
   if (size) in.settings.size = size;
   check_settings(in.model, in.settings);

@@ -50,8 +50,8 @@ struct ModelJobOptions {
 io::Job model_job(const std::string& model, const ModelJobOptions& options);
 
 /// What `cooperage plan FILE` (and Python's cooperage.plan()) plans: the
-/// model and mesh settings of a journal (.xml), or of a CAD file with
-/// default settings.
+/// model and mesh settings of a journal (.xml), or of a CAD file with the
+/// settings `cooperage mesh` would give it.
 struct PlanInput {
   geom::Model model;
   io::MeshSettings settings;
@@ -59,14 +59,28 @@ struct PlanInput {
   std::vector<io::PluginSetting> plugins;  ///< a journal's <plugin> elements
 };
 
-/// Reads `file`, builds its model, applies `size` (overriding the
-/// journal's) and checks the settings against the model (check_settings).
-/// With a registry and a planner, volumes no volume scheme applies to are
-/// decomposed as `cooperage mesh` and `run` do (build_decomposed_geometry);
-/// a CAD file is planned with decompose="auto".
-/// @throws MeshingError as read_journal(), build_geometry(), load_any(),
-///         build_decomposed_geometry() and check_settings() do.
+/// The options of `cooperage plan` besides the size, each as `cooperage
+/// mesh` takes it, so that a plan shows what that mesh command would do.
+/// Unset: the default (a CAD file) or the journal's own setting.
+struct PlanOverrides {
+  std::optional<bool> imprint_merge;        ///< --no-imprint: CAD files only
+  std::optional<io::ElementKind> elements;  ///< --elements: CAD files only
+  std::optional<io::Decompose> decompose;   ///< --decompose: overrides a journal's too
+  std::string origin = "command line";      ///< for errors
+};
+
+/// Reads `file`, builds its model, applies `size` and `overrides` (over the
+/// journal's settings) and checks the settings against the model
+/// (check_settings). With a registry and a planner, volumes no volume
+/// scheme applies to are decomposed as `cooperage mesh` and `run` do
+/// (build_decomposed_geometry); a CAD file is planned with
+/// decompose="auto" unless overridden.
+/// @throws MeshingError(InvalidInput) for --no-imprint or --elements given
+///         with a journal (it sets them itself); as read_journal(),
+///         build_geometry(), load_any(), build_decomposed_geometry() and
+///         check_settings() do.
 PlanInput plan_input(const std::string& file, std::optional<double> size,
-                     const scheme::Registry* registry = nullptr, const Planner& planner = {});
+                     const scheme::Registry* registry = nullptr, const Planner& planner = {},
+                     const PlanOverrides& overrides = {});
 
 }  // namespace cooperage::pipeline

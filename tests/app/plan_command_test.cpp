@@ -1,7 +1,10 @@
 // `cooperage plan` prints a cooper volume's barrel tree (issue 15): the
 // barrels, their caps and subcaps, the imprint operations; in text and JSON.
+// It takes the options of `mesh` that change a plan.
 #include "run_command.h"
 #include "temp_dir.h"
+
+#include "framework/geometry/occ/workbench.h"
 
 #include <gtest/gtest.h>
 
@@ -81,6 +84,65 @@ TEST_F(PlanCommand, DimTwoPlansTheSurfacesAlone) {
   EXPECT_EQ(three.out.find(" -> pave (curve "), std::string::npos) << three.out;
   const auto bad = run_command(kCli + " plan --dim 1 " + path("thin.xml"));
   EXPECT_NE(bad.exit_code, 0);
+}
+
+// A plan shows what `mesh` with the same options would do: --decompose,
+// --no-imprint and --elements change it as they change the mesh. The
+// paper's Fig. 3a solid (no volume scheme takes it whole) and two bricks
+// that touch on a face.
+TEST_F(PlanCommand, TakesTheOptionsOfMeshThatChangeThePlan) {
+  occ::Workbench bench;
+  bench.brick("block", {0, 0, 0}, {4, 4, 2});
+  bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
+  bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
+  bench.fuse("part", {"block", "up", "out"});
+  const std::string fig3a = path("fig3a.step");
+  bench.write(fig3a);
+  const auto cut = run_command(kCli + " plan " + fig3a + " --size 0.25");
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  EXPECT_NE(cut.out.find("cut into volumes"), std::string::npos) << cut.out;
+  const auto off = run_command(kCli + " plan " + fig3a + " --size 0.25 --decompose off");
+  EXPECT_EQ(off.exit_code, 2) << off.out;
+  EXPECT_NE(off.err.find("volume 1: no hex scheme applies"), std::string::npos) << off.err;
+  EXPECT_EQ(off.out.find("cut into volumes"), std::string::npos) << off.out;
+
+  occ::Workbench pair;
+  pair.brick("a", {0, 0, 0}, {2, 1, 1});
+  pair.brick("b", {2, 0, 0}, {1, 1, 1});
+  const std::string bricks = path("bricks.step");
+  pair.write(bricks);
+  // Merged, the touching face is one surface of both volumes (11 in all);
+  // kept apart, each brick has its own six.
+  const std::string count_surfaces =
+      std::string(COOPERAGE_DEBIAN_PYTHON) +
+      " -c \"import json,sys; d=json.load(sys.stdin); print(len(d['volumes']), "
+      "len(d['surfaces']), [c['scheme'] for c in d['volumes'][0]['candidates']])\"";
+  const auto merged =
+      run_command(kCli + " plan --json " + bricks + " --size 0.5 | " + count_surfaces);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(merged.out, "2 11 ['map', 'cooper']\n");
+  const auto apart =
+      run_command(kCli + " plan --json " + bricks + " --size 0.5 --no-imprint | " + count_surfaces);
+  ASSERT_EQ(apart.exit_code, 0) << apart.err;
+  EXPECT_EQ(apart.out, "2 12 ['map', 'cooper']\n");
+  // Wedges come from sweeps only: the volume map is no candidate.
+  const auto wedges = run_command(kCli + " plan --json " + bricks +
+                                  " --size 0.5 --elements wedge | " + count_surfaces);
+  ASSERT_EQ(wedges.exit_code, 0) << wedges.err;
+  EXPECT_EQ(wedges.out, "2 11 ['cooper']\n");
+
+  // A journal sets how its solids merge and which elements they get; its
+  // decomposition can be turned off as its size can be overridden.
+  std::ofstream(path("fig3a.xml")) << "<cooperage version=\"1\"><geometry>"
+                                      "<import name=\"p\" file=\""
+                                   << fig3a << "\"/></geometry><mesh size=\"0.25\"/></cooperage>\n";
+  const auto journal_off = run_command(kCli + " plan " + path("fig3a.xml") + " --decompose off");
+  EXPECT_EQ(journal_off.exit_code, 2) << journal_off.out;
+  EXPECT_NE(journal_off.err.find("no hex scheme applies"), std::string::npos) << journal_off.err;
+  const auto journal_apart = run_command(kCli + " plan " + path("fig3a.xml") + " --no-imprint");
+  EXPECT_EQ(journal_apart.exit_code, 2);
+  EXPECT_NE(journal_apart.err.find("--no-imprint is for a CAD file"), std::string::npos)
+      << journal_apart.err;
 }
 
 }  // namespace
