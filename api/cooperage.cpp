@@ -48,7 +48,6 @@ Result mesh_file(const std::string& path, double size, const Options& options) {
   job.elements = options.elements;
   job.exports = options.exports;
   job.origin = "cooperage::mesh_file()";
-  job.elements_option = "Options::elements";
   job.export_option = "Options::exports";
   io::Job built = pipeline::model_job(path, job);
   built.groups = options.groups;

@@ -328,13 +328,14 @@ class Selector {
     const scheme::VolumeView view{model_, id, nullptr, &job_, nullptr, &neighbours};
     const auto* pin = find_setting(settings_.volumes, id);
     // elements="wedge" / "mixed": only schemes that make wedges are candidates.
-    const bool wedge = pin && pin->elements != io::ElementKind::Hex;
-    const std::string kind = pin && pin->elements == io::ElementKind::Mixed ? "mixed" : "wedge";
+    const io::ElementKind elements = job_.elements(id);
+    const bool wedge = elements != io::ElementKind::Hex;
+    const std::string kind = elements == io::ElementKind::Mixed ? "mixed" : "wedge";
     std::vector<const scheme::VolumeScheme*> schemes;
     for (const scheme::VolumeScheme* s : registry_.volume_schemes()) {
       if (!wedge || s->makes_wedges()) {
         schemes.push_back(s);
-      } else if (pin->scheme == s->name()) {
+      } else if (pin && pin->scheme == s->name()) {
         throw MeshingError(ErrorCode::InvalidInput, EntityRef::volume(id),
                            "volume scheme \"" + pin->scheme + "\" (" + place(pin->where) +
                                ") makes hexes only, but elements=\"" + kind + "\"");

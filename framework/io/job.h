@@ -187,6 +187,10 @@ struct MeshSettings {
   /// fraction (the journal gives percent); default 0.01.
   std::optional<double> volume_tolerance;
   Decompose decompose = Decompose::Auto;
+  /// Every volume's element kind, unless its <volume elements> gives
+  /// another (`mesh --elements`, <mesh elements>): a kind for all volumes
+  /// names no id, so the automatic decomposition's pieces take it too.
+  ElementKind elements = ElementKind::Hex;
   /// A volume its scheme accepted and then failed on is meshed again at
   /// half its size, at most this many times (pipeline/finer_retry.h); 0: never.
   int finer_retries = 2;

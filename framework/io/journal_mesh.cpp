@@ -146,8 +146,8 @@ VertexTypeSetting read_vertex_type(const Element& e) {
 }  // namespace
 
 MeshSettings read_mesh(const Element& mesh) {
-  mesh.allow_attributes(
-      {"size", "threads", "max_elements", "volume_tolerance", "decompose", "finer_retries"});
+  mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance", "decompose",
+                         "finer_retries", "elements"});
   MeshSettings m;
   m.size = mesh.number("size", NumberKind::Positive);
   m.threads = mesh.integer("threads", 0).value_or(0);
@@ -160,6 +160,8 @@ MeshSettings read_mesh(const Element& mesh) {
     m.volume_tolerance = *t / 100.0;
   }
   m.decompose = static_cast<Decompose>(mesh.choice("decompose", {"auto", "off"}).value_or(0));
+  m.elements =
+      static_cast<ElementKind>(mesh.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
   m.finer_retries = mesh.integer("finer_retries", 0).value_or(m.finer_retries);
   if (m.finer_retries > MeshSettings::kMaxFinerRetries)
     mesh.fail_at("finer_retries", "attribute \"finer_retries\" is at most " +

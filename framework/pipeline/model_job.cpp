@@ -33,16 +33,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   job.mesh->size = options.size;
   job.mesh->decompose = options.decompose;
   job.mesh->finer_retries = options.finer_retries;
-  if (options.elements != io::ElementKind::Hex) {
-    const geom::Model m = load_any(model, options.imprint_merge);
-    for (const geom::Volume& v : m.volumes()) {
-      io::VolumeSetting setting;
-      setting.id = v.id;
-      setting.elements = options.elements;
-      setting.where = {options.origin, 0, options.elements_option};
-      job.mesh->volumes.push_back(setting);
-    }
-  }
+  job.mesh->elements = options.elements;
   for (const std::string& e : options.exports) {
     const std::string ext = std::filesystem::path(e).extension().string();
     if (options.binary && ext != ".vtu" && ext != ".msh" && ext != ".stl" && ext != ".ply") {

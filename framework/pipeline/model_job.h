@@ -25,7 +25,6 @@ struct ModelJobOptions {
   /// Where the settings came from, for error messages: "command line",
   /// "cooperage.mesh()"; each setting's element names its option.
   std::string origin = "command line";
-  std::string elements_option = "--elements";
   std::string export_option = "-o";
   std::string report_option = "--report";
   std::string binary_option = "--binary";
@@ -42,11 +41,10 @@ struct ModelJobOptions {
 
 /// A job that imports `model` (.step .stp .iges .igs .brep), meshes it at
 /// options.size with automatic schemes and writes the exports and reports.
-/// Wedge and mixed elements need the volume ids, so the model is read once
-/// here for them.
+/// The element kind is the mesh's (every volume's, the decomposition's
+/// pieces too).
 /// @throws MeshingError(InvalidInput) for a size that is not positive, or
-///         binary asked of an export that is not .vtu, .msh, .stl or .ply; the
-///         errors of pipeline::load_any() for wedge/mixed.
+///         binary asked of an export that is not .vtu, .msh, .stl or .ply.
 io::Job model_job(const std::string& model, const ModelJobOptions& options);
 
 /// What `cooperage plan FILE` (and Python's cooperage.plan()) plans: the

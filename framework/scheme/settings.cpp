@@ -25,7 +25,8 @@ const io::VolumeSetting* Settings::volume(int volume_id) const {
 
 io::ElementKind Settings::elements(int volume_id) const {
   const io::VolumeSetting* v = volume(volume_id);
-  return v ? v->elements : io::ElementKind::Hex;
+  if (v && v->elements != io::ElementKind::Hex) return v->elements;
+  return job ? job->elements : io::ElementKind::Hex;
 }
 
 std::string Settings::no_scheme_applies(int volume_id) const {

@@ -86,7 +86,6 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
   options.imprint_merge = imprint;
   options.elements = element_kind(elements);
   options.origin = "cooperage.mesh()";
-  options.elements_option = "elements";
   options.min_scaled_jacobian = min_scaled_jacobian;
   options.min_scaled_jacobian_option = "min_scaled_jacobian";
   const std::string path = model.string();

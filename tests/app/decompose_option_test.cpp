@@ -96,6 +96,21 @@ TEST_F(DecomposeOption, ARefusedVolumeRenumberedByTheCutsNamesItsInputVolume) {
   EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
+// --elements applies to every volume, so the pieces of a cut take it too;
+// it used to be given per volume id, which stopped the decomposition
+// ("would renumber the entities that <--elements> at command line refers
+// to by id").
+TEST_F(DecomposeOption, ElementsAreThoseOfThePieces) {
+  const std::string step = fig3a_step();
+  const auto r =
+      run_command(kCli + " mesh " + step + " --size 0.25 --elements wedge -o " + path("out.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string all = r.out + r.err;
+  EXPECT_NE(all.find("cut into volumes"), std::string::npos) << all;
+  EXPECT_NE(all.find("hexes 0, wedges "), std::string::npos) << all;
+  EXPECT_TRUE(fs::exists(path("out.vtu")));
+}
+
 TEST_F(DecomposeOption, AnUnknownValueIsABadArgument) {
   const auto r = run_command(kCli + " mesh x.step --size 1 --decompose yes -o " + path("o.vtu"));
   EXPECT_EQ(r.exit_code, 2);

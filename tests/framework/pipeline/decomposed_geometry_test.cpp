@@ -4,10 +4,12 @@
 
 #include "framework/core/error.h"
 #include "framework/io/journal_reader.h"
+#include "framework/pipeline/mesher.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
 
 #include "journal_fixture.h"
+#include "support/mixed_mesh_check.h"
 
 #include <gtest/gtest.h>
 
@@ -73,6 +75,31 @@ TEST_F(DecomposedGeometry, PerEntitySettingsStopItNamingTheSetting) {
     EXPECT_NE(what.find("job.xml:"), std::string::npos) << what;
     EXPECT_NE(what.find("<surface>"), std::string::npos) << what;
     EXPECT_NE(what.find("<webcut>"), std::string::npos) << what;
+  }
+}
+
+// An element kind for every volume (<mesh elements>, `mesh --elements`)
+// names no id: the volume is cut as in hexes, the pieces are planned and
+// meshed in that kind, and the mesh fills the solid (4 x 4 x 2 and two unit
+// bosses: 34). Given per volume id (<volume id="1" elements>), as the
+// command line did, it stopped the decomposition.
+TEST_F(DecomposedGeometry, AnElementKindForEveryVolumeIsThePiecesKind) {
+  for (const char* kind : {"wedge", "mixed"}) {
+    const io::Job job =
+        journal(std::string(kFig3a) + "  <mesh size=\"0.25\" elements=\"" + kind + "\"/>\n");
+    const auto g = build_decomposed_geometry(job, registry_, selector::planner());
+    ASSERT_EQ(g.decomposition.volumes.size(), 1u) << kind;
+    ASSERT_GE(g.model.volumes().size(), 2u) << kind;
+    const MeshResult r = mesh_model(g.model, *job.mesh, registry_, selector::mesh_options());
+    const cooperage::testing::MixedMeshSummary m =
+        cooperage::testing::check_mixed_mesh(g.model, r.mesh);
+    EXPECT_NEAR(m.volume, 34.0, 34.0 * 1e-9) << kind;
+    if (std::string(kind) == "wedge") {
+      EXPECT_EQ(m.hexes, 0u);
+      EXPECT_GT(m.wedges, 0u);
+    } else {
+      EXPECT_GT(m.hexes, 0u);
+    }
   }
 }
 
