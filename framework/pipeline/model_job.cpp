@@ -75,13 +75,14 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
     // A journal says how its solids are merged (<imprint_merge>) and which
     // elements each volume gets (<volume elements>).
     if (overrides.imprint_merge || overrides.elements) {
-      throw MeshingError(ErrorCode::InvalidInput,
-                         overrides.origin + ": " +
-                             (overrides.imprint_merge ? "--no-imprint" : "--elements") +
-                             " is for a CAD file; a journal sets it itself (" +
-                             (overrides.imprint_merge ? "<imprint_merge enabled=\"false\"/>"
-                                                      : "<volume elements=\"...\"/>") +
-                             ")");
+      throw MeshingError(
+          ErrorCode::InvalidInput,
+          overrides.origin + ": " +
+              (overrides.imprint_merge ? overrides.imprint_option : overrides.elements_option) +
+              " is for a CAD file; a journal sets it itself (" +
+              (overrides.imprint_merge ? "<imprint_merge enabled=\"false\"/>"
+                                       : "<volume elements=\"...\"/>") +
+              ")");
     }
     io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;

@@ -64,7 +64,9 @@ struct PlanOverrides {
   std::optional<bool> imprint_merge;        ///< --no-imprint: CAD files only
   std::optional<io::ElementKind> elements;  ///< --elements: CAD files only
   std::optional<io::Decompose> decompose;   ///< --decompose: overrides a journal's too
-  std::string origin = "command line";      ///< for errors
+  std::string origin = "command line";      ///< for errors, with the options' names:
+  std::string imprint_option = "--no-imprint";
+  std::string elements_option = "--elements";
 };
 
 /// Reads `file`, builds its model, applies `size` and `overrides` (over the

@@ -14,6 +14,7 @@
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/model_job.h"
 #include "mesh_object.h"
+#include "option_values.h"
 #include "plan_dicts.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
@@ -22,16 +23,6 @@ namespace py = pybind11;
 
 namespace cooperage::python {
 namespace {
-
-io::ElementKind element_kind(const std::string& name) {
-  if (name == "hex") return io::ElementKind::Hex;
-  if (name == "wedge") return io::ElementKind::Wedge;
-  if (name == "mixed") return io::ElementKind::Mixed;
-  throw MeshingError(ErrorCode::InvalidInput,
-                     "cooperage.mesh(): elements must be \"hex\", "
-                     "\"wedge\" or \"mixed\", got \"" +
-                         name + "\"");
-}
 
 // Runs a job with the built-in schemes and the selector, without the GIL.
 std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, int dim, int threads,
@@ -82,9 +73,9 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
   pipeline::ModelJobOptions options;
   options.size = size;
   options.finer_retries = finer_retries;
-  options.decompose = decompose == "off" ? io::Decompose::Off : io::Decompose::Auto;
+  options.decompose = decompose_mode(decompose, "cooperage.mesh()");
   options.imprint_merge = imprint;
-  options.elements = element_kind(elements);
+  options.elements = element_kind(elements, "cooperage.mesh()");
   options.origin = "cooperage.mesh()";
   options.min_scaled_jacobian = min_scaled_jacobian;
   options.min_scaled_jacobian_option = "min_scaled_jacobian";
@@ -133,10 +124,13 @@ checks, exports and reports. Returns a Mesh whose `written` lists the files
 written (none when a quality check with action="fail" failed: see `checks`
 and `exports_skipped`). Raises InputError or MeshingError.)doc");
   m.def("plan", &plan_file, py::arg("model_or_journal"), py::arg("size") = py::none(),
-        py::arg("dim") = 3,
+        py::arg("dim") = 3, py::arg("elements") = py::none(), py::arg("imprint") = py::none(),
+        py::arg("decompose") = py::none(),
         R"doc(The scheme the selector picks for every volume and surface, and why, without
 meshing (as `cooperage plan --json`). size overrides the journal's; without
 any size the interval feasibility check is skipped. dim=2 plans the surfaces
-alone, as mesh(..., dim=2) does. Returns a list of dicts: entity, dim, id,
-scheme, score, reason, pinned, candidates.)doc");
+alone, as mesh(..., dim=2) does. elements, imprint and decompose plan a CAD
+file as mesh() with them would mesh it (a journal sets the first two
+itself; decompose overrides its <mesh decompose>). Returns a list of dicts:
+entity, dim, id, scheme, score, reason, pinned, candidates.)doc");
 }

@@ -4,6 +4,7 @@
 
 #include "framework/core/error.h"
 #include "framework/pipeline/model_job.h"
+#include "option_values.h"
 #include "framework/scheme/scheme.h"
 #include "schemes/builtin_schemes.h"
 #include "selector/select_schemes.h"
@@ -43,7 +44,16 @@ py::dict choice_dict(const selector::Choice& c) {
 
 }  // namespace
 
-py::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim) {
+py::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim,
+                   const std::optional<std::string>& elements, std::optional<bool> imprint,
+                   const std::optional<std::string>& decompose) {
+  pipeline::PlanOverrides overrides;
+  overrides.origin = "cooperage.plan()";
+  overrides.imprint_option = "imprint";
+  overrides.elements_option = "elements";
+  if (elements) overrides.elements = element_kind(*elements, overrides.origin);
+  if (imprint) overrides.imprint_merge = *imprint;
+  if (decompose) overrides.decompose = decompose_mode(*decompose, overrides.origin);
   if (size && !(*size > 0)) {
     throw MeshingError(
         ErrorCode::InvalidInput,
@@ -63,11 +73,12 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
     register_schemes(defaults, {});
     pipeline::PlanInput input;
     try {
-      input = dim == 3 ? pipeline::plan_input(file.string(), size, &defaults, selector::planner())
-                       : pipeline::plan_input(file.string(), size);
+      input = dim == 3 ? pipeline::plan_input(file.string(), size, &defaults, selector::planner(),
+                                              overrides)
+                       : pipeline::plan_input(file.string(), size, nullptr, {}, overrides);
     } catch (const MeshingError& e) {
       if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
-      input = pipeline::plan_input(file.string(), size);
+      input = pipeline::plan_input(file.string(), size, nullptr, {}, overrides);
     }
     scheme::Registry registry;
     register_schemes(registry, input.plugins);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "framework/pipeline/scheme_plan.h"
 
@@ -15,8 +16,12 @@ namespace cooperage::python {
 /// the built-in schemes, the selector) without meshing. One dict per volume,
 /// then per surface: entity, dim, id, scheme, score (the chosen scheme's,
 /// None when a volume meshes the surface), reason, pinned, candidates (dicts:
-/// scheme, ok, score, why).
-pybind11::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim);
+/// scheme, ok, score, why). `elements`, `imprint` and `decompose`, when
+/// given, as cooperage.mesh() takes them (pipeline::PlanOverrides).
+pybind11::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim,
+                         const std::optional<std::string>& elements = std::nullopt,
+                         std::optional<bool> imprint = std::nullopt,
+                         const std::optional<std::string>& decompose = std::nullopt);
 
 /// Mesh.plan: dicts (entity, dim, id, scheme, reason, details).
 pybind11::list plan_entries(const pipeline::SchemePlan& plan);

@@ -279,3 +279,25 @@ def test_min_scaled_jacobian_is_a_failing_check(source_dir):
     strict = cooperage.mesh(part, size=2, min_scaled_jacobian=0.9999, finer_retries=0)
     [check] = strict.checks
     assert check["failed"] and check["violations"] > 0
+
+
+def test_plan_takes_the_options_of_mesh(journal, cli, source_dir):
+    part = os.path.join(source_dir, "examples", "part.step")
+    for kwargs, flags in (({"imprint": False}, ["--no-imprint"]),
+                          ({"elements": "wedge"}, ["--elements", "wedge"]),
+                          ({"decompose": "off"}, ["--decompose", "off"])):
+        plan = cooperage.plan(part, size=2, **kwargs)
+        ours = json.loads(cli("plan", part, "--json", "--size", 2, *flags).stdout)
+        theirs = [("volume", c) for c in ours["volumes"]] + [("surface", c) for c in ours["surfaces"]]
+        assert [(r["entity"], r["scheme"], r["reason"]) for r in plan] == \
+            [(f"{kind} {c['id']}", c["scheme"], c["reason"]) for kind, c in theirs], kwargs
+    wedges = cooperage.plan(part, size=2, elements="wedge")
+    assert all(k["scheme"] != "map" for r in wedges if r["dim"] == 3 for k in r["candidates"])
+    with pytest.raises(cooperage.InputError):
+        cooperage.plan(part, size=2, elements="tet")
+    with pytest.raises(cooperage.InputError):
+        cooperage.plan(part, size=2, decompose="yes")
+    with pytest.raises(cooperage.InputError, match="imprint is for a CAD file"):
+        cooperage.plan(journal(BRICK), imprint=False)
+    with pytest.raises(cooperage.InputError):
+        cooperage.mesh(part, 2, decompose="yes")

@@ -1,0 +1,18 @@
+// The string options of cooperage.mesh() and cooperage.plan() read into
+// their settings; a value that is none of the choices is an InputError
+// naming the function and the argument, not a silent default.
+#pragma once
+
+#include <string>
+
+#include "framework/io/job.h"
+
+namespace cooperage::python {
+
+/// "hex", "wedge" or "mixed".
+io::ElementKind element_kind(const std::string& name, const std::string& function);
+
+/// "auto" or "off".
+io::Decompose decompose_mode(const std::string& name, const std::string& function);
+
+}  // namespace cooperage::python
