@@ -158,7 +158,8 @@ struct VolumeSetting {
   int id = 0;
   SizeSetting sizing;
   std::string scheme = "auto";  ///< "auto" or a registered volume scheme ("map", "cooper", ...)
-  ElementKind elements = ElementKind::Hex;
+  /// This volume's element kind over <mesh elements>; unset: the mesh's.
+  std::optional<ElementKind> elements;
   std::vector<int> sources;       ///< sweep source surface hints
   std::vector<int> targets;       ///< sweep target surface hints
   std::optional<Vec3> direction;  ///< sweep direction hint

@@ -108,8 +108,8 @@ VolumeSetting read_volume(const Element& e) {
   v.id = e.required_integer("id", 1);
   v.sizing = read_sizing(e, false);
   if (auto name = scheme_name(e)) v.scheme = *name;
-  v.elements =
-      static_cast<ElementKind>(e.choice("elements", {"hex", "wedge", "mixed"}).value_or(0));
+  if (const auto kind = e.choice("elements", {"hex", "wedge", "mixed"}))
+    v.elements = static_cast<ElementKind>(*kind);
   if (e.has("sources")) v.sources = e.ids("sources");
   if (e.has("targets")) v.targets = e.ids("targets");
   v.direction = e.vector("direction", VectorKind::NonZero);
@@ -118,7 +118,7 @@ VolumeSetting read_volume(const Element& e) {
       if (e.has(a))
         e.fail_at(a, "attribute \"" + std::string(a) +
                          "\" is a sweep hint; it needs scheme=\"cooper\" or \"auto\"");
-    if (v.elements != ElementKind::Hex)
+    if (v.elements && *v.elements != ElementKind::Hex)
       e.fail_at("elements", "scheme=\"map\" makes hexahedra only; use elements=\"hex\"");
   }
   for (int id : v.sources)

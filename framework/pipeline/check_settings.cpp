@@ -41,8 +41,9 @@ void check_settings(const geom::Model& model, const io::MeshSettings& settings) 
     }
     for (int s : v.sources) check_id(v.where, "surface", s, model.surfaces().size());
     for (int s : v.targets) check_id(v.where, "surface", s, model.surfaces().size());
-    if (v.elements != io::ElementKind::Hex && v.scheme == "map") {
-      const char* kind = v.elements == io::ElementKind::Wedge ? "wedge" : "mixed";
+    const io::ElementKind elements = v.elements.value_or(settings.elements);
+    if (elements != io::ElementKind::Hex && v.scheme == "map") {
+      const char* kind = elements == io::ElementKind::Wedge ? "wedge" : "mixed";
       throw MeshingError(ErrorCode::InvalidInput,
                          at(v.where) + "elements=\"" + kind +
                              "\" with scheme=\"map\": a volume map "

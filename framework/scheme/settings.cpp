@@ -25,7 +25,7 @@ const io::VolumeSetting* Settings::volume(int volume_id) const {
 
 io::ElementKind Settings::elements(int volume_id) const {
   const io::VolumeSetting* v = volume(volume_id);
-  if (v && v->elements != io::ElementKind::Hex) return v->elements;
+  if (v && v->elements) return *v->elements;
   return job ? job->elements : io::ElementKind::Hex;
 }
 

@@ -212,7 +212,7 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   ASSERT_TRUE(v.direction);
   EXPECT_EQ(*v.direction, Vec3(0, 0, -1));
   EXPECT_EQ(m.volumes[1].scheme, "map");
-  EXPECT_EQ(m.volumes[1].elements, ElementKind::Hex);
+  EXPECT_FALSE(m.volumes[1].elements);  // the mesh's kind
   EXPECT_FALSE(m.volumes[1].direction);
 
   ASSERT_EQ(m.vertex_types.size(), 2u);
@@ -243,6 +243,30 @@ TEST(JournalReader, CompleteJournalRoundTrips) {
   EXPECT_FALSE(job.exports[1].binary);           // default ascii
   EXPECT_TRUE(job.exports[2].binary);            // encoding="binary"
   EXPECT_EQ(job.exports[2].file, "result.VTU");  // extensions in any case
+}
+
+// <mesh elements> is every volume's kind; a <volume elements> overrides it,
+// "hex" too, and a volume that does not say takes the mesh's.
+TEST(JournalReader, MeshElementsAndAVolumesOwn) {
+  const Job job = parse_journal(R"(<cooperage version="1">
+  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  <mesh size="0.5" elements="wedge">
+    <volume id="1" elements="hex"/>
+    <volume id="2" size="0.2"/>
+  </mesh>
+</cooperage>)",
+                                "mem.xml", "/base");
+  ASSERT_TRUE(job.mesh);
+  EXPECT_EQ(job.mesh->elements, ElementKind::Wedge);
+  ASSERT_EQ(job.mesh->volumes.size(), 2u);
+  EXPECT_EQ(job.mesh->volumes[0].elements, ElementKind::Hex);
+  EXPECT_FALSE(job.mesh->volumes[1].elements);
+  EXPECT_THROW(parse_journal(R"(<cooperage version="1">
+  <geometry><brick name="b" origin="0 0 0" size="1 1 1"/></geometry>
+  <mesh size="0.5" elements="tet"/>
+</cooperage>)",
+                             "mem.xml", "/base"),
+               MeshingError);
 }
 
 TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {

@@ -259,6 +259,36 @@ TEST(CooperWedge, TouchingBricksKeepTheirSharedFaceASide) {
   EXPECT_GT(m.min_wedge_sj, 0.5);
 }
 
+// <mesh elements="wedge"> for every volume, one volume back to hexes by
+// its own <volume elements="hex">: two bricks apart, one of each.
+TEST(CooperWedge, AVolumesOwnKindOverridesTheMeshes) {
+  occ::Workbench wb;
+  wb.brick("a", {0, 0, 0}, {2, 1, 1});
+  wb.brick("b", {3, 0, 0}, {1, 1, 1});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 2u);
+  io::MeshSettings settings;
+  settings.size = 0.25;
+  settings.finer_retries = 0;
+  settings.elements = io::ElementKind::Wedge;
+  io::VolumeSetting hexes;
+  hexes.id = 2;
+  hexes.elements = io::ElementKind::Hex;
+  settings.volumes.push_back(hexes);
+  const auto registry = builtin();
+  const pipeline::MeshResult r =
+      pipeline::mesh_model(model, settings, *registry, selector::mesh_options());
+  const mesh::MeshDB& db = r.mesh;
+  const auto& first = db.volumes().at(1);
+  const auto& second = db.volumes().at(2);
+  EXPECT_TRUE(first.hexes.empty());
+  EXPECT_FALSE(first.wedges.empty());
+  EXPECT_FALSE(second.hexes.empty());
+  EXPECT_TRUE(second.wedges.empty());
+  const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, db);
+  EXPECT_NEAR(m.volume, 3.0, 3.0 * 1e-9);
+}
+
 TEST(CooperWedge, ApplicableBothWays) {
   // A one-barrel plate: applicable in both modes, tri source cap in wedge mode.
   occ::Workbench plate;
