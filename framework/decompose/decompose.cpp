@@ -93,13 +93,24 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     d.tried = search.tried();
     out.report.tried += d.tried;
     if (!plan) {
+      const std::string failure = search.failure();
+      // Pieces swept in different directions meet where one's cap is the
+      // other's side: triangles against quads in wedges, where mixed
+      // elements (quads on such a cap) would fit.
+      const bool wedges =
+          options.settings && options.settings->elements(v) == io::ElementKind::Wedge;
+      const bool tri_on_quads = failure.find("needs tri for") != std::string::npos ||
+                                failure.find(" but tri for") != std::string::npos;
       // The details last, in parentheses: the command line puts them on a
       // line of their own.
       throw MeshingError(
           ErrorCode::NotApplicable, EntityRef::volume(v),
-          refusal + "; automatic decomposition " + search.failure() + " (" + d.why + ")",
-          "`cooperage plan` gives every scheme's reason; cut the volume with "
-          "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
+          refusal + "; automatic decomposition " + failure + " (" + d.why + ")",
+          wedges && tri_on_quads
+              ? "the pieces a cut leaves meet with a triangle cap on a quad side, which "
+                "wedges cannot join; elements \"mixed\" (--elements mixed) meshes such pieces"
+              : "`cooperage plan` gives every scheme's reason; cut the volume with "
+                "<webcut> or give it a sweep hint (<volume sources/targets/direction>)");
     }
     d.cuts = plan->cuts;
     result = result.replace(v - 1, plan->pieces);

@@ -111,6 +111,31 @@ TEST_F(DecomposeOption, ElementsAreThoseOfThePieces) {
   EXPECT_TRUE(fs::exists(path("out.vtu")));
 }
 
+// An L-bracket with a hole in each leg: its legs sweep across each other,
+// so the cut face is one piece's cap and the other's side. In wedges that
+// is a triangle cap on a quad side, which no wedge mesh joins: the refusal
+// says that mixed elements mesh it, and they do.
+TEST_F(DecomposeOption, WedgePiecesThatCannotJoinPointToMixed) {
+  occ::Workbench bench;
+  bench.brick("foot", {0, 0, 0}, {8, 4, 1});
+  bench.brick("wall", {0, 0, 0}, {1, 4, 8});
+  bench.cylinder("down", {5, 2, -1}, {0, 0, 1}, 1, 3);
+  bench.cylinder("across", {-1, 2, 5}, {1, 0, 0}, 1, 3);
+  bench.fuse("l", {"foot", "wall"});
+  bench.cut("part", {"l", "down", "across"});
+  const std::string step = path("l_bracket.step");
+  bench.write(step);
+  const auto wedge =
+      run_command(kCli + " mesh -q " + step + " --size 0.5 --elements wedge -o " + path("w.vtu"));
+  EXPECT_EQ(wedge.exit_code, 2) << wedge.out << wedge.err;
+  EXPECT_NE(wedge.err.find("elements \"mixed\" (--elements mixed)"), std::string::npos)
+      << wedge.err;
+  EXPECT_FALSE(fs::exists(path("w.vtu")));
+  const auto mixed =
+      run_command(kCli + " mesh -q " + step + " --size 0.5 --elements mixed -o " + path("m.vtu"));
+  EXPECT_EQ(mixed.exit_code, 0) << mixed.out << mixed.err;
+}
+
 TEST_F(DecomposeOption, AnUnknownValueIsABadArgument) {
   const auto r = run_command(kCli + " mesh x.step --size 1 --decompose yes -o " + path("o.vtu"));
   EXPECT_EQ(r.exit_code, 2);
