@@ -233,6 +233,16 @@ TEST_F(RunCommand, MeshCommandDim2WritesSurfaceElementsOnly) {
   // 2 (2x4 + 2x6 + 4x6) = 88 quads, no hexes.
   EXPECT_NE(q.out.find("88 elements"), std::string::npos) << q.out;
   EXPECT_EQ(q.out.find("hex"), std::string::npos) << q.out;
+  // Wedges and mixed elements are volume elements: asked of a surface
+  // mesh, an error rather than quads that ignore the option.
+  for (const std::string kind : {"wedge", "mixed"}) {
+    const auto w = run_command(kCli + " mesh " + path("box.step") + " --size 0.5 --dim 2 -q -o " +
+                               path("box_" + kind + ".vtu") + " --elements " + kind);
+    EXPECT_EQ(w.exit_code, 2) << kind;
+    EXPECT_NE(w.err.find("elements \"" + kind + "\" asks for volume elements"), std::string::npos)
+        << w.err;
+    EXPECT_FALSE(fs::exists(path("box_" + kind + ".vtu")));
+  }
 }
 
 TEST_F(RunCommand, PlanShowsEveryChoiceWithReasonsWithoutMeshing) {
