@@ -4,6 +4,7 @@
 
 #include "framework/core/text.h"
 #include "framework/decompose/report_text.h"
+#include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "schemes/cooper/cooper_scheme.h"
@@ -306,6 +307,7 @@ int run_plan(const std::string& file, std::optional<double> size, bool json,
   }
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
+  pipeline::check_elements_for_dim(settings, dim);
   scheme::Registry registry;
   register_schemes(registry, run_plugins(plugins, input.plugins));
   const scheme::Settings job = scheme::Settings::of(settings);

@@ -24,6 +24,16 @@ void check_id(const io::SourceLocation& where, const char* kind, int id, size_t 
 
 }  // namespace
 
+void check_elements_for_dim(const io::MeshSettings& settings, int dim) {
+  if (dim != 2 || settings.elements == io::ElementKind::Hex) return;
+  const char* kind = settings.elements == io::ElementKind::Wedge ? "wedge" : "mixed";
+  throw MeshingError(ErrorCode::InvalidInput, EntityRef::none(),
+                     std::string("elements \"") + kind +
+                         "\" asks for volume elements, but a surface mesh (dim 2) has none",
+                     "mesh in 3D, or give the surfaces scheme \"tri\" or \"quad_dominant\" in a "
+                     "journal (<surface id scheme>) for triangles on a surface mesh");
+}
+
 void check_settings(const geom::Model& model, const io::MeshSettings& settings) {
   for (const auto& c : settings.curves) check_id(c.where, "curve", c.id, model.curves().size());
   for (const auto& s : settings.surfaces) {

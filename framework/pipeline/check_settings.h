@@ -13,6 +13,11 @@ namespace cooperage::pipeline {
 /// model does not have, or for elements="wedge" / "mixed" with scheme="map".
 void check_settings(const geom::Model& model, const io::MeshSettings& settings);
 
+/// Wedges and mixed elements are a sweep's, so a surface mesh (`dim` 2)
+/// of settings that ask for them would silently be quads: throws
+/// MeshingError(InvalidInput) saying so.
+void check_elements_for_dim(const io::MeshSettings& settings, int dim);
+
 /// The journal's <block>, <sideset> and <nodeset> (or groups built in code,
 /// cooperage::Options::groups) are well formed (ids and names unique per
 /// kind, names of a letter then letters, digits, '_', at most 32

@@ -628,16 +628,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
         ErrorCode::InvalidInput,
         clip_path(job.file) + ": the journal has no <mesh> element, so there is nothing to run");
   }
-  // Wedges and mixed elements are a sweep's; a surface mesh would silently
-  // be quads.
-  if (options.dim == 2 && job.mesh->elements != io::ElementKind::Hex) {
-    const char* kind = job.mesh->elements == io::ElementKind::Wedge ? "wedge" : "mixed";
-    throw MeshingError(ErrorCode::InvalidInput, EntityRef::none(),
-                       std::string("elements \"") + kind +
-                           "\" asks for volume elements, but a surface mesh (dim 2) has none",
-                       "mesh in 3D, or give the surfaces scheme \"tri\" or \"quad_dominant\" in "
-                       "a journal (<surface id scheme>) for triangles on a surface mesh");
-  }
+  check_elements_for_dim(*job.mesh, options.dim);
   // Every target is checked before any work, and no two name one file.
   std::map<std::string, const io::ExportSetting*> targets;
   for (const io::ExportSetting& e : job.exports) {

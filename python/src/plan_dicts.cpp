@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "framework/core/error.h"
+#include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/model_job.h"
 #include "option_values.h"
 #include "framework/scheme/scheme.h"
@@ -80,6 +81,7 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
       if (e.code() != ErrorCode::NotApplicable || e.entity().dim != 3) throw;
       input = pipeline::plan_input(file.string(), size, nullptr, {}, overrides);
     }
+    pipeline::check_elements_for_dim(input.settings, dim);
     scheme::Registry registry;
     register_schemes(registry, input.plugins);
     selector::SelectOptions options;

@@ -130,6 +130,11 @@ TEST_F(PlanCommand, TakesTheOptionsOfMeshThatChangeThePlan) {
                                   " --size 0.5 --elements wedge | " + count_surfaces);
   ASSERT_EQ(wedges.exit_code, 0) << wedges.err;
   EXPECT_EQ(wedges.out, "2 11 ['cooper']\n");
+  // A surface mesh has no wedges: planning one in wedges is refused, as
+  // `mesh --dim 2 --elements wedge` is.
+  const auto flat = run_command(kCli + " plan --dim 2 " + bricks + " --size 0.5 --elements wedge");
+  EXPECT_EQ(flat.exit_code, 2);
+  EXPECT_NE(flat.err.find("asks for volume elements"), std::string::npos) << flat.err;
 
   // A journal sets how its solids merge and which elements they get; its
   // decomposition can be turned off as its size can be overridden.

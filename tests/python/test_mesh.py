@@ -301,3 +301,12 @@ def test_plan_takes_the_options_of_mesh(journal, cli, source_dir):
         cooperage.plan(journal(BRICK), imprint=False)
     with pytest.raises(cooperage.InputError):
         cooperage.mesh(part, 2, decompose="yes")
+
+
+def test_wedges_asked_of_a_surface_mesh_are_an_input_error(source_dir):
+    part = os.path.join(source_dir, "examples", "part.step")
+    for kind in ("wedge", "mixed"):
+        with pytest.raises(cooperage.InputError, match="asks for volume elements"):
+            cooperage.mesh(part, 2, dim=2, elements=kind)
+        with pytest.raises(cooperage.InputError, match="asks for volume elements"):
+            cooperage.plan(part, size=2, dim=2, elements=kind)
