@@ -4,6 +4,7 @@
 #include "run_command.h"
 #include "temp_dir.h"
 
+#include "support/paper_parts.h"
 #include "support/real_cad.h"
 
 #include "framework/geometry/occ/workbench.h"
@@ -24,12 +25,7 @@ using testing::kCli;
 class DecomposeOption : public testing::TempDirTest {
  protected:
   // Blacker 1996, Fig. 3a, as shape "part".
-  static void fig3a(occ::Workbench& bench) {
-    bench.brick("block", {0, 0, 0}, {4, 4, 2});
-    bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
-    bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
-    bench.fuse("part", {"block", "up", "out"});
-  }
+  static void fig3a(occ::Workbench& bench) { testing::build_fig3a(bench); }
   // The same as a STEP file.
   std::string fig3a_step() const {
     occ::Workbench bench;

@@ -4,7 +4,7 @@
 #include "run_command.h"
 #include "temp_dir.h"
 
-#include "framework/geometry/occ/workbench.h"
+#include "support/paper_parts.h"
 
 #include <gtest/gtest.h>
 
@@ -92,10 +92,7 @@ TEST_F(PlanCommand, DimTwoPlansTheSurfacesAlone) {
 // that touch on a face.
 TEST_F(PlanCommand, TakesTheOptionsOfMeshThatChangeThePlan) {
   occ::Workbench bench;
-  bench.brick("block", {0, 0, 0}, {4, 4, 2});
-  bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
-  bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
-  bench.fuse("part", {"block", "up", "out"});
+  testing::build_fig3a(bench);
   const std::string fig3a = path("fig3a.step");
   bench.write(fig3a);
   const auto cut = run_command(kCli + " plan " + fig3a + " --size 0.25");

@@ -10,6 +10,7 @@
 #include "framework/geometry/occ/solid_pieces.h"
 #include "framework/geometry/occ/workbench.h"
 #include "schemes/builtin_schemes.h"
+#include "support/paper_parts.h"
 #include "support/rigid_motion.h"
 
 #include <gtest/gtest.h>
@@ -294,10 +295,7 @@ TEST(DecomposeBuiltin, Fig3aIsRefusedWholeAndTooCoarseASizeIsExplained) {
   scheme::Registry registry;
   register_builtin_schemes(registry);
   occ::Workbench bench;
-  bench.brick("block", {0, 0, 0}, {4, 4, 2});
-  bench.brick("up", {1, 0.5, 2}, {1, 1, 1});
-  bench.brick("out", {4, 2.5, 0.5}, {1, 1, 1});
-  bench.fuse("part", {"block", "up", "out"});
+  testing::build_fig3a(bench);
   EXPECT_EQ(unmeshable_volumes(bench.build_model(), registry), std::vector<int>{1});
   try {
     run(bench, registry, 2.5);
