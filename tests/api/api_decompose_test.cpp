@@ -44,6 +44,22 @@ TEST(ApiDecompose, APartNoSchemeTakesWholeIsCutByDefault) {
   EXPECT_GT(hexes, 0);
 }
 
+// Options::elements is every volume's kind, so the pieces of the cut are
+// wedges too (it used to be set per volume id, which stopped the cut).
+TEST(ApiDecompose, ElementsAreThoseOfThePieces) {
+  const std::string step = fig3a_step();
+  Options o;
+  o.elements = io::ElementKind::Wedge;
+  const Result r = mesh_file(step, 0.25, o);
+  fs::remove(step);
+  ASSERT_EQ(r.decomposition.volumes.size(), 1u);
+  ASSERT_GE(r.model.volumes().size(), 2u);
+  for (const auto& v : r.model.volumes()) {
+    EXPECT_TRUE(r.mesh.volume(v.id).hexes.empty()) << "volume " << v.id;
+    EXPECT_FALSE(r.mesh.volume(v.id).wedges.empty()) << "volume " << v.id;
+  }
+}
+
 TEST(ApiDecompose, OffRefusesThePartNamingTheVolume) {
   const std::string step = fig3a_step();
   Options o;
