@@ -296,7 +296,8 @@ int main(int argc, char** argv) {
                  "Keep touching solids separate, as `mesh --no-imprint` (a CAD file)");
   std::optional<std::string> plan_elements, plan_decompose;
   plan->add_option("--elements", plan_elements,
-                   "hex (default), wedge or mixed, as `mesh --elements` (a CAD file)")
+                   "hex (default), wedge or mixed, as `mesh --elements`; overrides a journal's "
+                   "<mesh elements>")
       ->check(CLI::IsMember({"hex", "wedge", "mixed"}));
   plan->add_option("--decompose", plan_decompose,
                    "auto (default for a CAD file) or off, as `mesh --decompose`; overrides a "

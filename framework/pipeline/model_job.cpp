@@ -72,21 +72,18 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   PlanInput in;
   if (ext == ".xml") {
-    // A journal says how its solids are merged (<imprint_merge>) and which
-    // elements each volume gets (<volume elements>).
-    if (overrides.imprint_merge || overrides.elements) {
-      throw MeshingError(
-          ErrorCode::InvalidInput,
-          overrides.origin + ": " +
-              (overrides.imprint_merge ? overrides.imprint_option : overrides.elements_option) +
-              " is for a CAD file; a journal sets it itself (" +
-              (overrides.imprint_merge ? "<imprint_merge enabled=\"false\"/>"
-                                       : "<volume elements=\"...\"/>") +
-              ")");
+    // A journal says how its solids are merged (<imprint_merge>): its
+    // geometry operations may depend on it.
+    if (overrides.imprint_merge) {
+      throw MeshingError(ErrorCode::InvalidInput,
+                         overrides.origin + ": " + overrides.imprint_option +
+                             " is for a CAD file; a journal sets it itself "
+                             "(<imprint_merge enabled=\"false\"/>)");
     }
     io::Job job = io::read_journal(file);
     if (job.mesh) in.settings = *job.mesh;
     if (overrides.decompose) in.settings.decompose = *overrides.decompose;
+    if (overrides.elements) in.settings.elements = *overrides.elements;
     in.plugins = job.plugins;
     if (registry) {
       if (size) in.settings.size = size;

@@ -62,11 +62,10 @@ struct PlanInput {
 /// Unset: the default (a CAD file) or the journal's own setting.
 struct PlanOverrides {
   std::optional<bool> imprint_merge;        ///< --no-imprint: CAD files only
-  std::optional<io::ElementKind> elements;  ///< --elements: CAD files only
-  std::optional<io::Decompose> decompose;   ///< --decompose: overrides a journal's too
-  std::string origin = "command line";      ///< for errors, with the options' names:
+  std::optional<io::ElementKind> elements;  ///< --elements: over <mesh elements> too
+  std::optional<io::Decompose> decompose;   ///< --decompose: over <mesh decompose> too
+  std::string origin = "command line";      ///< for errors, with the option's name:
   std::string imprint_option = "--no-imprint";
-  std::string elements_option = "--elements";
 };
 
 /// Reads `file`, builds its model, applies `size` and `overrides` (over the
@@ -75,8 +74,8 @@ struct PlanOverrides {
 /// scheme applies to are decomposed as `cooperage mesh` and `run` do
 /// (build_decomposed_geometry); a CAD file is planned with
 /// decompose="auto" unless overridden.
-/// @throws MeshingError(InvalidInput) for --no-imprint or --elements given
-///         with a journal (it sets them itself); as read_journal(),
+/// @throws MeshingError(InvalidInput) for --no-imprint given with a journal
+///         (it sets that itself); as read_journal(),
 ///         build_geometry(), load_any(), build_decomposed_geometry() and
 ///         check_settings() do.
 PlanInput plan_input(const std::string& file, std::optional<double> size,

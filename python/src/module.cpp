@@ -130,7 +130,7 @@ and `exports_skipped`). Raises InputError or MeshingError.)doc");
 meshing (as `cooperage plan --json`). size overrides the journal's; without
 any size the interval feasibility check is skipped. dim=2 plans the surfaces
 alone, as mesh(..., dim=2) does. elements, imprint and decompose plan a CAD
-file as mesh() with them would mesh it (a journal sets the first two
-itself; decompose overrides its <mesh decompose>). Returns a list of dicts:
+file as mesh() with them would mesh it (a journal sets imprint itself;
+elements and decompose override its <mesh>). Returns a list of dicts:
 entity, dim, id, scheme, score, reason, pinned, candidates.)doc");
 }

@@ -51,7 +51,6 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
   pipeline::PlanOverrides overrides;
   overrides.origin = "cooperage.plan()";
   overrides.imprint_option = "imprint";
-  overrides.elements_option = "elements";
   if (elements) overrides.elements = element_kind(*elements, overrides.origin);
   if (imprint) overrides.imprint_merge = *imprint;
   if (decompose) overrides.decompose = decompose_mode(*decompose, overrides.origin);

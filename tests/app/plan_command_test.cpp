@@ -133,14 +133,19 @@ TEST_F(PlanCommand, TakesTheOptionsOfMeshThatChangeThePlan) {
   EXPECT_EQ(flat.exit_code, 2);
   EXPECT_NE(flat.err.find("asks for volume elements"), std::string::npos) << flat.err;
 
-  // A journal sets how its solids merge and which elements they get; its
-  // decomposition can be turned off as its size can be overridden.
+  // A journal sets how its solids merge; its decomposition and element
+  // kind can be overridden as its size can.
   std::ofstream(path("fig3a.xml")) << "<cooperage version=\"1\"><geometry>"
                                       "<import name=\"p\" file=\""
                                    << fig3a << "\"/></geometry><mesh size=\"0.25\"/></cooperage>\n";
   const auto journal_off = run_command(kCli + " plan " + path("fig3a.xml") + " --decompose off");
   EXPECT_EQ(journal_off.exit_code, 2) << journal_off.out;
   EXPECT_NE(journal_off.err.find("no hex scheme applies"), std::string::npos) << journal_off.err;
+  const auto journal_wedges =
+      run_command(kCli + " plan " + path("fig3a.xml") + " --elements wedge");
+  EXPECT_EQ(journal_wedges.exit_code, 0) << journal_wedges.err;
+  EXPECT_NE(journal_wedges.out.find("no wedge scheme applies"), std::string::npos)
+      << journal_wedges.out;
   const auto journal_apart = run_command(kCli + " plan " + path("fig3a.xml") + " --no-imprint");
   EXPECT_EQ(journal_apart.exit_code, 2);
   EXPECT_NE(journal_apart.err.find("--no-imprint is for a CAD file"), std::string::npos)
