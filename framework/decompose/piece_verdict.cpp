@@ -6,7 +6,11 @@ PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Reg
                          const scheme::Settings* settings) {
   PieceVerdict out;
   const scheme::VolumeView view{model, volume, nullptr, settings};
+  // Wedge and mixed volumes take only the schemes that make wedges, as the
+  // selector does: a piece the volume map would take is no answer then.
+  const bool wedges = settings && settings->elements(volume) != io::ElementKind::Hex;
   for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
+    if (wedges && !s->makes_wedges()) continue;
     const scheme::Applicability a = s->applicable(view);
     if (a.ok) {
       if (!out.ok || a.score > out.score) {

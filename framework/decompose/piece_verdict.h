@@ -20,7 +20,8 @@ struct PieceVerdict {
 
 /// The applicable volume scheme with the best score (ties: registry order),
 /// for the job's `settings` (null: defaults, as for the pieces of a cut,
-/// which no per-entity setting names).
+/// which no per-entity setting names). In wedge or mixed elements only the
+/// schemes that make wedges count, as in the selector.
 PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry,
                          const scheme::Settings* settings = nullptr);
 

@@ -5,6 +5,7 @@
 #include "framework/decompose/decompose.h"
 
 #include "framework/core/error.h"
+#include "framework/decompose/piece_verdict.h"
 #include "framework/decompose/surface_fit.h"
 #include "framework/decompose/volume_samples.h"
 #include "framework/geometry/occ/solid_pieces.h"
@@ -305,6 +306,35 @@ TEST(DecomposeBuiltin, Fig3aIsRefusedWholeAndTooCoarseASizeIsExplained) {
     EXPECT_NE(what.find("map: "), std::string::npos) << what;
     EXPECT_NE(what.find("cooper: "), std::string::npos) << what;
     EXPECT_NE(what.find("tried 0 cuts"), std::string::npos) << what;
+  }
+}
+
+// A piece is answered as the selector would answer it: a brick is the
+// volume map's in hexes (score 1 against cooper's 0.9), but in wedges or
+// mixed elements only the schemes that make wedges count, and a refusal
+// lists only theirs.
+TEST(DecomposeBuiltin, InWedgesAPieceIsNotTheVolumeMaps) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 1, 1});
+  const geom::Model brick = bench.build_model();
+  occ::Workbench fig3a;
+  testing::build_fig3a(fig3a);
+  const geom::Model part = fig3a.build_model();
+  for (const io::ElementKind kind :
+       {io::ElementKind::Hex, io::ElementKind::Wedge, io::ElementKind::Mixed}) {
+    io::MeshSettings job;
+    job.size = 0.25;
+    job.elements = kind;
+    const scheme::Settings settings = scheme::Settings::of(job);
+    const PieceVerdict b = best_scheme(brick, 1, registry, &settings);
+    ASSERT_TRUE(b.ok);
+    EXPECT_EQ(b.scheme, kind == io::ElementKind::Hex ? "map" : "cooper");
+    const PieceVerdict p = best_scheme(part, 1, registry, &settings);
+    ASSERT_FALSE(p.ok);
+    EXPECT_EQ(p.why.find("map: ") != std::string::npos, kind == io::ElementKind::Hex) << p.why;
+    EXPECT_NE(p.why.find("cooper: "), std::string::npos) << p.why;
   }
 }
 
