@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 namespace cooperage::decompose {
 namespace {
@@ -68,6 +69,19 @@ std::string number(double x) {
   return buf;
 }
 
+// "20 bspline, 2 torus": the geometry of a volume's faces, by kind.
+std::string surface_kinds(const geom::Model& model, int volume) {
+  std::map<geom::SurfaceType, int> count;
+  for (int s : model.surfaces_of(volume)) {
+    const auto& g = model.surface(s).geometry;
+    ++count[g ? g->type() : geom::SurfaceType::Other];
+  }
+  std::string out;
+  for (const auto& [type, n] : count)
+    out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + geom::to_string(type);
+  return out;
+}
+
 AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
   return {e.candidate->surface, e.candidate->through, depth, e.outcome.pieces, thinnest};
 }
@@ -76,11 +90,14 @@ AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
 
 std::string CutSearch::failure() const {
   std::string out = "tried " + std::to_string(tried_) + " cut" + (tried_ == 1 ? "" : "s");
+  // Cuts come from the planes and cylinders of its faces and from its
+  // straight and circular edges along their axes.
+  if (candidates_ == 0)
+    return out + "; none of its faces is a plane or a cylinder to cut along (" + face_kinds_ + ")";
   if (crossing_ == 0) {
-    return out +
-           "; no cut through its faces or edges leaves pieces at least one element "
-           "layer (" +
-           number(options_.size) + ") thick";
+    return out + "; no cut through its faces or edges leaves pieces at least one element layer (" +
+           number(options_.size) + ") thick (the thickest leaves " + number(thickest_) +
+           " on its thinner side: a size of at most " + number(thickest_) + " lets it cut)";
   }
   if (!conflict_.empty()) {
     out += "; " + conflict_;
@@ -168,11 +185,16 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       known = known || same_surface(k.surface, c.surface, 1e-6);
     if (!known) candidates.push_back(c);
   }
+  if (depth == 0 && !last_resort_) {
+    candidates_ = static_cast<int>(candidates.size());
+    face_kinds_ = surface_kinds(model, 1);
+  }
   std::vector<Evaluated> evaluated;
   for (const CutCandidate& c : candidates) {
     if (tried_ >= options_.max_cuts) break;
     // A cut must leave at least one element layer on each side.
     const Span s = span(c.surface, samples);
+    if (depth == 0) thickest_ = std::max(thickest_, std::min(-s.below, s.above));
     if (s.below > -size || s.above < size) continue;
     if (depth == 0) ++crossing_;
     ++tried_;

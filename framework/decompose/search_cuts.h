@@ -66,6 +66,9 @@ class CutSearch {
   int tried_ = 0;
   bool last_resort_ = false;  ///< the second pass: meridian cuts, rings of sweeps
   int crossing_ = 0;          ///< candidates crossing the volume by a layer on each side
+  int candidates_ = 0;        ///< candidates of the volume itself (depth 0)
+  double thickest_ = 0.0;     ///< thinnest side of the volume across its thickest candidate
+  std::string face_kinds_;  ///< "28 bspline": its faces' geometry, for a refusal without candidates
   std::string best_partial_;  ///< what the best cut at depth 0 left unmeshable
   std::string conflict_;      ///< why the first complete cut did not plan
   int conflicts_ = 0;         ///< sets of sweepable pieces that did not plan

@@ -157,6 +157,8 @@ TEST_F(Boxes, NoPieceThinnerThanOneElementLayer) {
     const std::string what = e.what();
     EXPECT_NE(what.find("tried 0 cuts"), std::string::npos) << what;
     EXPECT_NE(what.find("one element layer"), std::string::npos) << what;
+    // What to do: the size at which the thickest cut is allowed.
+    EXPECT_NE(what.find("a size of at most 1 lets it cut"), std::string::npos) << what;
     EXPECT_NE(what.find("box: not six faces"), std::string::npos) << what;
   }
 }
@@ -306,6 +308,27 @@ TEST(DecomposeBuiltin, Fig3aIsRefusedWholeAndTooCoarseASizeIsExplained) {
     EXPECT_NE(what.find("map: "), std::string::npos) << what;
     EXPECT_NE(what.find("cooper: "), std::string::npos) << what;
     EXPECT_NE(what.find("tried 0 cuts"), std::string::npos) << what;
+  }
+}
+
+// A volume without a planar or cylindrical face gives the search nothing
+// to cut along; the refusal says so, not that every cut is too thin.
+TEST(DecomposeBuiltin, AVolumeWithoutPlanesOrCylindersHasNoCutToTry) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  occ::Workbench bench;
+  bench.sphere("ball", {0, 0, 0}, 1.0);
+  try {
+    run(bench, registry, 0.2);
+    FAIL() << "expected a refusal";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("tried 0 cuts; none of its faces is a plane or a cylinder to cut along "
+                        "(1 sphere)"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("element layer"), std::string::npos) << what;
   }
 }
 
