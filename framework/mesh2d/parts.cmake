@@ -11,4 +11,5 @@ cooperage_framework_part(mesh2d SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loop_validity.cpp
   ${CMAKE_CURRENT_LIST_DIR}/triangle_locator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/touching_loops.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/parity_ear.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_chart.cpp)
