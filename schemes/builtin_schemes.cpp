@@ -10,6 +10,7 @@
 #include "schemes/pave/pave_2d.h"
 #include "schemes/pave/pave_scheme.h"
 #include "schemes/quad_dominant/fallback_chain.h"
+#include "schemes/quad_dominant/pave_with_ear.h"
 #include "schemes/quad_dominant/quad_dominant_scheme.h"
 #include "schemes/submap/submap_scheme.h"
 #include "schemes/tri/tri_scheme.h"
@@ -42,11 +43,13 @@ class Triangles2D final : public scheme::PolygonMesher {
 };
 
 // The quad-dominant counterpart for mixed mode, as the quad_dominant scheme:
-// pave's quads, those below the mixed quad quality split into triangles.
+// pave's quads, those below the mixed quad quality split into triangles; an
+// odd boundary (an imprinted subcap) gets one triangle at a corner first.
 class QuadDominant2D final : public scheme::PolygonMesher {
  public:
   scheme::QuadMesh2D mesh(const std::vector<std::vector<Eigen::Vector2d>>& loops) const override {
-    pave::QuadMesh2D m = pave::pave_2d(loops);
+    quad_dominant::PavedWithEar paved = quad_dominant::pave_with_ear(loops);
+    pave::QuadMesh2D& m = paved.mesh;
     std::vector<geom::Vec3> points;
     points.reserve(m.points.size());
     for (const Eigen::Vector2d& p : m.points) points.emplace_back(p.x(), p.y(), 0.0);
@@ -57,6 +60,7 @@ class QuadDominant2D final : public scheme::PolygonMesher {
         points, m.quads, movable, [](const geom::Vec3& x) { return geom::Vec3(x.x(), x.y(), 0.0); },
         cooper::kMixedMinQuadQuality);
     for (size_t i = 0; i < points.size(); ++i) m.points[i] = points[i].head<2>();
+    if (paved.ear) split.tris.push_back(*paved.ear);
     return {std::move(m.points), std::move(split.quads), m.boundary_count, std::move(split.tris)};
   }
 };

@@ -54,13 +54,25 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   // Loops touching at a node (features meeting at a corner) pass it twice.
   const UnpinchedLoops loops = unpinch_loops(oriented_loops(p.loops, xy), xy);
   const std::vector<int>& boundary = loops.nodes;
+  const std::string where = "a subcap of " +
+                            (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
+                            " in " + s.barrel_name(b);
+  // Interval counts fix the parity of model curves, not of the pieces
+  // their images cut a cap into (sec. 5.3; bench/RESULTS.md, session 37).
+  if (boundary.size() % 2 != 0 && s.plan.elements == Elements::Hex) {
+    throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(s.vid),
+                       where + " has an odd number of boundary nodes (" +
+                           std::to_string(boundary.size()) +
+                           ") where imprinted features cross, and no all-hex mesh fits it",
+                       "elements \"mixed\" (--elements mixed) meshes it with one column of "
+                       "wedges; a smaller size or a <webcut> between the features may mesh it "
+                       "all-hex");
+  }
   scheme::QuadMesh2D m;
   try {
     m = s.mesher->mesh(loops.points);
   } catch (const std::exception& e) {
-    fail(s.vid, "meshing a subcap of " +
-                    (p.cap ? "cap " + std::to_string(p.cap) : std::string("a virtual cap")) +
-                    " in " + s.barrel_name(b) + ": " + e.what());
+    fail(s.vid, "meshing " + where + ": " + e.what());
   }
   if (m.boundary_count != static_cast<int>(boundary.size())) {
     fail(s.vid, "the polygon mesher changed the boundary of a subcap in " + s.barrel_name(b));
