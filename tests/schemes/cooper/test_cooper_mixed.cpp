@@ -214,5 +214,58 @@ TEST(CooperMixed, BladeWithAppendagesHasTrianglesOnlyAtTheTip) {
       s.hexes, s.wedges, farthest, s.min_hex_sj, s.min_wedge_sj);
 }
 
+// Plan => mesh campaign seed 7 part 76: two blind holes from the top that
+// overlap each other and a pocket, over a foot. Imprinting splits a subcap
+// of the foot's stack into odd pieces (15 and 7 nodes at size 3.709) that
+// no interval count controls (bench/RESULTS.md, session 37); all-hex has
+// no mesh there, and says that mixed elements have one. In mixed elements
+// each odd stack gets one triangle at a corner: a column of wedges.
+void overlapping_blind_holes_over_a_foot(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {53.87, 31.71, 16.01});
+  wb.cylinder("f0", {22.53, 14.28, 5.06}, {0, 0, 1}, 6.11, 26.96);
+  wb.cylinder("f1", {16.19, 13.34, 11.79}, {0, 0, 1}, 5, 20.23);
+  wb.cylinder("f2", {13.11, 18.21, -7.18}, {0, 0, 1}, 5.12, 7.18);
+  wb.brick("f3", {6.18, 15.36, 4.55}, {8.82, 12.2, 27.47});
+  wb.fuse("body", {"block", "f2"});
+  wb.cut("part", {"body", "f0", "f1", "f3"});
+}
+
+TEST(CooperMixed, AnOddImprintedSubcapGetsOneColumnOfWedges) {
+  occ::Workbench wb;
+  overlapping_blind_holes_over_a_foot(wb);
+  const geom::Model model = wb.build_model();
+  const double solid = model.volume(1).volume;
+  const auto at = [&](io::ElementKind elements) {
+    io::MeshSettings s;
+    s.size = 0.93;
+    s.finer_retries = 0;  // this size, this direction
+    s.elements = elements;
+    scheme::Registry registry;
+    register_builtin_schemes(registry);
+    return pipeline::mesh_model(model, s, registry, selector::mesh_options());
+  };
+  try {
+    at(io::ElementKind::Hex);
+    ADD_FAILURE() << "expected all-hex to fail";
+  } catch (const MeshingError& e) {
+    EXPECT_EQ(e.entity().id, 1);
+    EXPECT_NE(e.message().find("odd number of boundary nodes"), std::string::npos) << e.what();
+    EXPECT_NE(e.hint().find("--elements mixed"), std::string::npos) << e.hint();
+  }
+
+  const pipeline::MeshResult mixed = at(io::ElementKind::Mixed);
+  ASSERT_TRUE(mixed.plan.refused_volumes.empty());
+  const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, mixed.mesh);
+  EXPECT_GT(m.wedges, 0u);
+  EXPECT_LT(m.wedges, m.hexes / 100);  // columns, not caps of triangles
+  EXPECT_GT(m.min_wedge_sj, 0.0);
+  EXPECT_GT(m.min_hex_sj, 0.0);
+  EXPECT_NEAR(m.volume, solid, 0.01 * solid);  // round faces meshed by chords
+  std::printf(
+      "[cooper mixed] campaign 7/76 at 0.93: %zu hexes + %zu wedges, min SJ hex %.3f "
+      "wedge %.3f, volume %+.3f %%\n",
+      m.hexes, m.wedges, m.min_hex_sj, m.min_wedge_sj, 100 * (m.volume - solid) / solid);
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
