@@ -144,6 +144,8 @@ def main():
     ap.add_argument("--finer-retries", type=int, default=0,
                     help="the journals' finer_retries (0, the default, judges the scheme at the "
                     "part's own size; 2 is what a user gets)")
+    ap.add_argument("--elements", choices=["hex", "wedge", "mixed"], default="hex",
+                    help="the journals' <mesh elements>")
     a = ap.parse_args()
     binary = os.path.abspath(a.bin)
     os.makedirs(os.path.join(a.out, "failures"), exist_ok=True)
@@ -155,6 +157,8 @@ def main():
             text, what = random_part(rng)
             text = text.replace('decompose="off"',
                                 'decompose="off" finer_retries="%d"' % a.finer_retries)
+            if a.elements != "hex":
+                text = text.replace('decompose="off"', 'decompose="off" elements="%s"' % a.elements)
             tmp = tempfile.mkdtemp(prefix="parity-")
             try:
                 with open(os.path.join(tmp, "part.xml"), "w") as f:
