@@ -15,22 +15,6 @@ namespace {
 
 using Eigen::Vector2d;
 
-/// c lies on the closed segment (a, b), given that a, b, c are collinear.
-bool on_segment(const Vector2d& a, const Vector2d& b, const Vector2d& c) {
-  return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
-         std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
-}
-
-/// The closed segments (a, b) and (c, d) share a point.
-bool touch(const Vector2d& a, const Vector2d& b, const Vector2d& c, const Vector2d& d) {
-  const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
-  const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-    return true;
-  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) ||
-         (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
-}
-
 bool point_in(const std::vector<Vector2d>& polygon, const Vector2d& q) {
   bool in = false;
   for (size_t k = 0, j = polygon.size() - 1; k < polygon.size(); j = k++) {
@@ -116,7 +100,7 @@ std::string invalid_loops(const std::vector<std::vector<Vector2d>>& loops) {
           }
           continue;
         }
-        if (touch(a, b, c, d)) {
+        if (segments_touch(a, b, c, d)) {
           return same ? "loop " + std::to_string(s.loop) + " touches or crosses itself"
                       : "loops " + std::to_string(std::min(s.loop, t.loop)) + " and " +
                             std::to_string(std::max(s.loop, t.loop)) + " touch or cross";

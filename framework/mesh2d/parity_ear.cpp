@@ -5,19 +5,6 @@
 namespace cooperage::mesh2d {
 namespace {
 
-// Whether segments pq and rs cross or touch (exact signs).
-bool segments_meet(const Point2& p, const Point2& q, const Point2& r, const Point2& s) {
-  const double d1 = orient2d(p, q, r), d2 = orient2d(p, q, s);
-  const double d3 = orient2d(r, s, p), d4 = orient2d(r, s, q);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
-  const auto on = [](const Point2& a, const Point2& b, const Point2& c, double d) {
-    return d == 0 && std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) &&
-           std::min(a.y(), b.y()) <= c.y() && c.y() <= std::max(a.y(), b.y());
-  };
-  return on(p, q, r, d1) || on(p, q, s, d2) || on(r, s, p, d3) || on(r, s, q, d4);
-}
-
 // Inside or on the boundary of the counter-clockwise triangle abc.
 bool in_triangle(const Point2& a, const Point2& b, const Point2& c, const Point2& x) {
   return orient2d(a, b, x) >= 0 && orient2d(b, c, x) >= 0 && orient2d(c, a, x) >= 0;
@@ -38,7 +25,7 @@ bool is_ear(const std::vector<std::vector<Point2>>& loops, size_t l, size_t i) {
       // The chord a-c against every edge not at a or c.
       const size_t jn = (j + 1) % k;
       const bool at_chord = m == l && (j == ip || jn == ip || j == in || jn == in);
-      if (!at_chord && segments_meet(a, c, other[j], other[jn])) return false;
+      if (!at_chord && segments_touch(a, c, other[j], other[jn])) return false;
     }
   }
   return true;

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -38,6 +39,20 @@ inline double orient2d(const Point2& a, const Point2& b, const Point2& c) {
   const double detsum = std::abs(detleft) + std::abs(detright);
   if (std::abs(det) > detail::kCcwErrBound * detsum) return det;
   return detail::orient2d_ambiguous(a, b, c, det);
+}
+
+/// The closed segments ab and cd share a point (exact signs).
+inline bool segments_touch(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const auto on = [](const Point2& p, const Point2& q, const Point2& x) {  // given collinear
+    return std::min(p.x(), q.x()) <= x.x() && x.x() <= std::max(p.x(), q.x()) &&
+           std::min(p.y(), q.y()) <= x.y() && x.y() <= std::max(p.y(), q.y());
+  };
+  const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+    return true;
+  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) ||
+         (o4 == 0 && on(c, d, b));
 }
 
 /// The in-circle determinant in plain double together with its permanent
