@@ -7,7 +7,10 @@
 // 5.4, as for free loops in imprint_intersect.cpp), the subcap is split
 // along path - hole arc - path, one arc of the hole to each piece, and the
 // part of the gap inside the hole stays a gap: the subcap filling the hole
-// is split by it in a later step.
+// is split by it in a later step. The chain may also start and end on
+// another hole of the subcap (a footprint reaching a through hole's rim):
+// then the piece leaves the subcap and that hole grows by it and by the
+// crossed hole's disk.
 #include "schemes/cooper/imprinter.h"
 
 #include <algorithm>
@@ -31,7 +34,13 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
   const Subcap b = caps(1 - e)[bi];
   const size_t m = gap.size();
   if (m < 2 || path.size() != m || x == y) return false;
-  if (index_in(b.loops.front(), x) < 0 || index_in(b.loops.front(), y) < 0) return false;
+  // The loop of b the chain starts and ends on: its outer loop, or a hole
+  // (a boss's footprint reaching a through hole's rim from inside the top).
+  size_t ends = b.loops.size();
+  for (size_t l = 0; l < b.loops.size() && ends == b.loops.size(); ++l) {
+    if (index_in(b.loops[l], x) >= 0 && index_in(b.loops[l], y) >= 0) ends = l;
+  }
+  if (ends == b.loops.size()) return false;
   Loop chain{x};
   chain.insert(chain.end(), path.begin(), path.end());
   chain.push_back(y);
@@ -44,6 +53,7 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
   std::vector<Crossing> found;
   size_t hole = 0;
   for (size_t h = 1; h < b.loops.size(); ++h) {
+    if (h == ends) continue;
     const Loop& l = b.loops[h];
     for (size_t s = 0; s + 1 < chain.size(); ++s) {
       for (size_t k = 0; k < l.size(); ++k) {
@@ -63,9 +73,20 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
     return p.s != q.s ? p.s < q.s : p.t < q.t;
   });
   const Loop H = b.loops[hole];
-  const Loop& outer = b.loops.front();
-  const double whole = signed_area(outer, xy()) + signed_area(H, xy());  // H runs clockwise
+  const Loop& outer = b.loops[ends];
+  // Outer ends: the two pieces' areas add up to b's (H runs clockwise).
+  // Hole ends: the hole grows by the piece and H's disk, |new hole| =
+  // |hole| + |H| + |piece|.
+  const double whole = ends == 0
+                           ? signed_area(outer, xy()) + signed_area(H, xy())
+                           : std::abs(signed_area(outer, xy())) + std::abs(signed_area(H, xy()));
   const auto free_b = [&](int v) { return !partner(1 - e, v) && !exterior_.count(v); };
+  // A hole of b inside `piece` (judged by a node of it not on the piece).
+  const auto inside = [&](const Loop& other, const Loop& piece) {
+    const auto free_node =
+        std::find_if(other.begin(), other.end(), [&](int v) { return index_in(piece, v) < 0; });
+    return free_node != other.end() && point_in_loop(xy().at(*free_node), piece, xy());
+  };
   // Candidates: a gap node at either end of each crossed chain segment (the
   // chain's node s + 1 is gap node s), a free hole node at either end of
   // each crossed hole segment; the closest pairs whose pieces are all even.
@@ -110,7 +131,20 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
       const Loop& left = d == 0 ? split[0].first : split[1].first;
       const Loop& right = d == 0 ? split[1].second : split[0].second;
       const double al = signed_area(left, xy()), ar = signed_area(right, xy());
-      if (al > 0 && ar > 0 && std::abs(al + ar - whole) <= tol) return {left, right};
+      if (ends == 0) {
+        if (al > 0 && ar > 0 && std::abs(al + ar - whole) <= tol) return {left, right};
+        continue;
+      }
+      // {piece, grown hole}, either way round; the piece counter-clockwise,
+      // the hole clockwise.
+      for (int swap = 0; swap < 2; ++swap) {
+        Loop piece = swap ? right : left, grown = swap ? left : right;
+        const double ap = std::abs(swap ? ar : al), ag = std::abs(swap ? al : ar);
+        if (!(ap > tol) || std::abs(ag - ap - whole) > tol) continue;
+        if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
+        if (signed_area(grown, xy()) > 0) std::reverse(grown.begin(), grown.end());
+        return {piece, grown};
+      }
     }
     return {};
   };
@@ -131,8 +165,15 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
     // middle splits it along an arc of H (both arcs alike: H is even).
     const long arc = (index_in(H, c.h2) - index_in(H, c.h1) + static_cast<long>(H.size())) %
                      static_cast<long>(H.size());
-    const bool even = left.size() % 2 == 0 && right.size() % 2 == 0 &&
-                      (arc + static_cast<long>(c.j2 - c.j1)) % 2 == 0;
+    // With hole ends b keeps its outer loop and the holes the piece does
+    // not take: both counts are of all their loops.
+    size_t piece_count = left.size(), rest = right.size();
+    for (size_t l = 0; ends != 0 && l < b.loops.size(); ++l) {
+      if (l == ends || l == hole) continue;
+      (l != 0 && inside(b.loops[l], left) ? piece_count : rest) += b.loops[l].size();
+    }
+    const bool even =
+        piece_count % 2 == 0 && rest % 2 == 0 && (arc + static_cast<long>(c.j2 - c.j1)) % 2 == 0;
     if (options_.even_parity && !even) continue;
     chosen = &c;
     break;
@@ -164,8 +205,25 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
     for (int v : gap) project(e, v, around, seamed);
     return false;
   }
-  caps(1 - e)[bi].loops.erase(caps(1 - e)[bi].loops.begin() + static_cast<long>(hole));
-  replace(1 - e, bi, {left, right});
+  if (ends == 0) {
+    caps(1 - e)[bi].loops.erase(caps(1 - e)[bi].loops.begin() + static_cast<long>(hole));
+    replace(1 - e, bi, {left, right});
+  } else {
+    // b keeps its outer loop and its other holes, the piece's inside it go
+    // with the piece (as in split_hole).
+    Subcap& t = caps(1 - e)[bi];
+    std::vector<Loop> kept{t.loops.front()}, piece_loops{left};
+    for (size_t l = 1; l < t.loops.size(); ++l) {
+      if (l == hole) continue;
+      if (l == ends) {
+        kept.push_back(right);
+        continue;
+      }
+      (inside(t.loops[l], left) ? piece_loops : kept).push_back(t.loops[l]);
+    }
+    t.loops = std::move(kept);
+    new_cap(1 - e, std::move(piece_loops), t.id);
+  }
   r_.steps.push_back(ImprintStep::Intersect);
   r_.steps.push_back(ImprintStep::Subtract);
   return true;

@@ -57,11 +57,18 @@ ImprintResult Imprinter::run() {
     if (try_coincident()) continue;
     if (try_gaps()) continue;
     r_.why = "no imprinting step applies to the unmatched subcaps" + unmatched_list();
+    export_ribs();
     return r_;
   }
   r_.why = "imprinting did not finish within " + std::to_string(options_.max_steps) +
            " steps; unmatched subcaps" + unmatched_list();
+  export_ribs();
   return r_;
+}
+
+void Imprinter::export_ribs() {
+  r_.ends.ribs.clear();
+  for (const auto& [u, l] : partner_[0]) r_.ends.ribs.push_back({u, l});
 }
 
 bool Imprinter::all_matched() {
@@ -89,8 +96,7 @@ void Imprinter::finish() {
   r_.ok = true;
   for (const Subcap& s : r_.ends.upper) r_.matches.push_back({s.id, match_of_.at(s.id)});
   std::sort(r_.matches.begin(), r_.matches.end());
-  r_.ends.ribs.clear();
-  for (const auto& [u, l] : partner_[0]) r_.ends.ribs.push_back({u, l});
+  export_ribs();
 }
 
 std::optional<int> Imprinter::partner(int e, int node) const {
@@ -628,6 +634,24 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
   for (int c : common) {
     if (point_in_subcap(probe, caps(1 - e)[static_cast<size_t>(c)], xy()))
       bi = static_cast<size_t>(c);
+  }
+  // The probe sees only the gap's first segment. Where a's loop crosses an
+  // opposing loop at a shallow angle (the rims of a blind hole and of a
+  // foot below it, nearly tangent), that segment can dip across the rim
+  // while the rest of the gap runs on the other side: then the subcap that
+  // holds most of the gap's nodes (their images land where they are unless
+  // seamed) is the one the gap cuts.
+  if (gap.size() >= 3) {
+    auto votes = [&](size_t c) {
+      return std::count_if(gap.begin(), gap.end(), [&](int v) {
+        return point_in_subcap(xy().at(v), caps(1 - e)[c], xy());
+      });
+    };
+    const long probed = votes(bi);
+    for (int c : common) {
+      const long n = votes(static_cast<size_t>(c));
+      if (n > probed && 2 * n > static_cast<long>(gap.size())) bi = static_cast<size_t>(c);
+    }
   }
   if (!gap.empty() && gap_leaves_subcap(e, gap, a.loops.front(), bi) &&
       seam_gap_to_arc(e, gap, x, y, common))

@@ -29,6 +29,9 @@ class Imprinter {
   bool all_matched();
   std::string unmatched_list();
   void finish();
+  // Every rib so far, the interior ones too, into r_.ends.ribs: a failed
+  // imprint's debug output (imprint_debug.h) shows where it got to.
+  void export_ribs();
   std::optional<int> partner(int e, int node) const;
   void link(int e, int node, int other);
 
@@ -111,7 +114,9 @@ class Imprinter {
   // gap[j], projected with seams or not) crosses one hole of subcap bi of
   // end 1 - e twice: the crossings are seamed onto nodes of the hole, bi is
   // split along path - hole arc - path and the gap's middle stays a gap
-  // (imprint_gap_through_hole.cpp). False, nothing changed, otherwise.
+  // (imprint_gap_through_hole.cpp); x and y lie on bi's outer loop, or on
+  // another of its holes, which then grows by the piece. False, nothing
+  // changed, otherwise.
   struct Undo;
   bool gap_through_hole(int e, const Loop& around, const Loop& gap, const Loop& path, bool seamed,
                         int x, int y, size_t bi, const Loop& fresh, const Undo& undo);
