@@ -5,11 +5,14 @@ the JSON that COOPERAGE_DEBUG_IMPRINT=DIR makes a failing run write
 
 usage: COOPERAGE_DEBUG_IMPRINT=/tmp/imp cooperage run job.xml
        fuzz/draw_imprint.py /tmp/imp/volume1-barrel4-out.json out.svg
-           [--zoom CX,CY,R] [--ids] [--png]
+           [--zoom=CX,CY,R] [--ids] [--png]
+
+With COOPERAGE_DEBUG_IMPRINT_STEPS=N as well, the ends before each of the
+first N steps go to volume1-barrel4-step<k>.json, drawn the same way.
 
 Upper subcaps blue, lower subcaps red (holes dashed), ribs green, nodes of
 model curves as dots. --zoom shows the square of half-width R around
-(CX, CY) in chart units; --ids labels the nodes and the subcaps; --png also
+(CX, CY) in chart units (written with "=": a negative CX is no option); --ids labels the nodes and the subcaps; --png also
 renders OUT.png with Debian's chromium (headless).
 """
 import argparse

@@ -281,6 +281,7 @@ std::string unmatched_surfaces(const SweepState& s, const ImprintResult& r) {
 void imprint_barrels(SweepState& s) {
   ImprintOptions options;
   options.even_parity = s.plan.elements != Elements::Wedge;
+  options.trace_steps = imprint_debug_steps();
   const size_t passes = 4 + 2 * s.barrels.size();
   for (size_t pass = 0; pass < passes; ++pass) {
     bool changed = false;

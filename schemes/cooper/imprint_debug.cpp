@@ -1,5 +1,6 @@
 #include "schemes/cooper/imprint_debug.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -67,8 +68,21 @@ bool write_imprint_debug(const std::string& name, const BarrelEnds& in, const Im
   const char* folder = std::getenv("COOPERAGE_DEBUG_IMPRINT");
   if (folder == nullptr || *folder == '\0') return false;
   const std::string base = std::string(folder) + "/" + name;
-  return write(base + "-in.json", ends_json(in, "")) &&
-         write(base + "-out.json", ends_json(out.ends, out.ok ? "" : out.why));
+  bool ok = write(base + "-in.json", ends_json(in, "")) &&
+            write(base + "-out.json", ends_json(out.ends, out.ok ? "" : out.why));
+  for (size_t k = 0; k < out.trace.size() && ok; ++k) {
+    ok = write(base + "-step" + std::to_string(k) + ".json",
+               ends_json(out.trace[k].first,
+                         "before step " + std::to_string(k) + ", after " + out.trace[k].second));
+  }
+  return ok;
+}
+
+int imprint_debug_steps() {
+  const char* folder = std::getenv("COOPERAGE_DEBUG_IMPRINT");
+  const char* steps = std::getenv("COOPERAGE_DEBUG_IMPRINT_STEPS");
+  if (folder == nullptr || *folder == '\0' || steps == nullptr) return 0;
+  return std::max(0, std::atoi(steps));
 }
 
 }  // namespace cooperage::cooper

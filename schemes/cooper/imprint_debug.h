@@ -12,7 +12,14 @@ namespace cooperage::cooper {
 
 /// Writes `<folder>/<name>-in.json` (the ends given) and `-out.json` (the
 /// ends after imprinting, with the reason it stopped) when
-/// COOPERAGE_DEBUG_IMPRINT is set; returns whether it wrote them.
+/// COOPERAGE_DEBUG_IMPRINT is set, and `-step<k>.json` for every entry of
+/// out.trace (the ends before step k; "why" names the step before it);
+/// returns whether it wrote them.
 bool write_imprint_debug(const std::string& name, const BarrelEnds& in, const ImprintResult& out);
+
+/// How many steps imprinting should trace for write_imprint_debug: the
+/// number in COOPERAGE_DEBUG_IMPRINT_STEPS when COOPERAGE_DEBUG_IMPRINT is
+/// set too, else 0.
+int imprint_debug_steps();
 
 }  // namespace cooperage::cooper

@@ -40,6 +40,13 @@ Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : opti
 
 ImprintResult Imprinter::run() {
   for (int step = 0; step < options_.max_steps; ++step) {
+    if (step < options_.trace_steps) {
+      BarrelEnds now = r_.ends;
+      now.ribs.clear();
+      for (const auto& [u, l] : partner_[0]) now.ribs.push_back({u, l});
+      r_.trace.emplace_back(std::move(now),
+                            r_.steps.empty() ? std::string("start") : to_string(r_.steps.back()));
+    }
     // A loop beside a combined crossing (sec. 5.3) may now walk to it and
     // back: a pocket's edge over a round hole's lens, both ends of it.
     for (int e = 0; e < 2; ++e) {

@@ -56,6 +56,9 @@ struct ImprintOptions {
   double seam_fraction = 0.3;
   bool even_parity = true;  ///< all-quad: every new loop even (sec. 5.3, 5.5)
   int max_steps = 10000;    ///< bound on imprinting steps
+  /// Keep the ends as they were before each of the first `trace_steps`
+  /// steps in ImprintResult::trace (for imprint_debug.h; 0: none).
+  int trace_steps = 0;
 };
 
 enum class ImprintStep { Match, Subtract, Intersect, Seam, SelfIntersect };
@@ -79,6 +82,9 @@ struct ImprintResult {
   std::map<int, int> origin;
   /// For !ok: the subcaps no step could resolve, at the upper and lower end.
   std::array<std::vector<int>, 2> unmatched;
+  /// With ImprintOptions::trace_steps: the ends (ribs so far included)
+  /// before each step, and the step that came before it.
+  std::vector<std::pair<BarrelEnds, std::string>> trace;
 };
 
 /// Imprints and matches the subcaps of one barrel's ends (sec. 5).

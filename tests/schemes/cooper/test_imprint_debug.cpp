@@ -48,6 +48,7 @@ class ImprintDebug : public ::testing::Test {
   }
   void TearDown() override {
     ::unsetenv("COOPERAGE_DEBUG_IMPRINT");
+    ::unsetenv("COOPERAGE_DEBUG_IMPRINT_STEPS");
     fs::remove_all(dir_);
   }
   fs::path dir_;
@@ -80,6 +81,30 @@ TEST_F(ImprintDebug, BothEndsAreWrittenWithTheReason) {
   EXPECT_NE(before.find("\"fixed\": [1, 2, 3, 4]"), std::string::npos) << before;
   EXPECT_NE(before.find("\"why\": \"\""), std::string::npos) << before;
   EXPECT_NE(after.find("\"why\": \"a reason with \\\"quotes\\\"\""), std::string::npos) << after;
+}
+
+// With COOPERAGE_DEBUG_IMPRINT_STEPS, the ends before every step are
+// written too: the first as given, the last with the ribs the steps made.
+TEST_F(ImprintDebug, EveryStepsEndsAreWrittenWhenAsked) {
+  ::setenv("COOPERAGE_DEBUG_IMPRINT", dir_.c_str(), 1);
+  EXPECT_EQ(imprint_debug_steps(), 0);
+  ::setenv("COOPERAGE_DEBUG_IMPRINT_STEPS", "50", 1);
+  ASSERT_EQ(imprint_debug_steps(), 50);
+  ImprintOptions options;
+  options.trace_steps = imprint_debug_steps();
+  const BarrelEnds in = two_squares();
+  const ImprintResult out = imprint_subcaps(in, options);
+  ASSERT_TRUE(out.ok) << out.why;
+  ASSERT_FALSE(out.trace.empty());
+  EXPECT_EQ(out.trace.front().second, "start");
+  ASSERT_TRUE(write_imprint_debug("volume1-barrel1", in, out));
+  for (size_t k = 0; k < out.trace.size(); ++k)
+    EXPECT_TRUE(fs::exists(dir_ / ("volume1-barrel1-step" + std::to_string(k) + ".json"))) << k;
+  EXPECT_FALSE(
+      fs::exists(dir_ / ("volume1-barrel1-step" + std::to_string(out.trace.size()) + ".json")));
+  const std::string first = text_of(dir_ / "volume1-barrel1-step0.json");
+  EXPECT_NE(first.find("\"why\": \"before step 0, after start\""), std::string::npos) << first;
+  EXPECT_NE(first.find("\"ribs\": [[1, 5], [2, 6], [3, 7], [4, 8]]"), std::string::npos) << first;
 }
 
 }  // namespace
