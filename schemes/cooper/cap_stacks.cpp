@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <unordered_map>
@@ -142,10 +143,11 @@ void take_surface_mesh(SweepState& s, Piece& p) {
 // Where the rings change shape a lot (a hole doubling its radius while the
 // outer loop stays), the projected subcap can fold next to its boundary:
 // then its new nodes are smoothed (sec. 6.1: "a smooth ... to optimize
-// element quality"), kept only if its worst corner improves.
-void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
-              const std::vector<mesh::Tri>& tris, const std::map<int, int>& index,
-              const std::map<int, int>& image, const Piece& to) {
+// element quality"), kept only if its worst corner improves. Returns the
+// worst corner sine of the projected subcap as it is left (<= 0: folded).
+double untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
+                const std::vector<mesh::Tri>& tris, const std::map<int, int>& index,
+                const std::map<int, int>& image, const Piece& to) {
   const BarrelState& st = s.barrels[b];
   std::vector<int> node(index.size());
   for (const auto& [n, i] : index) node[static_cast<size_t>(i)] = n;
@@ -187,20 +189,22 @@ void untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
   // Within rounding of the source's worst corner is as good: an affine
   // projection gives the same corners, a hair worse or better by rounding,
   // and a moved part was untangled where it was not (campaign seed 7 case 50).
-  if (q_after >= std::min(0.5, q_before) - 1e-9) return;
+  if (q_after >= std::min(0.5, q_before) - 1e-9) return q_after;
   const auto& g = to.cap ? s.model.surface(to.cap).geometry : nullptr;
   auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
   // A fold that guarded smoothing cannot open (each single move makes a
   // corner worse first) is untangled against the source's corners first.
   const bool untangled = q_after <= 0 && untangle_cap(after, before, q, t, movable, st.d, onto);
-  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60) && !untangled) return;
+  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60) && !untangled) return q_after;
   for (size_t i = 0; i < node.size(); ++i) {
     if (movable[i]) s.out.coords[static_cast<size_t>(image.at(node[i]))] = after[i];
   }
+  return std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
 }
 
-// Projects piece `from` through barrel b onto its match `to` (sec. 6.1).
-void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
+// Projects piece `from` through barrel b onto its match `to` (sec. 6.1);
+// returns the worst corner sine of `to`'s mesh (<= 0: folded).
+double project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   BarrelState& st = s.barrels[b];
   std::map<int, int> across;  // from's node -> to's node, through the ribs
   for (const auto& [u, l] : st.rib_pairs) {
@@ -287,7 +291,7 @@ void project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down) {
   for (const auto& t : from.tris)
     to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
   to.meshed = true;
-  untangle(s, b, quads, tris, index, image, to);
+  return untangle(s, b, quads, tris, index, image, to);
 }
 
 // The faces of `to`, meshed beforehand, in the order and corner order of
@@ -407,6 +411,88 @@ void match_existing(SweepState& s, size_t b, const Piece& from, Piece& to, bool 
   to.meshed = true;
 }
 
+// Meshes the seed and projects its mesh through the stack, piece by piece
+// (sec. 6.1); returns the worst corner sine of the projected pieces (<= 0:
+// one is folded).
+double spread(SweepState& s, int seed) {
+  double worst = 1.0;
+  std::deque<int> queue{seed};
+  while (!queue.empty()) {
+    const int m = queue.front();
+    queue.pop_front();
+    const Piece& from = s.pieces[static_cast<size_t>(m)];
+    for (const int b : {from.upper_of, from.lower_of}) {
+      if (b < 0) continue;
+      const bool down = b == from.upper_of;
+      const BarrelState& st = s.barrels[static_cast<size_t>(b)];
+      for (const auto& [u, l] : st.matches) {
+        const int other = down ? (u == m ? l : -1) : (l == m ? u : -1);
+        if (other < 0) continue;
+        Piece& to = s.pieces[static_cast<size_t>(other)];
+        if (to.meshed) continue;
+        if (to.premeshed) {
+          match_existing(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
+        } else {
+          worst = std::min(worst, project(s, static_cast<size_t>(b),
+                                          s.pieces[static_cast<size_t>(m)], to, down));
+        }
+        queue.push_back(other);
+      }
+    }
+  }
+  return worst;
+}
+
+// Where the stack's pieces differ in shape (an imprinted line close to a
+// rim at one end, far from it at the other), the seed's mesh can fold on
+// a piece it is projected onto, next to a corner of that piece's boundary
+// that no node inside can open, and the sweep then inverts a hex there. The
+// stack's other pieces are tried as the seed in turn (ascending), the
+// nodes and elements of a try taken back, and the one whose worst
+// projected corner is best is kept (the first seed, as before, when it
+// leaves no fold). At most this many seeds.
+constexpr size_t kMaxSeeds = 6;
+
+void mesh_from_a_seed(SweepState& s, int first, const std::vector<int>& members) {
+  std::vector<int> seeds{first};
+  for (int m : members) {
+    if (m != first && seeds.size() < kMaxSeeds) seeds.push_back(m);
+  }
+  const size_t nodes = s.out.coords.size(), owners = s.out.owners.size();
+  auto take_back = [&] {
+    s.out.coords.resize(nodes);
+    s.out.global.resize(nodes);
+    if (s.out.owners.size() > owners) s.out.owners.resize(owners);
+    for (auto it = s.local.begin(); it != s.local.end();) {
+      it = it->second >= static_cast<int>(nodes) ? s.local.erase(it) : std::next(it);
+    }
+    for (int m : members) {
+      Piece& p = s.pieces[static_cast<size_t>(m)];
+      p.quads.clear();
+      p.tris.clear();
+      p.meshed = false;
+    }
+  };
+  int best = first;
+  double best_worst = -std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < seeds.size(); ++k) {
+    try {
+      mesh_with_polygon_mesher(s, s.pieces[static_cast<size_t>(seeds[k])]);
+      const double worst = spread(s, seeds[k]);
+      if ((k == 0 && worst > 0.0) || seeds.size() == 1) return;
+      if (worst > best_worst) {
+        best_worst = worst;
+        best = seeds[k];
+      }
+    } catch (const MeshingError&) {
+      if (k == 0) throw;  // the first seed's error, as without the others
+    }
+    take_back();
+  }
+  mesh_with_polygon_mesher(s, s.pieces[static_cast<size_t>(best)]);
+  spread(s, best);
+}
+
 }  // namespace
 
 // cite: Blacker 1996, sec. 6.1 (forming and meshing cap stacks).
@@ -446,35 +532,13 @@ void mesh_stacks(SweepState& s) {
     }
     if (seed >= 0) {
       take_surface_mesh(s, s.pieces[static_cast<size_t>(seed)]);
+      spread(s, seed);
     } else {
       for (int m : members) {
         if (seed < 0 && s.pieces[static_cast<size_t>(m)].cap) seed = m;
       }
       if (seed < 0) seed = members.front();
-      mesh_with_polygon_mesher(s, s.pieces[static_cast<size_t>(seed)]);
-    }
-    std::deque<int> queue{seed};
-    while (!queue.empty()) {
-      const int m = queue.front();
-      queue.pop_front();
-      const Piece& from = s.pieces[static_cast<size_t>(m)];
-      for (const int b : {from.upper_of, from.lower_of}) {
-        if (b < 0) continue;
-        const bool down = b == from.upper_of;
-        const BarrelState& st = s.barrels[static_cast<size_t>(b)];
-        for (const auto& [u, l] : st.matches) {
-          const int other = down ? (u == m ? l : -1) : (l == m ? u : -1);
-          if (other < 0) continue;
-          Piece& to = s.pieces[static_cast<size_t>(other)];
-          if (to.meshed) continue;
-          if (to.premeshed) {
-            match_existing(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
-          } else {
-            project(s, static_cast<size_t>(b), s.pieces[static_cast<size_t>(m)], to, down);
-          }
-          queue.push_back(other);
-        }
-      }
+      mesh_from_a_seed(s, seed, members);
     }
     for (int m : members) {
       if (!s.pieces[static_cast<size_t>(m)].meshed)
