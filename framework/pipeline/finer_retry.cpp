@@ -9,6 +9,13 @@
 namespace cooperage::pipeline {
 namespace {
 
+// "what was tried; the scheme's hint", or what was tried alone when the
+// scheme gave no hint (a lattice that does not fit its face): no "; " left
+// dangling at the end of the message.
+std::string then(const std::string& tried, const std::string& hint) {
+  return hint.empty() ? tried : tried + "; " + hint;
+}
+
 std::optional<double> size_of(const io::MeshSettings& settings, int volume) {
   for (const io::VolumeSetting& v : settings.volumes)
     if (v.id == volume && v.sizing.size) return v.sizing.size;
@@ -159,7 +166,7 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
         r.planned_sweep ? "sweeping it the other way, along " + vector_text(-*r.planned_sweep)
                         : std::string();
     if (r.turned && v.state == Verdict::State::Refused) {
-      v.hint = "meshing it again at smaller sizes, and " + other_way + ", failed too; " + v.hint;
+      v.hint = then("meshing it again at smaller sizes, and " + other_way + ", failed too", v.hint);
       continue;
     }
     if (r.turned) {
@@ -174,8 +181,9 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
       continue;
     }
     if (v.state == Verdict::State::Refused) {
-      v.hint = "meshing it again at " + fraction(r.asked, r.size) + " the size (" +
-               number_text(r.size) + ") failed too; " + v.hint;
+      v.hint = then("meshing it again at " + fraction(r.asked, r.size) + " the size (" +
+                        number_text(r.size) + ") failed too",
+                    v.hint);
       continue;
     }
     warnings.push_back({v.entity, "meshed at size " + number_text(r.size) + ", " +

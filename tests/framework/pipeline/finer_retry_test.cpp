@@ -348,6 +348,23 @@ TEST(ReportFinerRetries, WarnsForWhatMeshedAndExtendsTheHintOfWhatDidNot) {
   EXPECT_EQ(r.verdicts[1].hint, "meshing it again at half the size (0.5) failed too; a hint");
 }
 
+// A scheme that gave no hint (submap's lattice that does not fit its face)
+// leaves what was tried, with no "; " dangling after it.
+TEST(ReportFinerRetries, WhatWasTriedStandsAloneWithoutAHint) {
+  MeshResult r;
+  r.verdicts = {refused(1, true), refused(2, true)};
+  r.verdicts[0].hint.clear();
+  r.verdicts[1].hint.clear();
+  std::map<int, FinerRetry> retries;
+  retries[1] = {1.0, 0.25, "quad 3 is folded", std::nullopt, false};
+  retries[2] = {1.0, 1.0, "quad 3 is folded", geom::Vec3(0, 0, -1), true};
+  report_finer_retries(retries, r);
+  EXPECT_EQ(r.verdicts[0].hint, "meshing it again at a quarter the size (0.25) failed too");
+  EXPECT_EQ(r.verdicts[1].hint,
+            "meshing it again at smaller sizes, and sweeping it the other way, along (0, 0, 1), "
+            "failed too");
+}
+
 // A volume that meshes worse than a failing quality check allows is meshed
 // again at half its size (the run would otherwise write nothing), and says
 // so; a warning check, no retries, or a retry that is no better leave the
