@@ -411,9 +411,9 @@ void match_existing(SweepState& s, size_t b, const Piece& from, Piece& to, bool 
   to.meshed = true;
 }
 
-// Meshes the seed and projects its mesh through the stack, piece by piece
-// (sec. 6.1); returns the worst corner sine of the projected pieces (<= 0:
-// one is folded).
+// Projects the meshed seed's mesh through its stack, piece by piece (sec.
+// 6.1); returns the worst corner sine of the projected pieces (<= 0: one
+// is folded).
 double spread(SweepState& s, int seed) {
   double worst = 1.0;
   std::deque<int> queue{seed};

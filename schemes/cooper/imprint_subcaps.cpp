@@ -42,8 +42,7 @@ ImprintResult Imprinter::run() {
   for (int step = 0; step < options_.max_steps; ++step) {
     if (step < options_.trace_steps) {
       BarrelEnds now = r_.ends;
-      now.ribs.clear();
-      for (const auto& [u, l] : partner_[0]) now.ribs.push_back({u, l});
+      now.ribs = ribs_so_far();
       r_.trace.emplace_back(std::move(now),
                             r_.steps.empty() ? std::string("start") : to_string(r_.steps.back()));
     }
@@ -73,10 +72,14 @@ ImprintResult Imprinter::run() {
   return r_;
 }
 
-void Imprinter::export_ribs() {
-  r_.ends.ribs.clear();
-  for (const auto& [u, l] : partner_[0]) r_.ends.ribs.push_back({u, l});
+std::vector<std::pair<int, int>> Imprinter::ribs_so_far() const {
+  std::vector<std::pair<int, int>> ribs;
+  ribs.reserve(partner_[0].size());
+  for (const auto& [u, l] : partner_[0]) ribs.push_back({u, l});
+  return ribs;
 }
+
+void Imprinter::export_ribs() { r_.ends.ribs = ribs_so_far(); }
 
 bool Imprinter::all_matched() {
   for (int e = 0; e < 2; ++e) {

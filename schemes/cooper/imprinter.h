@@ -32,6 +32,8 @@ class Imprinter {
   // Every rib so far, the interior ones too, into r_.ends.ribs: a failed
   // imprint's debug output (imprint_debug.h) shows where it got to.
   void export_ribs();
+  // (upper node, lower node) of every rib so far, exterior and interior.
+  std::vector<std::pair<int, int>> ribs_so_far() const;
   std::optional<int> partner(int e, int node) const;
   void link(int e, int node, int other);
 
