@@ -22,6 +22,12 @@ const char* to_string(ImprintStep step) {
 }
 
 namespace detail {
+namespace {
+
+// Steps allowed beyond one per node of the barrel's ends.
+constexpr int kStepsBeyondNodes = 100;
+
+}  // namespace
 
 Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : options_(options) {
   r_.ends = in;
@@ -39,7 +45,13 @@ Imprinter::Imprinter(const BarrelEnds& in, const ImprintOptions& options) : opti
 }
 
 ImprintResult Imprinter::run() {
-  for (int step = 0; step < options_.max_steps; ++step) {
+  // Imprinting that goes on far longer than the ends have nodes is going
+  // round in circles (a subcap split again and again): the campaign's
+  // imprints take at most 15 steps, real CAD's at most 53 on 1,212 nodes,
+  // and a cycle ran to 10,000 steps for 7.7 s before it gave up.
+  const int bound =
+      std::min(options_.max_steps, kStepsBeyondNodes + static_cast<int>(r_.ends.xy.size()));
+  for (int step = 0; step < bound; ++step) {
     if (step < options_.trace_steps) {
       BarrelEnds now = r_.ends;
       now.ribs = ribs_so_far();
@@ -66,7 +78,7 @@ ImprintResult Imprinter::run() {
     export_ribs();
     return r_;
   }
-  r_.why = "imprinting did not finish within " + std::to_string(options_.max_steps) +
+  r_.why = "imprinting did not finish within " + std::to_string(bound) +
            " steps; unmatched subcaps" + unmatched_list();
   export_ribs();
   return r_;

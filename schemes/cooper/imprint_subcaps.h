@@ -55,7 +55,9 @@ struct ImprintOptions {
   /// Seaming tolerance as a fraction of the shortest edge at the projected node (sec. 5.4).
   double seam_fraction = 0.3;
   bool even_parity = true;  ///< all-quad: every new loop even (sec. 5.3, 5.5)
-  int max_steps = 10000;    ///< bound on imprinting steps
+  /// Bound on imprinting steps; imprinting also stops after 100 steps
+  /// more than its ends have nodes (it is going round in circles then).
+  int max_steps = 10000;
   /// Keep the ends as they were before each of the first `trace_steps`
   /// steps in ImprintResult::trace (for imprint_debug.h; 0: none).
   int trace_steps = 0;
