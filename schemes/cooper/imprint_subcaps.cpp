@@ -314,6 +314,10 @@ void Imprinter::apply_combined(int e, const std::vector<std::pair<int, int>>& co
       partner_[e][keep] = image_keep;
       partner_[1 - e][image_keep] = keep;
       r_.seams.push_back({image_drop, image_keep});
+    } else if (q && *q != *p) {
+      // Both images given nodes: keep stays ribbed to its own, and drop's
+      // image loses its rib (it pointed at a node no loop holds any more).
+      partner_[1 - e].erase(*p);
     } else {
       partner_[e][keep] = *p;
       partner_[1 - e][*p] = keep;

@@ -512,6 +512,31 @@ TEST(CooperImprintSlivers, ImprintingGoingRoundInCirclesGivesUpWithinItsNodesSte
   }
 }
 
+// A foot below, a boss and a square boss on the top, a pocket cut into
+// the square boss (campaign seed 7 case 116). A crossing of a subcap's
+// own loop was combined onto two nodes whose ribs end on two different
+// given nodes of the other end; the kept node took the dropped one's
+// partner and the partner of its own kept a rib back to it, so two nodes
+// of one end were ribbed to one node of the other, and imprinting found
+// no step at size 3.115. The kept node now keeps its own rib and the
+// dropped node's partner loses its rib. (Tried first without the bound on
+// imprinting steps, this sent campaign part 4/126 round in circles for
+// 10,000 steps; with the bound it gives up in under a second.)
+void pocket_in_square_boss_beside_boss(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {61.52, 37.34, 22.3});
+  wb.cylinder("foot", {9.35, 27.22, -4.58}, {0, 0, 1}, 6.05, 4.58);
+  wb.cylinder("boss", {37.69, 6.18, 22.3}, {0, 0, 1}, 8.1, 19.68);
+  wb.brick("pocket", {43.6, 11.83, 12.72}, {6.56, 8.26, 31.88});
+  wb.brick("square", {38.41, 8.97, 22.3}, {9.28, 7.38, 5.49});
+  wb.fuse("body", {"block", "foot", "boss", "square"});
+  wb.cut("part", {"body", "pocket"});
+}
+
+TEST(CooperImprintSlivers, ACrossingCombinedOntoTwoGivenNodesKeepsOneRibEach) {
+  expect_meshes("pocket_in_square_boss_beside_boss", pocket_in_square_boss_beside_boss, {3.115},
+                144);
+}
+
 TEST(CooperBarrelFormation, AHoleFloorAboveALugsConeEndsItsBarrel) {
   expect_meshes("lug_cone_and_blind_hole", lug_cone_and_blind_hole, {3.954, 1.977}, 175);
 }
