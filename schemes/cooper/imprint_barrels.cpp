@@ -314,7 +314,15 @@ void imprint_barrels(SweepState& s) {
         fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed" + unmatched_surfaces(s, r) +
                         " (" + r.why + ")");
       }
-      changed = apply(s, b, ends, r, warp) || changed;
+      try {
+        changed = apply(s, b, ends, r, warp) || changed;
+      } catch (const MeshingError&) {
+        // An imprint the sweep cannot take (a cap meshed beforehand cut):
+        // its ends and result, as for an imprint that failed.
+        write_imprint_debug("volume" + std::to_string(s.vid) + "-barrel" + std::to_string(b + 1),
+                            ends, r);
+        throw;
+      }
     }
     if (!changed) return;
   }
