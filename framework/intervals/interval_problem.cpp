@@ -102,6 +102,12 @@ void IntervalProblem::add_linear(std::vector<LinearTerm> terms, Sense sense, int
   constraints_.push_back(std::move(c));
 }
 
+void IntervalProblem::add_preference(std::vector<LinearTerm> terms, Sense sense, int rhs,
+                                     std::string label) {
+  add_linear(std::move(terms), sense, rhs, std::move(label));
+  constraints_.back().preferred = true;
+}
+
 std::string describe(const Constraint& constraint) {
   std::ostringstream out;
   out << "curves ";

@@ -51,6 +51,10 @@ struct Constraint {
   Sense sense = Sense::Equal;  ///< Linear only
   int rhs = 0;                 ///< Linear only
   std::string label;           ///< "surface 7 (map): curves 1+3 = 2+4"
+  /// A preference, not a need: solve() drops the preferences of a component
+  /// that cannot hold with them (the order of a wall's corners, which the
+  /// wall's geometry suggests and a sampled curve can misjudge).
+  bool preferred = false;
 };
 
 /// Curves and constraints of one model. Constraints may name curves that are
@@ -77,6 +81,10 @@ class IntervalProblem {
   void add_at_least(const std::vector<int>& ids, int k, std::string label = {});
   /// sum(coeff * x) <sense> rhs, e.g. "c2 + c3 >= c4 + c5 + 4".
   void add_linear(std::vector<LinearTerm> terms, Sense sense, int rhs, std::string label = {});
+
+  /// As add_linear, kept only where the other constraints allow it
+  /// (Constraint::preferred).
+  void add_preference(std::vector<LinearTerm> terms, Sense sense, int rhs, std::string label = {});
 
   /// Where a curve's intervals should be smaller than its goal's mean (a
   /// small feature nearby, curve_sizing.h): its nodes follow these sizes.

@@ -22,8 +22,9 @@ struct Canonical {
   Sense sense = Sense::Equal;
   int rhs = 0;
   std::string label;
+  bool preferred = false;
 
-  auto key() const { return std::tie(kind, terms, sense, rhs, label); }
+  auto key() const { return std::tie(kind, terms, sense, rhs, label, preferred); }
 };
 
 Sense flipped(Sense s) {
@@ -40,6 +41,7 @@ Canonical canonical(const Constraint& c) {
   out.sense = c.sense;
   out.rhs = c.rhs;
   out.label = c.label;
+  out.preferred = c.preferred;
   for (auto [id, coeff] : merged)
     if (coeff != 0) out.terms.emplace_back(id, coeff);
   if (!out.terms.empty() && out.terms.front().second < 0) {
@@ -373,6 +375,31 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   return x;
 }
 
+/// solve_component, and where the component cannot hold with its
+/// preferences, solve_component without them.
+std::vector<int> solve_preferring(const Component& comp, const SolveOptions& options) {
+  const auto preferred = [](const Canonical& c) { return c.preferred; };
+  if (std::none_of(comp.constraints.begin(), comp.constraints.end(), preferred))
+    return solve_component(comp, options);
+  try {
+    return solve_component(comp, options);
+  } catch (const IntervalConflict&) {
+    Component needs = comp;
+    needs.constraints.erase(
+        std::remove_if(needs.constraints.begin(), needs.constraints.end(), preferred),
+        needs.constraints.end());
+    log::info("interval assignment: the component of curve " +
+              std::to_string(comp.curves.front()->id) +
+              " cannot hold with its preferences; solved without them");
+    if (needs.constraints.empty()) {
+      std::vector<int> x;
+      for (const Curve* curve : comp.curves) x.push_back(lone_count(*curve));
+      return x;
+    }
+    return solve_component(needs, options);
+  }
+}
+
 /// Everything solve_component's answer depends on, as text (goals exact,
 /// in hexadecimal floating point).
 std::string memo_key(const Component& comp) {
@@ -385,7 +412,7 @@ std::string memo_key(const Component& comp) {
   for (const Canonical& k : comp.constraints) {
     key << 'k' << static_cast<int>(k.kind) << ' ' << static_cast<int>(k.sense) << ' ' << k.rhs;
     for (auto [id, coeff] : k.terms) key << ' ' << id << '*' << coeff;
-    key << ' ' << k.label << ';';
+    key << ' ' << k.label << (k.preferred ? " preferred" : "") << ';';
   }
   return key.str();
 }
@@ -413,7 +440,7 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     if (canon.terms.empty()) {
       // Its terms cancelled: no curve is to blame, so the conflict names none
       // (the selector then may relax any automatic choice).
-      if (!constant_holds(canon))
+      if (!constant_holds(canon) && !canon.preferred)
         throw IntervalConflict("interval constraints cannot all hold: " + c.label, {});
       continue;
     }
@@ -443,10 +470,10 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     if (options.memo) {
       const std::string key = memo_key(comp);
       const auto known = options.memo->counts.find(key);
-      x = known != options.memo->counts.end() ? known->second : solve_component(comp, options);
+      x = known != options.memo->counts.end() ? known->second : solve_preferring(comp, options);
       options.memo->counts.emplace(key, x);
     } else {
-      x = solve_component(comp, options);
+      x = solve_preferring(comp, options);
     }
     for (size_t j = 0; j < comp.curves.size(); ++j) solution.intervals[comp.curves[j]->id] = x[j];
   }

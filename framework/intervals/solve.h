@@ -51,6 +51,10 @@
 // answer does not depend on the order in which curves or constraints were
 // added. (A run cut short by the time limit depends on machine speed.)
 //
+// Preferences (Constraint::preferred): a component that cannot hold with
+// them is solved again without all of its preferences (not only those in
+// conflict: finding those would cost a deletion filter per solve).
+//
 // Infeasibility: the component's constraints and bound items (hard counts,
 // minima > 1, maxima) are reduced by a deletion filter (Chinneck) to an
 // irreducible infeasible subset when there are fewer than `iis_item_limit`

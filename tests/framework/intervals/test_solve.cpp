@@ -80,6 +80,46 @@ TEST(IntervalSolve, MapFaceMeetsInTheMiddle) {
   EXPECT_NEAR(s.objective, deviation_cost(11, 10) + deviation_cost(11, 12), 1e-9);
 }
 
+TEST(IntervalSolve, APreferenceHoldsWhereTheNeedsAllowIt) {
+  // Curves 1 | 3 opposite on a map face (goals 4, 4) and 2 alone (goal 5):
+  // the preference 2 - 1 >= 3 moves curve 2 off its goal, not the face.
+  IntervalProblem p;
+  p.add_curve(1, 4);
+  p.add_curve(2, 5);
+  p.add_curve(3, 4);
+  p.add_equal({1}, {3}, "surface 1 (map): curves 1 = 3");
+  p.add_preference({{2, 1}, {1, -1}}, Sense::GreaterEqual, 3, "curve 2 three past curve 1");
+  const IntervalSolution s = solve(p);
+  EXPECT_TRUE(satisfies(p, s));
+  EXPECT_EQ(s.intervals.at(1), 4);
+  EXPECT_EQ(s.intervals.at(2), 7);
+}
+
+TEST(IntervalSolve, APreferenceTheNeedsContradictIsDropped) {
+  // 1 = 3 and 3 = 2 + 1 (needs), and the preference 2 >= 1: it cannot hold,
+  // so the answer is the needs' own (4, 3, 4), not an error.
+  IntervalProblem p;
+  p.add_curve(1, 4);
+  p.add_curve(2, 3);
+  p.add_curve(3, 4);
+  p.add_equal({1}, {3});
+  p.add_linear({{3, 1}, {2, -1}}, Sense::Equal, 1, "3 = 2 + 1");
+  p.add_preference({{2, 1}, {1, -1}}, Sense::GreaterEqual, 0, "2 >= 1");
+  const IntervalSolution s = solve(p);
+  EXPECT_EQ(s.intervals.at(1), 4);
+  EXPECT_EQ(s.intervals.at(2), 3);
+  EXPECT_EQ(s.intervals.at(3), 4);
+  // The same as a need is refused, naming it.
+  IntervalProblem q = p;
+  q.add_linear({{2, 1}, {1, -1}}, Sense::GreaterEqual, 0, "2 >= 1 as a need");
+  EXPECT_TRUE(contains(infeasible_message(q), "2 >= 1 as a need"));
+  // A preference whose terms cancel and cannot hold is dropped too.
+  IntervalProblem r;
+  r.add_curve(1, 4);
+  r.add_preference({{1, 1}, {1, -1}}, Sense::GreaterEqual, 1, "0 >= 1");
+  EXPECT_EQ(solve(r).intervals.at(1), 4);
+}
+
 TEST(IntervalSolve, SoftCurveHoldsItsGoal) {
   // As above but curve 1 is Soft (weight 10): x = 10 costs 0.208 (curve 3
   // only); x = 11 costs 10 * 0.101 + 0.092. So 10.
