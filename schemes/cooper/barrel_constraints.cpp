@@ -176,7 +176,10 @@ void add_rows(const std::vector<IntervalRow>& rows, intervals::IntervalProblem& 
     }
     std::vector<intervals::LinearTerm> terms;
     for (const auto& [c, k] : r.terms) terms.push_back({c, k});
-    problem.add_linear(std::move(terms), r.sense, r.rhs, r.label);
+    if (r.preferred)
+      problem.add_preference(std::move(terms), r.sense, r.rhs, r.label);
+    else
+      problem.add_linear(std::move(terms), r.sense, r.rhs, r.label);
   }
 }
 

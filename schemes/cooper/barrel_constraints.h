@@ -28,6 +28,7 @@ struct IntervalRow {
   int rhs = 0;
   bool even = false;  ///< sum(terms) even instead (coefficients 1)
   std::string label;
+  bool preferred = false;  ///< kept where the rest allows (intervals::Constraint::preferred)
 };
 
 /// Layer potentials: per level class, curve coefficients of lambda(class)

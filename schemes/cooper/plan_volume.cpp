@@ -4,6 +4,7 @@
 #include "schemes/cooper/cap_candidates.h"
 #include "schemes/cooper/cap_scheme.h"
 #include "schemes/cooper/coincident_curves.h"
+#include "schemes/cooper/column_order.h"
 #include "schemes/cooper/loop_nodes.h"
 
 #include <algorithm>
@@ -298,6 +299,9 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
     for (const auto& [cap, upper] : p.order.upper) caps.push_back(cap);
     for (IntervalRow& r : coincident_curve_rows(coincident_cap_curves(facts, caps, *p.down),
                                                 volume_name(p.volume) + " (cooper)"))
+      p.rows.push_back(std::move(r));
+    for (IntervalRow& r :
+         column_order_rows(facts, p.lattice, *p.down, volume_name(p.volume) + " (cooper)"))
       p.rows.push_back(std::move(r));
   }
   p.along_pairs = side_along_pairs(facts, p.lattice);

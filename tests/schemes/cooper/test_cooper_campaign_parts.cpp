@@ -480,6 +480,30 @@ TEST(CooperCapStacks, AStackFoldingFromItsFirstPieceIsMeshedFromAnother) {
   expect_meshes("pocket_over_foot_edge", pocket_over_foot_edge, {7.792}, 143);
 }
 
+// A blind hole from the top whose wall a pocket notches at its top and a
+// hole from below notches at its bottom, with a foot (campaign seed 10
+// case 66). The pocket's corner on the wall lies 3 degrees before the
+// lower hole's ceiling's corner, but the interval counts put its column 4
+// columns past it: the ribs ran 90 degrees round the wall in one layer,
+// the pocket's image cut the ceiling, which pave had meshed already, and
+// the run failed at every size. The columns now keep the wall's order
+// (column_order.h); at 3.936 (its own size) imprinting still finds no step
+// in the barrel above.
+void hole_wall_notched_at_both_ends(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {37.89, 58.64, 22.91});
+  wb.cylinder("blind", {15.14, 19.62, 10.18}, {0, 0, 1}, 9.26, 35.64);
+  wb.brick("pocket", {13.59, 21.59, 13.46}, {11.02, 15.14, 32.36});
+  wb.cylinder("foot", {23.19, 25.33, -5.74}, {0, 0, 1}, 3.49, 5.74);
+  wb.cylinder("from_below", {10.66, 22.84, -22.91}, {0, 0, 1}, 6.3, 34.42);
+  wb.fuse("body", {"block", "foot"});
+  wb.cut("part", {"body", "blind", "pocket", "from_below"});
+}
+
+TEST(CooperSideColumns, AWallNotchedAtBothEndsKeepsItsCornersColumnsInOrder) {
+  expect_meshes("hole_wall_notched_at_both_ends", hole_wall_notched_at_both_ends, {3.0, 1.968},
+                1066);
+}
+
 // A square boss cut by a blind hole from the top whose floor's rim crosses
 // a foot's (campaign seed 7 case 39). At size 4.3065 imprinting splits a
 // subcap again and again; it gave up after 10,000 steps, 7.7 s. It now
