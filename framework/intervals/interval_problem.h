@@ -51,9 +51,10 @@ struct Constraint {
   Sense sense = Sense::Equal;  ///< Linear only
   int rhs = 0;                 ///< Linear only
   std::string label;           ///< "surface 7 (map): curves 1+3 = 2+4"
-  /// A preference, not a need: solve() drops the preferences of a component
-  /// that cannot hold with them (the order of a wall's corners, which the
-  /// wall's geometry suggests and a sampled curve can misjudge).
+  /// A preference, not a need: solve() applies it only where the needs'
+  /// answer breaks it, and leaves it out where it cannot hold with them (the
+  /// order of a wall's corners, which the wall's geometry suggests and a
+  /// sampled curve can misjudge).
   bool preferred = false;
 };
 

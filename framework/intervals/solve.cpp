@@ -375,29 +375,27 @@ std::vector<int> solve_component(const Component& comp, const SolveOptions& opti
   return x;
 }
 
-/// solve_component, and where the component cannot hold with its
-/// preferences, solve_component without them.
-std::vector<int> solve_preferring(const Component& comp, const SolveOptions& options) {
-  const auto preferred = [](const Canonical& c) { return c.preferred; };
-  if (std::none_of(comp.constraints.begin(), comp.constraints.end(), preferred))
-    return solve_component(comp, options);
-  try {
-    return solve_component(comp, options);
-  } catch (const IntervalConflict&) {
-    Component needs = comp;
-    needs.constraints.erase(
-        std::remove_if(needs.constraints.begin(), needs.constraints.end(), preferred),
-        needs.constraints.end());
-    log::info("interval assignment: the component of curve " +
-              std::to_string(comp.curves.front()->id) +
-              " cannot hold with its preferences; solved without them");
-    if (needs.constraints.empty()) {
-      std::vector<int> x;
-      for (const Curve* curve : comp.curves) x.push_back(lone_count(*curve));
-      return x;
-    }
-    return solve_component(needs, options);
-  }
+std::string memo_key(const Component& comp);
+
+/// Whether a preference holds for the counts (curve id -> count).
+bool holds(const Canonical& c, const std::map<int, int>& counts) {
+  long sum = 0;
+  for (auto [id, coeff] : c.terms) sum += static_cast<long>(coeff) * counts.at(id);
+  if (c.sense == Sense::Equal) return sum == c.rhs;
+  return c.sense == Sense::LessEqual ? sum <= c.rhs : sum >= c.rhs;
+}
+
+/// solve_component through the memo, if any.
+std::vector<int> solve_memo(Component& comp, const SolveOptions& options) {
+  std::sort(comp.constraints.begin(), comp.constraints.end(),
+            [](const Canonical& a, const Canonical& b) { return a.key() < b.key(); });
+  if (!options.memo) return solve_component(comp, options);
+  const std::string key = memo_key(comp);
+  const auto known = options.memo->counts.find(key);
+  std::vector<int> x =
+      known != options.memo->counts.end() ? known->second : solve_component(comp, options);
+  options.memo->counts.emplace(key, x);
+  return x;
 }
 
 /// Everything solve_component's answer depends on, as text (goals exact,
@@ -428,9 +426,10 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
     by_index.push_back(&curve);
   }
 
-  // Validate, canonicalise, and link curves named by the same constraint.
+  // Validate, canonicalise, and link curves named by the same constraint
+  // (the needs; preferences come after, where the needs' answer breaks them).
   Components links(by_index.size());
-  std::vector<Canonical> constraints;
+  std::vector<Canonical> constraints, preferences;
   for (const Constraint& c : problem.constraints()) {
     for (const LinearTerm& t : c.terms)
       if (!problem.has_curve(t.curve_id))
@@ -442,6 +441,10 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
       // (the selector then may relax any automatic choice).
       if (!constant_holds(canon) && !canon.preferred)
         throw IntervalConflict("interval constraints cannot all hold: " + c.label, {});
+      continue;
+    }
+    if (canon.preferred) {
+      preferences.push_back(std::move(canon));
       continue;
     }
     for (auto [id, coeff] : canon.terms)
@@ -464,18 +467,56 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
       for (const Curve* curve : comp.curves) solution.intervals[curve->id] = lone_count(*curve);
       continue;
     }
-    std::sort(comp.constraints.begin(), comp.constraints.end(),
-              [](const Canonical& a, const Canonical& b) { return a.key() < b.key(); });
-    std::vector<int> x;
-    if (options.memo) {
-      const std::string key = memo_key(comp);
-      const auto known = options.memo->counts.find(key);
-      x = known != options.memo->counts.end() ? known->second : solve_preferring(comp, options);
-      options.memo->counts.emplace(key, x);
-    } else {
-      x = solve_preferring(comp, options);
-    }
+    const std::vector<int> x = solve_memo(comp, options);
     for (size_t j = 0; j < comp.curves.size(); ++j) solution.intervals[comp.curves[j]->id] = x[j];
+  }
+
+  // Preferences the needs' answer breaks: the components they touch are
+  // solved again as one, with the needs and every preference among their
+  // curves; where that cannot hold, the needs' answer stays. Preferences
+  // that hold already change nothing (a row CBC does not need still moves
+  // its answer within the optimality gap).
+  Components groups = links;
+  bool broken = false;
+  for (const Canonical& c : preferences) {
+    if (holds(c, solution.intervals)) continue;
+    broken = true;
+    for (auto [id, coeff] : c.terms) groups.join(index_of[c.terms.front().first], index_of[id]);
+  }
+  if (broken) {
+    std::map<int, Component> regrouped;
+    std::set<int> touched;
+    for (const Canonical& c : preferences) {
+      if (!holds(c, solution.intervals))
+        touched.insert(groups.find(index_of[c.terms.front().first]));
+    }
+    for (size_t i = 0; i < by_index.size(); ++i) {
+      const int g = groups.find(static_cast<int>(i));
+      if (touched.count(g)) regrouped[g].curves.push_back(by_index[i]);
+    }
+    for (auto& [root, comp] : components) {
+      for (const Canonical& c : comp.constraints) {
+        const int g = groups.find(index_of[c.terms.front().first]);
+        if (touched.count(g)) regrouped[g].constraints.push_back(c);
+      }
+    }
+    for (const Canonical& c : preferences) {
+      const int g = groups.find(index_of[c.terms.front().first]);
+      bool inside = touched.count(g) > 0;
+      for (auto [id, coeff] : c.terms) inside = inside && groups.find(index_of[id]) == g;
+      if (inside) regrouped[g].constraints.push_back(c);
+    }
+    for (auto& [root, comp] : regrouped) {
+      try {
+        const std::vector<int> x = solve_memo(comp, options);
+        for (size_t j = 0; j < comp.curves.size(); ++j)
+          solution.intervals[comp.curves[j]->id] = x[j];
+      } catch (const IntervalConflict&) {
+        log::info("interval assignment: the preferences on the curves of curve " +
+                  std::to_string(comp.curves.front()->id) +
+                  " cannot hold with the needs; left out");
+      }
+    }
   }
 
   for (const auto& [id, count] : solution.intervals) {

@@ -51,9 +51,13 @@
 // answer does not depend on the order in which curves or constraints were
 // added. (A run cut short by the time limit depends on machine speed.)
 //
-// Preferences (Constraint::preferred): a component that cannot hold with
-// them is solved again without all of its preferences (not only those in
-// conflict: finding those would cost a deletion filter per solve).
+// Preferences (Constraint::preferred) take no part in the components: the
+// needs are solved first, and only where their answer breaks a preference
+// are the components it touches solved again as one, with the needs and the
+// preferences among their curves; where that cannot hold, the needs' answer
+// stays. A preference the answer keeps anyway changes nothing (an extra row
+// moves CBC's answer within its optimality gap, and a part that meshed
+// failed so).
 //
 // Infeasibility: the component's constraints and bound items (hard counts,
 // minima > 1, maxima) are reduced by a deletion filter (Chinneck) to an
