@@ -680,7 +680,7 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     }
   }
   if (!gap.empty() && gap_leaves_subcap(e, gap, a.loops.front(), bi) &&
-      seam_gap_to_arc(e, gap, x, y, common))
+      (seam_gap_to_arc(e, gap, x, y, common) || gap_crossing(e, a, x, gap, y, bi)))
     return true;
   const Undo undo = undo_point();
   Loop fresh;  // the gap's nodes without a rib yet (a run through a hole has some)

@@ -130,6 +130,12 @@ class Imprinter {
   };
   Undo undo_point() const;
   void roll_back(int e, const Loop& fresh, const Undo& undo);
+  // sec. 5.3: the image x -> gap -> y of a gap of a, inside subcap bi of
+  // the opposing end at both ends, leaves it across one of its loops and
+  // comes back: both crossings are combined onto a node of the gap and a
+  // free node of that loop, the lens kept even (imprint_gap_crossing.cpp).
+  // False, nothing changed, for any other crossing.
+  bool gap_crossing(int e, const Subcap& a, int x, const Loop& gap, int y, size_t bi);
   // A gap node lies outside subcap bi of the opposing end by more than a
   // tenth of its edges (`around` is the gap's loop, for their length).
   bool gap_leaves_subcap(int e, const Loop& gap, const Loop& around, size_t bi);

@@ -504,6 +504,26 @@ TEST(CooperSideColumns, AWallNotchedAtBothEndsKeepsItsCornersColumnsInOrder) {
                 1066);
 }
 
+// A boss on the top, a foot below overhanging the block's edge, and a
+// blind hole from the top through the boss's rim (campaign seed 11 case
+// 93). The boss's rim, from the hole floor's rim down to the bottom,
+// leaves the bottom's subcap across the foot's rim and comes back: it was
+// subtracted from the bottom alone, its piece crossed the foot's rim and
+// meshing the bottom failed at every size ("loop edges intersect"). The
+// crossings are now combined onto nodes of both rims (imprint_gap_crossing.cpp).
+void boss_rim_across_a_foot(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {42.24, 49.86, 31.8});
+  wb.cylinder("foot", {8.71, 38.12, -14.91}, {0, 0, 1}, 9.68, 14.91);
+  wb.cylinder("hole", {18.93, 23.21, 14.82}, {0, 0, 1}, 2.59, 48.78);
+  wb.cylinder("boss", {13.26, 28.18, 31.8}, {0, 0, 1}, 6.71, 12.39);
+  wb.fuse("body", {"block", "foot", "boss"});
+  wb.cut("part", {"body", "hole"});
+}
+
+TEST(CooperImprintSlivers, ARimLeavingTheSubcapItStartsInAndComingBackIsIntersected) {
+  expect_meshes("boss_rim_across_a_foot", boss_rim_across_a_foot, {11.642, 5.821, 2.91}, 1193);
+}
+
 // A square boss cut by a blind hole from the top whose floor's rim crosses
 // a foot's (campaign seed 7 case 39). At size 4.3065 imprinting splits a
 // subcap again and again; it gave up after 10,000 steps, 7.7 s. It now
