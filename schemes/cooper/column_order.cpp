@@ -1,5 +1,7 @@
 #include "schemes/cooper/column_order.h"
 
+#include "schemes/cooper/wall_walk.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -58,61 +60,36 @@ std::vector<IntervalRow> column_order_rows(const VolumeFacts& facts, const SideL
     const FaceFact* f = facts.face(face);
     if (!f || f->loops.size() != 1) continue;
     const auto& loop = f->loops.front();
-    if (f->angles.size() != loop.size()) continue;
-    size_t first = loop.size();
-    for (size_t k = 0; k < loop.size() && first == loop.size(); ++k) {
-      if (lattice.along.count(loop[k].curve)) first = k;
-    }
-    if (first == loop.size()) continue;
-    // A corner seen along the sweep is its column's foot only on a wall
-    // parallel to the sweep: the curves between its rims run along it.
-    bool upright = true;
-    for (const UseFact& u : loop) {
-      if (lattice.along.count(u.curve)) continue;
-      const CurveFact& c = facts.curves.at(u.curve);
-      const geom::Vec3 foot = facts.vertices.at(c.start);
-      for (const geom::Vec3& y : c.samples) {
-        const geom::Vec3 e = y - foot;
-        upright = upright && (e - e.dot(d) * d).norm() <= tol;
-      }
-    }
-    if (!upright) continue;
-    // The walk of column_spacing.cpp: the direction turns by a quarter at
-    // every corner, rims go +-i by their counts (here as coefficients).
+    const std::vector<WallStep> walk = wall_walk(*f, lattice);
+    if (walk.empty() || !upright_wall(facts, *f, lattice, d, tol)) continue;
+    // Rims go +-i by their counts (here as coefficients), and as far along
+    // the wall as they are long.
     std::vector<Corner> corners;
     std::map<int, int> column;
     double along = 0, perimeter = 0;
-    int dir = 0;  // 0: +i, 1: +j, 2: -i, 3: -j
-    bool ok = true, was_along = false;
-    for (size_t m = 0; m < loop.size() && ok; ++m) {
-      const size_t k = (first + m) % loop.size();
-      if (m > 0) {
-        const long turn = std::lround((180.0 - f->angles[k]) / 90.0);
-        dir = static_cast<int>(((dir + turn) % 4 + 4) % 4);
-      }
-      const UseFact& u = loop[k];
+    bool was_along = false;
+    for (size_t m = 0; m < walk.size(); ++m) {
+      const UseFact& u = loop[walk[m].use];
       const CurveFact& c = facts.curves.at(u.curve);
-      const bool is_along = lattice.along.count(u.curve) > 0;
-      ok = is_along == (dir % 2 == 0);
-      if (!ok) break;
-      if (m == 0 || is_along != was_along)
+      if (m == 0 || walk[m].along != was_along)
         corners.push_back({u.forward ? c.start : c.end, column, along});
-      if (is_along) {
-        const int sign = dir == 0 ? 1 : -1;
+      if (walk[m].along) {
+        const int sign = walk[m].dir == 0 ? 1 : -1;
         if ((column[u.curve] += sign) == 0) column.erase(u.curve);
         const double l = flat_length(c, d);
         along += sign * l;
         perimeter += l;
       }
-      was_along = is_along;
+      was_along = walk[m].along;
     }
     // Back at the start: the rims seen along the sweep must close (a wall
     // whose rims differ in length is no wall parallel to the sweep).
-    if (!ok || std::abs(along) > 0.02 * perimeter) continue;
+    if (std::abs(along) > 0.02 * perimeter) continue;
     corners.push_back({corners.front().vertex, column, along});
     // Corners closer than the rims' closing error have no order to keep.
     const double apart = std::max({tol, 1e-3 * perimeter, 2 * std::abs(along)});
     std::vector<IntervalRow> rows;
+    bool ok = true;
     for (size_t a = 0; a < corners.size() && ok; ++a) {
       for (size_t b = a + 1; b < corners.size() && ok; ++b) {
         const double gap = corners[b].along - corners[a].along;

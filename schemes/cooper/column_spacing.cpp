@@ -1,6 +1,7 @@
 #include "schemes/cooper/column_spacing.h"
 
 #include "schemes/cooper/level_spacing.h"
+#include "schemes/cooper/wall_walk.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,16 +103,11 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
   for (int face : lattice.sides) {
     const FaceFact* f = facts.face(face);
     if (!f || f->loops.size() != 1) continue;
-    // Lattice columns of the loop's vertices: walking the loop, the direction
-    // turns by a quarter at every corner (90 degrees: one way, 270: the
-    // other, 180: straight on); curves running along go +-i by their counts.
+    // Lattice columns of the loop's vertices (wall_walk.h): curves running
+    // along go +-i by their counts.
     const auto& loop = f->loops.front();
-    if (f->angles.size() != loop.size()) continue;
-    size_t first = loop.size();
-    for (size_t k = 0; k < loop.size() && first == loop.size(); ++k) {
-      if (lattice.along.count(loop[k].curve)) first = k;
-    }
-    if (first == loop.size()) continue;
+    const std::vector<WallStep> walk = wall_walk(*f, lattice);
+    if (walk.empty()) continue;
     // A side closed round the sweep (a boss's cylinder, its seam a curve
     // across the rims) has periodic columns: a rim that is one closed curve
     // of n intervals meets its own vertex again n columns on.
@@ -138,18 +134,13 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
     std::map<int, std::pair<long, long>> start_col;  // along curve -> (i at its start, step)
     bool ok = true;
     long i = 0;
-    int dir = 0;  // 0: +i, 1: +j, 2: -i, 3: -j
-    for (size_t m = 0; m < loop.size() && ok; ++m) {
-      const size_t k = (first + m) % loop.size();
-      if (m > 0) {
-        const long turn = std::lround((180.0 - f->angles[k]) / 90.0);
-        dir = static_cast<int>(((dir + turn) % 4 + 4) % 4);
-      }
-      const UseFact& u = loop[k];
+    for (const WallStep& step : walk) {
+      const UseFact& u = loop[step.use];
       const CurveFact& c = facts.curves.at(u.curve);
       const int from = u.forward ? c.start : c.end;
-      const bool is_along = lattice.along.count(u.curve) > 0;
-      ok = ok && counts.count(u.curve) && is_along == (dir % 2 == 0);
+      const bool is_along = step.along;
+      const int dir = step.dir;
+      ok = ok && counts.count(u.curve);
       if (!ok) break;
       const auto [it, added] = column.emplace(from, i);
       if (!added && period == 0 && seamed && it->second != i) period = std::abs(it->second - i);
@@ -165,14 +156,7 @@ std::map<int, mesh::SizeFunction> column_spacing(const VolumeFacts& facts,
     // Columns run along the sweep only where the curves between the rings
     // do (a wall parallel to the axis); on a slanted or twisted side a
     // vertex seen along the sweep is no column's foot.
-    bool upright = true;
-    for (const UseFact& u : loop) {
-      if (lattice.along.count(u.curve)) continue;
-      const CurveFact& c = facts.curves.at(u.curve);
-      const geom::Vec3 foot = flat(facts.vertices.at(c.start));
-      for (const geom::Vec3& y : c.samples) upright = upright && (flat(y) - foot).norm() <= tol;
-    }
-    if (!upright) continue;
+    if (!upright_wall(facts, *f, lattice, d, tol)) continue;
     // A rectangle whose sides are split only at straight (180-degree)
     // vertices is one lattice rectangle: its columns are where the walk puts
     // them, however far from even spacing (a boss overhanging a wall by a

@@ -1,6 +1,7 @@
 // The columns of a notched wall's corners keep the wall's order
 // (column_order.h): rows on the rims' interval counts, from plain facts.
 #include "schemes/cooper/column_order.h"
+#include "schemes/cooper/wall_walk.h"
 
 #include <gtest/gtest.h>
 
@@ -96,6 +97,28 @@ TEST(CooperColumnOrder, TheSweepsDirectionEitherWayGivesTheSameRows) {
   const auto down = column_order_rows(w.facts, w.lattice, Vec3(0, 0, -1), "v");
   ASSERT_EQ(up.size(), down.size());
   for (size_t k = 0; k < up.size(); ++k) EXPECT_EQ(up[k].terms, down[k].terms);
+}
+
+TEST(CooperWallWalk, TurnsAtEveryCornerFromTheFirstRimAlong) {
+  const NotchedWall w = notched_wall();
+  const std::vector<WallStep> walk = wall_walk(w.facts.faces.front(), w.lattice);
+  ASSERT_EQ(walk.size(), 12u);
+  // Bottom +i, up, notch +i, down, +i, up the right edge, top -i, down
+  // into the notch, its floor -i, up, -i, down the left edge.
+  const std::vector<int> dirs = {0, 1, 0, 3, 0, 1, 2, 3, 2, 1, 2, 3};
+  for (size_t k = 0; k < walk.size(); ++k) {
+    EXPECT_EQ(walk[k].use, k);
+    EXPECT_EQ(walk[k].dir, dirs[k]) << k;
+    EXPECT_EQ(walk[k].along, k % 2 == 0) << k;
+  }
+  EXPECT_TRUE(upright_wall(w.facts, w.facts.faces.front(), w.lattice, Vec3(0, 0, 1), 1e-6));
+  const NotchedWall slanted = notched_wall(1.0);
+  EXPECT_FALSE(upright_wall(slanted.facts, slanted.facts.faces.front(), slanted.lattice,
+                            Vec3(0, 0, 1), 1e-6));
+  // A rim read as a curve between the rims: the roles disagree, no walk.
+  NotchedWall wrong = notched_wall();
+  wrong.lattice.along.erase(3);
+  EXPECT_TRUE(wall_walk(wrong.facts.faces.front(), wrong.lattice).empty());
 }
 
 TEST(CooperColumnOrder, ASlantedWallGivesNoRows) {
