@@ -477,19 +477,16 @@ IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& optio
   // that hold already change nothing (a row CBC does not need still moves
   // its answer within the optimality gap).
   Components groups = links;
-  bool broken = false;
+  std::vector<const Canonical*> broken;
   for (const Canonical& c : preferences) {
     if (holds(c, solution.intervals)) continue;
-    broken = true;
+    broken.push_back(&c);
     for (auto [id, coeff] : c.terms) groups.join(index_of[c.terms.front().first], index_of[id]);
   }
-  if (broken) {
+  if (!broken.empty()) {
     std::map<int, Component> regrouped;
     std::set<int> touched;
-    for (const Canonical& c : preferences) {
-      if (!holds(c, solution.intervals))
-        touched.insert(groups.find(index_of[c.terms.front().first]));
-    }
+    for (const Canonical* c : broken) touched.insert(groups.find(index_of[c->terms.front().first]));
     for (size_t i = 0; i < by_index.size(); ++i) {
       const int g = groups.find(static_cast<int>(i));
       if (touched.count(g)) regrouped[g].curves.push_back(by_index[i]);
