@@ -14,6 +14,7 @@
 #include "schemes/submap/hole_offsets.h"
 #include "schemes/submap/lattice.h"
 #include "schemes/submap/submap_plan.h"
+#include "schemes/submap/corner_untangle.h"
 #include "schemes/submap/untangle.h"
 #include "schemes/submap/uv_chart.h"
 
@@ -329,9 +330,17 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
     if (mode == FillInterior::Blocks || block || !no_other) {
       // Last, on a sweep's side: the nodes around the fold move, the rest
       // stays (untangle.h; a lug's cone on its wall, plan => mesh campaign
-      // seed 7 case 33).
+      // seed 7 case 33). Where no node alone can mend its worst quad, the
+      // corners' areas are untangled first and the quads improved again
+      // (corner_untangle.h; a lug's cone over a graded edge, seed 11 case 66).
       if (no_other && untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0)
         return out;
+      if (no_other) {
+        // The quads' untangling after it decides: it may lift the few
+        // corners left tangled.
+        untangle_corners(out.coords, normals, fixed, out.quads, project);
+        if (untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0) return out;
+      }
       fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +
                     "); the interval counts do not fit the face's shape");
     }

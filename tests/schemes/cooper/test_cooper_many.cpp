@@ -746,6 +746,19 @@ TEST(CooperMany, LugOverhangingItsWallOverASteepConeMeshes) {
                                 "lug overhanging its wall over a 40-degree cone", 0.06);
 }
 
+// A lug over a block's corner, its cone's edges one row of the wall's
+// lattice, beside the block's corner edge graded towards the lug (the plan
+// => mesh campaign, seed 11 case 66). The fill folded at every size (4.758
+// to 1.19): the corner edge's row under the cone's edge lay level with it,
+// and no node alone could mend its worst quad. Untangling the corners' areas
+// first (submap/corner_untangle.h) meshes it; the corner below the cone's
+// floor stays poor (0.089 at 1.19).
+TEST(CooperMany, LugOverABlockCornerOverAGradedEdgeMeshes) {
+  for (double size : {4.758, 2.379, 1.19})
+    expect_lug_over_cone_meshes({31.23, 25.76, 28.71}, 6.74, 9.59, 7.22, 4.89, 3.33, size,
+                                "lug over a block's corner over a graded edge", 0.05);
+}
+
 /// Area of the lens two circles of radii r0 and r1, centres d apart, share.
 double lens_area(double r0, double r1, double d) {
   return r0 * r0 * std::acos((d * d + r0 * r0 - r1 * r1) / (2 * d * r0)) +
