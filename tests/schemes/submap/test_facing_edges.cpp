@@ -86,5 +86,117 @@ TEST(FacingEdges, ValidCountsAreUnchanged) {
   EXPECT_EQ(a.intervals, b.intervals);
 }
 
+// A face that is two strips meeting along a short piece of one level: the
+// lower strip's right edge comes down from that level where the upper
+// strip's left edge goes up from it, 0.5 (or 6 degrees) further left. The
+// face runs on both sides of the piece between their ends, so those ends
+// must not share a lattice point: the counts along the bottom and along the
+// lower strip's top (equal lengths but for that piece) must differ.
+struct Strips {
+  geom::Model model;
+  int surface = 0;
+  int bottom = 0;  // the lower strip's bottom curve
+  int step = 0;    // the lower strip's top curve, left of the upper strip
+};
+
+// The face's curves with goals at size 2, hard counts on two of them.
+intervals::IntervalProblem strips_problem(const Strips& f, int bottom, int step, bool facing) {
+  intervals::IntervalProblem p;
+  const SubmapPlan plan = plan_submap(f.model, f.surface, {});
+  EXPECT_TRUE(plan.ok) << plan.why;
+  for (const auto& u : plan.loops.front().uses) {
+    const geom::Curve& c = f.model.curve(u.curve);
+    if (u.curve == f.bottom) {
+      p.add_curve(u.curve, c.length / 2, intervals::Firmness::Hard, bottom);
+    } else if (u.curve == f.step) {
+      p.add_curve(u.curve, c.length / 2, intervals::Firmness::Hard, step);
+    } else {
+      p.add_curve(u.curve, c.length / 2);
+    }
+  }
+  add_submap_constraints(f.surface, plan, p);
+  if (facing) add_facing_edge_constraints(f.model, f.surface, plan.loops.front(), p);
+  return p;
+}
+
+// The curve of f's surface whose two ends satisfy `at`.
+template <class At>
+int curve_with_ends(const geom::Model& model, int surface, At at) {
+  for (const auto& loop : model.surface(surface).loops) {
+    for (const auto& use : loop.uses) {
+      const geom::Curve& c = model.curve(use.curve);
+      if (at(model.vertex(c.start_vertex).point, model.vertex(c.end_vertex).point)) return c.id;
+    }
+  }
+  return 0;
+}
+
+TEST(FacingEdges, StripsMeetingAtOneLevelKeepTheirEndsApartOnAPlane) {
+  occ::Workbench wb;
+  wb.prism("z",
+           {{0, 0, 0},
+            {5, 0, 0},
+            {5, 0, 5},
+            {10, 0, 5},
+            {10, 0, 10},
+            {4.5, 0, 10},
+            {4.5, 0, 5},
+            {0, 0, 5}},
+           {}, {0, 1, 0});
+  Strips f{wb.build_model()};
+  for (const auto& s : f.model.surfaces()) {
+    if (std::abs(s.box.max.y()) < 1e-9 && std::abs(s.box.min.y()) < 1e-9) f.surface = s.id;
+  }
+  ASSERT_GT(f.surface, 0);
+  const auto level = [](double z) {
+    return [z](const geom::Vec3& a, const geom::Vec3& b) {
+      return std::abs(a.z() - z) < 1e-9 && std::abs(b.z() - z) < 1e-9 &&
+             std::min(a.x(), b.x()) < 1e-9;
+    };
+  };
+  f.bottom = curve_with_ends(f.model, f.surface, level(0));
+  f.step = curve_with_ends(f.model, f.surface, level(5));
+  ASSERT_GT(f.bottom, 0);
+  ASSERT_GT(f.step, 0);
+  EXPECT_TRUE(feasible(strips_problem(f, 2, 2, false)));  // the balance alone lets them meet
+  EXPECT_FALSE(feasible(strips_problem(f, 2, 2, true)));
+  EXPECT_TRUE(feasible(strips_problem(f, 3, 2, true)));
+  EXPECT_FALSE(feasible(strips_problem(f, 2, 3, true)));  // the ends crossed over
+}
+
+// The same on a cylinder (radius 5): the strips are a tube's quarter from 0
+// to 90 degrees under z = 5 and from 84 to 180 degrees above it; its outer
+// face's parameters, unwrapped, are the picture.
+TEST(FacingEdges, StripsMeetingAtOneLevelKeepTheirEndsApartOnACylinder) {
+  occ::Workbench wb;
+  const std::vector<geom::Vec3> lower = {{3, 0, 0}, {5, 0, 0}, {5, 0, 5}, {3, 0, 5}};
+  const std::vector<geom::Vec3> upper = {{3, 0, 5}, {5, 0, 5}, {5, 0, 10}, {3, 0, 10}};
+  wb.revolve("lower", lower, {0, 0, 0}, {0, 0, 1}, 90);
+  wb.revolve("upper", upper, {0, 0, 0}, {0, 0, 1}, 96);
+  wb.rotate("upper", {0, 0, 0}, {0, 0, 1}, 84);
+  wb.fuse("tube", {"lower", "upper"});
+  Strips f{wb.build_model()};
+  for (const auto& s : f.model.surfaces()) {
+    if (s.geometry && s.geometry->type() == geom::SurfaceType::Cylinder && s.box.max.y() > 4.9)
+      f.surface = s.id;
+  }
+  ASSERT_GT(f.surface, 0);
+  const auto level = [](double z) {
+    return [z](const geom::Vec3& a, const geom::Vec3& b) {
+      const auto at_start = [](const geom::Vec3& p) { return std::abs(p.y()) < 1e-9 && p.x() > 0; };
+      return std::abs(a.z() - z) < 1e-9 && std::abs(b.z() - z) < 1e-9 &&
+             (at_start(a) || at_start(b));
+    };
+  };
+  f.bottom = curve_with_ends(f.model, f.surface, level(0));
+  f.step = curve_with_ends(f.model, f.surface, level(5));
+  ASSERT_GT(f.bottom, 0);
+  ASSERT_GT(f.step, 0);
+  // Lengths 7.85 and 7.33: 4 intervals each would put the ends together.
+  EXPECT_TRUE(feasible(strips_problem(f, 4, 4, false)));
+  EXPECT_FALSE(feasible(strips_problem(f, 4, 4, true)));
+  EXPECT_TRUE(feasible(strips_problem(f, 4, 3, true)));
+}
+
 }  // namespace
 }  // namespace cooperage::submap
