@@ -10,11 +10,11 @@
 #include <unordered_map>
 
 #include "framework/core/error.h"
+#include "framework/mesh/corner_untangle.h"
 #include "schemes/submap/directions.h"
 #include "schemes/submap/hole_offsets.h"
 #include "schemes/submap/lattice.h"
 #include "schemes/submap/submap_plan.h"
-#include "schemes/submap/corner_untangle.h"
 #include "schemes/submap/untangle.h"
 #include "schemes/submap/uv_chart.h"
 
@@ -338,7 +338,7 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
       if (no_other) {
         // The quads' untangling after it decides: it may lift the few
         // corners left tangled.
-        untangle_corners(out.coords, normals, fixed, out.quads, project);
+        mesh::untangle_corners(out.coords, normals, fixed, out.quads, project);
         if (untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0) return out;
       }
       fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +

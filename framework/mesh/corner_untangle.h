@@ -12,9 +12,17 @@
 // case 66).
 #pragma once
 
-#include "schemes/submap/smooth.h"
+#include "framework/geometry/evaluators.h"
+#include "framework/mesh/mesh_db.h"
 
-namespace cooperage::submap {
+#include <functional>
+#include <vector>
+
+namespace cooperage::mesh {
+
+/// Projection of a point onto the surface (closest point and unit normal);
+/// `node` is the node being moved (a local search may start from it).
+using CornerProjector = std::function<geom::SurfaceProjection(const Vec3& point, size_t node)>;
 
 struct CornerUntangleOptions {
   int sweeps = 100;          ///< passes over the nodes of tangled corners
@@ -31,7 +39,7 @@ struct CornerUntangleOptions {
 /// \param[in] quads        elements over x, counter-clockwise about the normal
 /// \param[in] project      projection onto the surface
 bool untangle_corners(std::vector<Vec3>& x, std::vector<Vec3>& normals,
-                      const std::vector<bool>& fixed, const std::vector<mesh::Quad>& quads,
-                      const Projector& project, const CornerUntangleOptions& options = {});
+                      const std::vector<bool>& fixed, const std::vector<Quad>& quads,
+                      const CornerProjector& project, const CornerUntangleOptions& options = {});
 
-}  // namespace cooperage::submap
+}  // namespace cooperage::mesh

@@ -1,4 +1,4 @@
-#include "schemes/submap/corner_untangle.h"
+#include "framework/mesh/corner_untangle.h"
 
 #include <Eigen/Geometry>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <set>
 
-namespace cooperage::submap {
+namespace cooperage::mesh {
 namespace {
 
 // One corner's area as an affine function of the moving node's offset
@@ -18,7 +18,7 @@ struct Affine {
 };
 
 // Signed area of quad q's corner k: the edges to its two neighbours.
-double corner_area(const std::vector<Vec3>& x, const mesh::Quad& q, size_t k, const Vec3& n) {
+double corner_area(const std::vector<Vec3>& x, const Quad& q, size_t k, const Vec3& n) {
   const Vec3& p = x[static_cast<size_t>(q[k])];
   const Vec3& next = x[static_cast<size_t>(q[(k + 1) % 4])];
   const Vec3& prev = x[static_cast<size_t>(q[(k + 3) % 4])];
@@ -35,8 +35,8 @@ double shortfall(const std::vector<Affine>& corners, double beta, double s, doub
 }  // namespace
 
 bool untangle_corners(std::vector<Vec3>& x, std::vector<Vec3>& normals,
-                      const std::vector<bool>& fixed, const std::vector<mesh::Quad>& quads,
-                      const Projector& project, const CornerUntangleOptions& options) {
+                      const std::vector<bool>& fixed, const std::vector<Quad>& quads,
+                      const CornerProjector& project, const CornerUntangleOptions& options) {
   const size_t n = x.size();
   std::vector<std::vector<int>> incident(n);
   for (size_t q = 0; q < quads.size(); ++q)
@@ -44,26 +44,26 @@ bool untangle_corners(std::vector<Vec3>& x, std::vector<Vec3>& normals,
       incident[static_cast<size_t>(quads[q][k])].push_back(static_cast<int>(q));
   // A corner's normal: the mean of its quad's node normals (one plane per
   // quad, so the three corners a node touches agree).
-  auto quad_normal = [&](const mesh::Quad& q) {
+  auto quad_normal = [&](const Quad& q) {
     Vec3 m = Vec3::Zero();
     for (int v : q) m += normals[static_cast<size_t>(v)];
     return m.normalized();
   };
   double total = 0.0;
-  for (const mesh::Quad& q : quads)
+  for (const Quad& q : quads)
     for (size_t k = 0; k < 4; ++k) total += std::abs(corner_area(x, q, k, quad_normal(q)));
   if (quads.empty() || !(total > 0.0)) return quads.empty();
   const double beta = options.beta_ratio * total / (4.0 * static_cast<double>(quads.size()));
 
   auto worst_corner = [&] {
     double m = std::numeric_limits<double>::max();
-    for (const mesh::Quad& q : quads)
+    for (const Quad& q : quads)
       for (size_t k = 0; k < 4; ++k) m = std::min(m, corner_area(x, q, k, quad_normal(q)));
     return m;
   };
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     std::set<int> tangled;  // free nodes of quads with a corner below beta
-    for (const mesh::Quad& q : quads) {
+    for (const Quad& q : quads) {
       const Vec3 nq = quad_normal(q);
       bool low = false;
       for (size_t k = 0; k < 4; ++k) low = low || corner_area(x, q, k, nq) < beta;
@@ -82,7 +82,7 @@ bool untangle_corners(std::vector<Vec3>& x, std::vector<Vec3>& normals,
       std::vector<Affine> corners;
       const Vec3 origin = x[v];
       for (int qi : incident[v]) {
-        const mesh::Quad& q = quads[static_cast<size_t>(qi)];
+        const Quad& q = quads[static_cast<size_t>(qi)];
         const Vec3 nq = quad_normal(q);
         size_t at = 0;
         while (static_cast<size_t>(q[at]) != v) ++at;
@@ -140,4 +140,4 @@ bool untangle_corners(std::vector<Vec3>& x, std::vector<Vec3>& normals,
   return worst_corner() > 0.0;
 }
 
-}  // namespace cooperage::submap
+}  // namespace cooperage::mesh
