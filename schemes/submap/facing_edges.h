@@ -25,7 +25,10 @@ namespace cooperage::submap {
 /// along one axis that face each other or meet at one level. Adds nothing
 /// unless the loop's picture is exact (every curve straight and the loop in
 /// one plane, or every curve iso-parametric and the unwrapped loop closed),
-/// nor for loops of more than 64 curves.
+/// nor for loops of more than 64 curves. Rows asking a single count to be at
+/// least 1 are left out. On a plane the rows are constraints; off a plane
+/// they are preferences (IntervalProblem::add_preference), so that answers
+/// keeping them stay as they were.
 void add_facing_edge_constraints(const geom::Model& model, int surface_id, const LoopPlan& loop,
                                  intervals::IntervalProblem& problem);
 
