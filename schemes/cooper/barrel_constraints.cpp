@@ -1,6 +1,7 @@
 #include "schemes/cooper/barrel_constraints.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <set>
 
@@ -79,8 +80,8 @@ std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice,
 // has its layers; at least one layer per barrel).
 std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const SideLattice& lattice,
                                             const SweepOrder& order, const BarrelTree& tree,
-                                            const std::set<int>& even_caps,
-                                            const std::string& tag) {
+                                            const std::set<int>& even_caps, const std::string& tag,
+                                            double layer_size) {
   std::vector<IntervalRow> rows;
   std::vector<size_t> extra;
   const auto lambda = layer_potentials(lattice, order, &extra);
@@ -94,6 +95,10 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
       seen.insert(e);
     }
     rows.push_back({std::move(e), sense, rhs, false, tag + ": " + label});
+  };
+  auto prefer = [&](const Expr& e, int rhs, const std::string& label) {
+    if (!e.empty())
+      rows.push_back({e, intervals::Sense::GreaterEqual, rhs, false, tag + ": " + label, true});
   };
   for (size_t i : extra) {
     const LinkChain& c = lattice.chains[i];
@@ -142,13 +147,25 @@ std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const Side
       if (hl <= h && (below < 0 || hl > order.height[static_cast<size_t>(below)])) below = l;
     }
     const std::string name = "the ring of vertices " + ids(vertices_of[static_cast<int>(c)]);
+    // A ring more than a quarter of an element from the level is a layer
+    // away where the counts allow: on that level's layer, the rim of a
+    // lug's cone 13 below a pocket's floor tilted the layer between them
+    // across the narrow wall beside the lug, and the wall's quad there
+    // folded with all four corners on its boundary (plan => mesh campaign
+    // seed 10 case 169).
+    const auto apart = [&](int level) {
+      return layer_size > 0 && order.straight &&
+             std::abs(order.height[static_cast<size_t>(level)] - h) > 0.25 * layer_size;
+    };
     if (above >= 0) {
-      add(combine(lambda[static_cast<size_t>(above)], 1, lambda[c], -1),
-          intervals::Sense::GreaterEqual, 0, name + " lies below the cap level above it");
+      const Expr gap = combine(lambda[static_cast<size_t>(above)], 1, lambda[c], -1);
+      add(gap, intervals::Sense::GreaterEqual, 0, name + " lies below the cap level above it");
+      if (apart(above)) prefer(gap, 1, name + " lies a layer below the cap level above it");
     }
     if (below >= 0) {
-      add(combine(lambda[c], 1, lambda[static_cast<size_t>(below)], -1),
-          intervals::Sense::GreaterEqual, 0, name + " lies above the cap level below it");
+      const Expr gap = combine(lambda[c], 1, lambda[static_cast<size_t>(below)], -1);
+      add(gap, intervals::Sense::GreaterEqual, 0, name + " lies above the cap level below it");
+      if (apart(below)) prefer(gap, 1, name + " lies a layer above the cap level below it");
     }
   }
   for (int cap : even_caps) {

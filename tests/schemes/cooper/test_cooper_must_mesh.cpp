@@ -152,32 +152,32 @@ TEST(CooperMustMesh, ElbowWithABossOnItsEndFace) {
 // without retries the planned way's error stands.
 TEST(CooperMustMesh, ASweepFailingTheWayItWasPlannedIsSweptTheOtherWay) {
   occ::Workbench wb;
-  lug_beside_boss_over_foot(wb);
+  bosses_over_a_through_hole(wb);
   const geom::Model model = wb.build_model();
   const auto registry = builtin();
   const auto plan = plan_test::scheme_plan(*registry, model, 1);
   ASSERT_TRUE(plan && plan->ok && plan->down);
-  EXPECT_GT(plan->down->z(), 0.99);
-  EXPECT_THROW(pipeline::mesh_model(model, sized(4.271), *registry, selector::mesh_options()),
+  EXPECT_LT(plan->down->z(), -0.99);
+  EXPECT_THROW(pipeline::mesh_model(model, sized(5.965), *registry, selector::mesh_options()),
                MeshingError);
-  io::MeshSettings retried = sized(4.271);
+  io::MeshSettings retried = sized(5.965);
   retried.finer_retries = 2;
   const pipeline::MeshResult r =
       pipeline::mesh_model(model, retried, *registry, selector::mesh_options());
   ASSERT_FALSE(r.warnings.empty());
   EXPECT_EQ(r.warnings.front().message.rfind(
-                "meshed sweeping it the other way, along (0, 0, -1), at the size asked for "
-                "(4.271); along (0, 0, 1) it failed at the size asked for and at smaller ones: ",
+                "meshed sweeping it the other way, along (0, 0, 1), at the size asked for "
+                "(5.965); along (0, 0, -1) it failed at the size asked for and at smaller ones: ",
                 0),
             0u)
       << r.warnings.front().message;
   const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
   EXPECT_EQ(r.mesh.wedge_count(), 0u);
-  EXPECT_GE(s.min_sj, 0.2);  // 0.203 at this coarse size
+  EXPECT_GE(s.min_sj, 0.3);  // 0.49 at this coarse size
   const double solid = model.volumes().front().volume;
-  EXPECT_NEAR(s.volume, solid, 0.01 * solid);  // round faces meshed by chords (-0.5 %)
+  EXPECT_NEAR(s.volume, solid, 0.01 * solid);  // round faces meshed by chords
   std::printf(
-      "[cooper must mesh] lug_beside_boss_over_foot, swept the other way: %zu hexes, min "
+      "[cooper must mesh] bosses_over_a_through_hole, swept the other way: %zu hexes, min "
       "scaled Jacobian %.4f, volume %.5f of %.5f\n",
       s.hexes, s.min_sj, s.volume, solid);
 }

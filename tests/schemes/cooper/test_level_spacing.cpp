@@ -14,10 +14,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace cooperage::cooper {
 namespace {
@@ -85,6 +87,74 @@ TEST(CooperLevelSpacing, WallRowsLieOnTheCapsLevels) {
     std::printf("[cooper levels] lug and counterbore, size %g: %zu hexes, min SJ %.4f\n", size,
                 s.hexes, s.min_sj);
   }
+}
+
+/// The heights of the mesh's nodes on the vertical line through (x, y).
+std::vector<double> heights_on(const mesh::MeshDB& mesh, double x, double y) {
+  std::vector<double> z;
+  for (size_t i = 0; i < mesh.node_count(); ++i) {
+    const geom::Vec3& p = mesh.node(static_cast<int>(i));
+    if (std::abs(p.x() - x) < 1e-6 && std::abs(p.y() - y) < 1e-6) z.push_back(p.z());
+  }
+  std::sort(z.begin(), z.end());
+  return z;
+}
+
+bool has_height(const std::vector<double>& z, double level, double tol) {
+  return std::any_of(z.begin(), z.end(), [&](double h) { return std::abs(h - level) < tol; });
+}
+
+std::string text(const std::vector<double>& z) {
+  std::string out;
+  for (double h : z) out += " " + std::to_string(h);
+  return out;
+}
+
+/// Cooper's mesh of `model` at `size`, one thread, checked (check_hex_mesh).
+pipeline::MeshResult swept_at(const geom::Model& model, double size) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  io::MeshSettings settings;
+  settings.size = size;
+  settings.finer_retries = 0;  // at the size asked, or not at all
+  pipeline::MeshOptions options = selector::mesh_options();
+  options.threads = 1;
+  pipeline::MeshResult res = pipeline::mesh_model(model, settings, registry, options);
+  EXPECT_EQ(res.plan.volumes.at(1).scheme, "cooper");
+  const testing::HexMeshSummary s = testing::check_hex_mesh(model, res.mesh);
+  const double exact = model.volume(1).volume;
+  EXPECT_NEAR(s.volume, exact, 0.01 * exact);
+  EXPECT_GE(s.min_sj, 0.2);
+  std::printf("[cooper levels] size %g: %zu hexes, min SJ %.4f\n", size, s.hexes, s.min_sj);
+  return res;
+}
+
+// A lug on the wall x = 48.99 whose cone's rim (z = 10.69) is not a cap
+// level, 13.2 below a pocket's floor (23.91), at size 16.375 (the plan =>
+// mesh campaign, fuzz/parity_campaign.py --seed 10 case 169). The counts put
+// the rim on the floor's layer; that layer then tilted down across the 6.7
+// wide wall beside the lug, and the wall's quad at the rim folded with all
+// four corners on its boundary ("the lattice fill gives an inverted quad").
+// The ring is now preferably a layer from the level (barrel_constraints.h),
+// and the wall's edge has a row at the rim's height and one at the floor's.
+TEST(CooperLevelSpacing, ALugsRimALayerBelowAPocketsFloorKeepsTheWallFlat) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {48.99, 38.6, 36.9});
+  wb.brick("pocket", {33.5, 23.9, 23.91}, {8.32, 4.1, 49.89});
+  wb.cylinder("lug", {48.99, 12.7, 10.69}, {0, 0, 1}, 6.03, 26.21);
+  wb.cone("under", {48.99, 12.7, 7.82}, {0, 0, 1}, 2.48, 6.03, 2.87);
+  wb.cylinder("hole", {21.81, 32.08, 7.51}, {0, 0, 1}, 3.13, 66.29);
+  wb.cylinder("foot", {12.94, 13.58, -32.51}, {0, 0, 1}, 7.81, 32.51);
+  wb.fuse("body", {"block", "lug", "under", "foot"});
+  wb.cut("part", {"body", "pocket", "hole"});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 1u);
+  const double size = 16.375;
+  pipeline::MeshResult res;
+  ASSERT_NO_THROW(res = swept_at(model, size));
+  const std::vector<double> z = heights_on(res.mesh, 48.99, 0.0);
+  for (double level : {10.69, 23.91})
+    EXPECT_TRUE(has_height(z, level, 1e-3 * size)) << "no row at z = " << level << ":" << text(z);
 }
 
 }  // namespace

@@ -345,6 +345,44 @@ TEST(PlanSteps, AHolesFloorEndsTheBarrelAboveARingThatGainsAChamfer) {
       std::any_of(lower.begin(), lower.end(), [&](const EndPiece& e) { return e.interface >= 0; }));
 }
 
+// The same part: the ring where the chamfer meets the lug's wall (z = 1.2)
+// lies 0.3 below the hole's floor and 0.7 above the lug's floor. It must
+// not lie outside them (needs, rhs 0); where it is more than a quarter of
+// an element from one, it is preferably a layer away from it, so that the
+// layer through the level does not tilt down to the ring (plan => mesh
+// campaign seed 10 case 169).
+TEST(PlanSteps, ARingFarFromACapLevelPrefersALayerBetweenThem) {
+  const VolumeFacts facts = facts_test::polyhedron_facts(chamfered_lug_and_blind_hole());
+  const Steps s = run_steps(facts, z_caps(facts), down());
+  ASSERT_TRUE(s.tree.ok) << s.tree.why;
+  auto rows_of = [&](double layer_size, bool preferred) {
+    std::vector<std::string> out;
+    for (const IntervalRow& r :
+         barrel_constraints(facts, s.lattice, s.order, s.tree, {}, "t", layer_size)) {
+      if (r.preferred != preferred || r.label.find("the ring of vertices") == std::string::npos)
+        continue;
+      EXPECT_EQ(r.sense, intervals::Sense::GreaterEqual) << r.label;
+      EXPECT_EQ(r.rhs, preferred ? 1 : 0) << r.label;
+      out.push_back(r.label);
+    }
+    return out;
+  };
+  // Needs: the ring between the two levels, at every size.
+  ASSERT_EQ(rows_of(0, false).size(), 2u);
+  EXPECT_EQ(rows_of(1.0, false), rows_of(0, false));
+  EXPECT_TRUE(rows_of(0, true).empty());  // no size: no preference
+  // Size 1: both gaps exceed 0.25.
+  const auto both = rows_of(1.0, true);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_NE(both[0].find("a layer below the cap level above it"), std::string::npos) << both[0];
+  EXPECT_NE(both[1].find("a layer above the cap level below it"), std::string::npos) << both[1];
+  // Size 2: only the 0.7 to the lug's floor exceeds 0.5.
+  const auto one = rows_of(2.0, true);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_NE(one[0].find("a layer above the cap level below it"), std::string::npos) << one[0];
+  EXPECT_TRUE(rows_of(4.0, true).empty());  // both within a quarter of 4
+}
+
 /// Every slab, top down, is one region: the block's walls (outer) round
 /// one hole of `hole_walls[k]` faces.
 void expect_walls_round_one_hole(const SlabRegions& slabs, const std::vector<size_t>& hole_walls) {
