@@ -267,7 +267,8 @@ int main(int argc, char** argv) {
   mesh->add_option("--finer-retries", mesh_finer_retries,
                    "A volume its scheme fails on after planning is meshed again at half its size, "
                    "at most this many times, then (a straight sweep) swept the other way, from its "
-                   "size down (default 2; 0: never)")
+                   "size down; a straight sweep meshed below a scaled Jacobian of 0.2 is tried the "
+                   "other way too, kept when better (default 2; 0: never)")
       ->check(CLI::Range(0, io::MeshSettings::kMaxFinerRetries));
   std::optional<double> mesh_min_sj;
   mesh->add_option("--min-scaled-jacobian", mesh_min_sj,

@@ -10,8 +10,9 @@ lugs on a wall with a conical underside -- at a random element size, with
 the automatic decomposition off so that the cooper scheme itself is judged.
 Each part is planned (`cooperage plan --json`); a part the plan accepts is
 run (`cooperage run -q`), with no retry at a finer size unless
---finer-retries asks for it (then a part meshed at a finer size, or swept
-the other way at its own, is counted apart). A case fails when the plan accepted it and the run
+--finer-retries asks for it (then a part meshed at a finer size, swept
+the other way at its own after failing, or swept the other way because
+that meshed it better, is counted apart). A case fails when the plan accepted it and the run
 did not exit 0, or when any command crashed, hung (60 s) or exited with
 another code than 0 or 2. Writes DIR/results.jsonl (with each meshed part's
 smallest scaled Jacobian, from `cooperage quality`, to compare two builds'
@@ -174,7 +175,12 @@ def main():
                     verdict = "meshed" if rc2 == 0 else "planned, run failed"
                     if rc2 == 0 and "the size asked for" in err2:
                         row["finer"] = [l for l in err2.splitlines() if "the size asked for" in l][:1]
-                        verdict = ("meshed swept the other way" if "the other way" in row["finer"][0]
+                        line = row["finer"][0]
+                        # A sweep that meshed as planned but better the other
+                        # way (finer_retry.h, kTurnPoorSweepsBelow) meshed at
+                        # its own size, as planned or not.
+                        verdict = ("meshed, better the other way" if "its worst element's" in line
+                                   else "meshed swept the other way" if "the other way" in line
                                    else "meshed at a finer size")
                     if rc2 == 0:
                         row["min_sj"] = min_scaled_jacobian(binary, tmp)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace cooperage::pipeline {
@@ -14,6 +15,13 @@ namespace {
 // dangling at the end of the message.
 std::string then(const std::string& tried, const std::string& hint) {
   return hint.empty() ? tried : tried + "; " + hint;
+}
+
+// A scaled Jacobian for a message, as the worst-element warning has it.
+std::string quality_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
 }
 
 std::optional<double> size_of(const io::MeshSettings& settings, int volume) {
@@ -146,6 +154,28 @@ std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
   return halved;
 }
 
+std::vector<int> turn_poor_sweeps(const MeshResult& result, double below,
+                                  io::MeshSettings& settings, std::map<int, FinerRetry>& retries) {
+  std::vector<int> turned;
+  for (const Verdict& v : result.verdicts) {
+    if (v.state != Verdict::State::Meshed || v.entity.dim != 3) continue;
+    const std::optional<double> worst = worst_scaled_jacobian(result, v.entity.id);
+    const std::optional<double> size = size_of(settings, v.entity.id);
+    if (!worst || *worst >= below || !size) continue;
+    std::map<int, FinerRetry> one{{v.entity.id, FinerRetry{}}};
+    note_planned_sweeps(result.plan, settings, one);
+    FinerRetry& r = one.begin()->second;
+    if (!r.planned_sweep) continue;  // not a straight sweep, or one the journal directs
+    r.asked = r.size = *size;
+    r.turned = r.for_quality = true;
+    r.planned_worst = worst;
+    setting_of(settings, v.entity.id).direction = -*r.planned_sweep;
+    retries[v.entity.id] = r;
+    turned.push_back(v.entity.id);
+  }
+  return turned;
+}
+
 std::vector<int> halve_volumes_again(const std::vector<int>& volumes, io::MeshSettings& settings,
                                      std::map<int, FinerRetry>& retries) {
   for (int volume : volumes) {
@@ -167,6 +197,15 @@ void report_finer_retries(const std::map<int, FinerRetry>& retries, MeshResult& 
                         : std::string();
     if (r.turned && v.state == Verdict::State::Refused) {
       v.hint = then("meshing it again at smaller sizes, and " + other_way + ", failed too", v.hint);
+      continue;
+    }
+    if (r.turned && r.for_quality && r.planned_worst) {
+      const std::optional<double> worst = worst_scaled_jacobian(result, v.entity.id);
+      warnings.push_back({v.entity, "meshed " + other_way + ", at the size asked for (" +
+                                        number_text(r.asked) + "): its worst element's scaled " +
+                                        "Jacobian is " + quality_text(worst.value_or(0)) +
+                                        ", where along " + vector_text(*r.planned_sweep) +
+                                        " it was " + quality_text(*r.planned_worst)});
       continue;
     }
     if (r.turned) {

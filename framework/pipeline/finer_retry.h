@@ -31,9 +31,23 @@ struct FinerRetry {
   std::optional<geom::Vec3> planned_sweep;
   bool turned = false;
   /// It meshed at `asked` but worse than a failing quality check allows
-  /// (`first_reason` says how much); see halve_poor_volumes.
+  /// (`first_reason` says how much); see halve_poor_volumes. With
+  /// `turned`: swept the other way for its quality (turn_poor_sweeps).
   bool for_quality = false;
+  /// turn_poor_sweeps: the worst scaled Jacobian the planned way reached.
+  std::optional<double> planned_worst = std::nullopt;
 };
+
+/// A straight sweep whose worst element is below this at the size asked
+/// for is swept the other way there too, and the better mesh is kept: of
+/// the plan => mesh campaign's 374 parts meshed below it at their own size,
+/// 168 reach a better worst element the other way, 71 of them 0.2 or more
+/// (bench/RESULTS.md, session 43)...
+inline constexpr double kTurnPoorSweepsBelow = 0.2;
+/// ... and kept only when its worst element is better by this much: a
+/// thousandth is no reason to sweep against the plan (31 of the 198
+/// campaign parts turned without it gained less).
+inline constexpr double kTurnPoorSweepsGain = 0.01;
 
 /// Halves, in `settings`, the size of every volume of `verdicts` a smaller
 /// size may mesh (Verdict::finer_may_help) whose size the settings give
@@ -74,6 +88,14 @@ std::optional<double> worst_scaled_jacobian(const MeshResult& result, int volume
 /// attempt). Returns the volumes halved.
 std::vector<int> halve_poor_volumes(const MeshResult& result, double floor,
                                     io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
+
+/// Sets, in `settings`, a direction hint the other way on every volume of
+/// `result` that meshed with a worst scaled Jacobian below `below`, has a
+/// size, and was swept straight by `result.plan` without a journal sweep
+/// hint; records it in `retries` (turned, for_quality, planned_worst).
+/// Returns those volumes.
+std::vector<int> turn_poor_sweeps(const MeshResult& result, double below,
+                                  io::MeshSettings& settings, std::map<int, FinerRetry>& retries);
 
 /// Halves, in `settings`, the size of `volumes` once more (their retry in
 /// `retries` says the latest size); returns them.

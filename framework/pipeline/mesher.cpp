@@ -614,6 +614,40 @@ MeshResult mesh_model(const geom::Model& model, const io::MeshSettings& settings
       // The exports staged beside a later attempt are another mesh's.
       if (restaged) result.mesh_replaced = true;
     }
+    // Straight sweeps that meshed poorly at the size asked for, once the
+    // other way there; kept when nothing is refused and every one of them
+    // is better so by kTurnPoorSweepsGain.
+    if (retries.empty() && !result.incomplete()) {
+      io::MeshSettings other_way = settings;
+      std::map<int, FinerRetry> poor;
+      const std::vector<int> poorly =
+          turn_poor_sweeps(result, kTurnPoorSweepsBelow, other_way, poor);
+      for (int volume : poorly)
+        log::info("volume " + std::to_string(volume) + " meshed with a worst scaled Jacobian of " +
+                  number_text(*poor.at(volume).planned_worst) +
+                  "; sweeping it the other way at the same size");
+      if (!poorly.empty()) {
+        try {
+          MeshResult other = mesh_attempt(model, other_way, registry, options);
+          bool better = !other.incomplete();
+          for (int volume : poorly) {
+            const auto before = worst_scaled_jacobian(result, volume);
+            const auto after = worst_scaled_jacobian(other, volume);
+            better = better && after && before && *after > *before + kTurnPoorSweepsGain;
+          }
+          if (better) {
+            earlier += seconds(result);
+            result = std::move(other);
+            retries = std::move(poor);
+          } else {
+            earlier += seconds(other);
+            result.mesh_replaced = true;  // the exports staged beside it are its mesh's
+          }
+        } catch (const MeshingError& e) {  // e.g. above max_elements
+          log::info("sweeping the other way failed: " + e.message());
+        }
+      }
+    }
     if (earlier > 0) result.stages.insert(result.stages.begin(), {"failed attempts", earlier});
     report_finer_retries(retries, result);
   }

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -103,6 +104,46 @@ class PoorWhenCoarse final : public testing::PlansLikeMap {
   std::size_t least_;
 };
 
+// Plans a straight sweep along the journal's direction hint, else along
+// +z, and meshes as the volume map does; swept upwards (and downwards too
+// when `poor_both_ways`) it moves the interior node at (1, 1, 1) as
+// PoorWhenCoarse does: a valid mesh whose worst hex is 0.182342.
+class PoorUpwards final : public testing::PlansLikeMap {
+ public:
+  PoorUpwards(const scheme::VolumeScheme& map, bool poor_both_ways)
+      : PlansLikeMap(map), both_(poor_both_ways) {}
+  std::string_view name() const override { return "poor_upwards"; }
+  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
+    scheme::Applicability a = map_.applicable(view);
+    if (!a.ok) return a;
+    auto plan = std::make_shared<Along>();
+    plan->d = {0.0, 0.0, downwards(view.settings(), view.volume_id) ? -1.0 : 1.0};
+    a.plan = plan;
+    return a;
+  }
+  scheme::EntityMesh mesh(const scheme::VolumeView& view,
+                          const scheme::Settings& settings) const override {
+    scheme::EntityMesh m = map_.mesh(view, settings);
+    if (downwards(settings, view.volume_id) && !both_) return m;
+    for (geom::Vec3& x : m.coords) {
+      if ((x - geom::Vec3(1, 1, 1)).norm() < 1e-9) x += geom::Vec3(0.3, 0.3, 0.3);
+    }
+    m.hex_scaled_jacobian.clear();
+    return m;
+  }
+
+ private:
+  bool both_;
+  struct Along final : scheme::PlanData {
+    std::array<double, 3> d{};
+    std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
+  };
+  static bool downwards(const scheme::Settings& settings, int volume) {
+    const io::VolumeSetting* v = settings.volume(volume);
+    return v && v->direction && v->direction->z() < 0;
+  }
+};
+
 class FinerRetries : public testing::JournalFixture {
  protected:
   void use_scheme(std::size_t least) {
@@ -110,6 +151,9 @@ class FinerRetries : public testing::JournalFixture {
   }
   void use_poor_scheme(std::size_t least) {
     registry_.add(std::make_unique<PoorWhenCoarse>(*registry_.volume_scheme("map"), least));
+  }
+  void use_poor_upwards_scheme(bool poor_both_ways = false) {
+    registry_.add(std::make_unique<PoorUpwards>(*registry_.volume_scheme("map"), poor_both_ways));
   }
   void use_downwards_scheme(std::size_t least = 0) {
     registry_.add(std::make_unique<MeshesOnlyDownwards>(*registry_.volume_scheme("map"), least));
@@ -443,6 +487,62 @@ TEST_F(FinerRetries, ARetryNoBetterKeepsTheFirstMeshAndTheCheckFails) {
   ASSERT_EQ(r.mesh.warnings.size(), 1u);
   EXPECT_EQ(r.mesh.warnings.front().message.rfind("its worst hex has a scaled Jacobian of", 0), 0u);
   EXPECT_FALSE(written("out.vtu"));
+}
+
+// A straight sweep that meshes below kTurnPoorSweepsBelow at the size asked
+// for is swept the other way there too; the better mesh is kept and the
+// warning says so.
+TEST_F(FinerRetries, APoorStraightSweepIsSweptTheOtherWayWhenThatIsBetter) {
+  use_poor_upwards_scheme();
+  const char* body = R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"%s><volume id="1" scheme="poor_upwards"%s/></mesh>
+  <export file="out.vtu"/>
+)";
+  char text[512];
+  std::snprintf(text, sizeof text, body, "", "");
+  const RunResult r = run_job(journal(text), registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 64u);  // the size asked for
+  EXPECT_NEAR(r.quality.blocks.at(0).find("scaled_jacobian")->min, 1.0, 1e-12);
+  ASSERT_EQ(r.mesh.warnings.size(), 1u);
+  EXPECT_EQ(r.mesh.warnings.front().text(),
+            "volume 1: meshed sweeping it the other way, along (0, 0, -1), at the size asked for "
+            "(1): its worst element's scaled Jacobian is 1.000, where along (0, 0, 1) it was "
+            "0.182");
+  EXPECT_TRUE(written("out.vtu"));
+  ASSERT_FALSE(r.mesh.stages.empty());
+  EXPECT_EQ(r.mesh.stages.front().stage, "failed attempts");
+
+  // Not with a direction the journal gives, nor without retries.
+  for (auto [mesh_attribute, volume_attribute] :
+       {std::pair{"", " direction=\"0 0 1\""}, std::pair{" finer_retries=\"0\"", ""}}) {
+    std::snprintf(text, sizeof text, body, mesh_attribute, volume_attribute);
+    const RunResult kept = run_job(journal(text), registry_, selector::mesh_options());
+    EXPECT_FALSE(kept.failed());
+    EXPECT_NEAR(kept.quality.blocks.at(0).find("scaled_jacobian")->min, 0.182342, 1e-6);
+    ASSERT_EQ(kept.mesh.warnings.size(), 1u);
+    EXPECT_EQ(kept.mesh.warnings.front().message.rfind("its worst hex has a scaled Jacobian", 0),
+              0u)
+        << kept.mesh.warnings.front().text();
+  }
+}
+
+// The other way no better: the mesh as planned stays, with its note.
+TEST_F(FinerRetries, APoorSweepNoBetterTheOtherWayIsKeptAsPlanned) {
+  use_poor_upwards_scheme(true);
+  const RunResult r =
+      run_job(journal(R"(  <geometry><brick name="b" origin="0 0 0" size="4 4 4"/></geometry>
+  <mesh size="1"><volume id="1" scheme="poor_upwards"/></mesh>
+  <export file="out.vtu"/>
+)"),
+              registry_, selector::mesh_options());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(r.mesh.mesh.hex_count(), 64u);
+  EXPECT_NEAR(r.quality.blocks.at(0).find("scaled_jacobian")->min, 0.182342, 1e-6);
+  ASSERT_EQ(r.mesh.warnings.size(), 1u);
+  EXPECT_EQ(r.mesh.warnings.front().message.rfind("its worst hex has a scaled Jacobian", 0), 0u)
+      << r.mesh.warnings.front().text();
+  EXPECT_TRUE(written("out.vtu"));
 }
 
 }  // namespace
