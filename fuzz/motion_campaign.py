@@ -4,9 +4,11 @@ invariant"; the paper's orientation insensitivity): a moved part gives the
 moved mesh.
 
 usage: fuzz/motion_campaign.py COUNT --bin BUILD/bin/cooperage [--seed S] [--out DIR] [--case C ...]
+       [--finer-retries N]
 
 Builds the random parts of parity_campaign.py (same seed, same parts) and
-runs each twice at its own size (no finer retry): as built, and turned
+runs each twice at its own size (no finer retry unless --finer-retries
+asks for them, with the other-way sweeps that come with them): as built, and turned
 about a random axis through the origin by a random angle, then shifted
 (the motion is seeded by the case). Both meshes are read back with meshio
 (an independent reader) and compared node by node after moving the first:
@@ -69,6 +71,8 @@ def main():
     ap.add_argument("--out", default="motion_campaign")
     ap.add_argument("--case", type=int, action="append",
                     help="run only this case (repeatable; COUNT is then ignored)")
+    ap.add_argument("--finer-retries", type=int, default=0,
+                    help="the journals' finer_retries (default 0: each run at its own size only)")
     args = ap.parse_args()
     os.makedirs(os.path.join(args.out, "cases"), exist_ok=True)
     tally = {}
@@ -77,7 +81,8 @@ def main():
             tempfile.TemporaryDirectory() as work:
         for case in args.case or range(args.count):
             text, what = parity_campaign.random_part(random.Random(args.seed * 100003 + case))
-            text = text.replace('decompose="off"', 'decompose="off" finer_retries="0"')
+            text = text.replace('decompose="off"',
+                                'decompose="off" finer_retries="%d"' % args.finer_retries)
             rng = random.Random(7919 * args.seed + case)
             axis = [rng.uniform(-1, 1) for _ in range(3)]
             angle = rng.uniform(-180, 180)
