@@ -42,14 +42,10 @@ class FailsWhenCoarse final : public testing::PlansLikeMap {
 };
 
 // Plans a straight sweep along the journal's direction hint, else along
-// +z, and meshes (as the volume map does) only along -z and with at least
-// `least` hexes: a sweep that fails one way at every size and meshes the
-// other way.
-class MeshesOnlyDownwards final : public testing::PlansLikeMap {
+// +z, as the volume map plans; what it meshes each way is the test's.
+class PlansAStraightSweep : public testing::PlansLikeMap {
  public:
-  MeshesOnlyDownwards(const scheme::VolumeScheme& map, std::size_t least)
-      : PlansLikeMap(map), least_(least) {}
-  std::string_view name() const override { return "meshes_only_downwards"; }
+  using PlansLikeMap::PlansLikeMap;
   scheme::Applicability applicable(const scheme::VolumeView& view) const override {
     scheme::Applicability a = map_.applicable(view);
     if (!a.ok) return a;
@@ -58,6 +54,27 @@ class MeshesOnlyDownwards final : public testing::PlansLikeMap {
     a.plan = plan;
     return a;
   }
+
+ protected:
+  static bool downwards(const scheme::Settings& settings, int volume) {
+    const io::VolumeSetting* v = settings.volume(volume);
+    return v && v->direction && v->direction->z() < 0;
+  }
+
+ private:
+  struct Along final : scheme::PlanData {
+    std::array<double, 3> d{};
+    std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
+  };
+};
+
+// Meshes (as the volume map does) only along -z and with at least `least`
+// hexes: a sweep that fails one way at every size and meshes the other way.
+class MeshesOnlyDownwards final : public PlansAStraightSweep {
+ public:
+  MeshesOnlyDownwards(const scheme::VolumeScheme& map, std::size_t least)
+      : PlansAStraightSweep(map), least_(least) {}
+  std::string_view name() const override { return "meshes_only_downwards"; }
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& settings) const override {
     scheme::EntityMesh m = map_.mesh(view, settings);
@@ -69,21 +86,22 @@ class MeshesOnlyDownwards final : public testing::PlansLikeMap {
 
  private:
   std::size_t least_;
-  struct Along final : scheme::PlanData {
-    std::array<double, 3> d{};
-    std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
-  };
-  static bool downwards(const scheme::Settings& settings, int volume) {
-    const io::VolumeSetting* v = settings.volume(volume);
-    return v && v->direction && v->direction->z() < 0;
-  }
 };
 
-// Meshes as the volume map does, and while its mesh has fewer than `least`
-// hexes moves the interior node at (1, 1, 1) by (0.3, 0.3, 0.3): the hex
-// it leans into keeps a corner of scaled Jacobian 0.182342 (its edges
-// (0.7, -0.3, -0.3) and its two turns: determinant 0.1 over the lengths
-// cubed, 0.67^1.5), every hex stays valid and the volume is the brick's.
+// Moves the interior node at (1, 1, 1) of a map mesh of the 4-unit cube
+// at size 1 by (0.3, 0.3, 0.3): the hex it leans into keeps a corner of
+// scaled Jacobian 0.182342 (its edges (0.7, -0.3, -0.3) and its two turns:
+// determinant 0.1 over the lengths cubed, 0.67^1.5), every hex stays valid
+// and the volume is the brick's.
+void lean_the_node_at_1_1_1(scheme::EntityMesh& m) {
+  for (geom::Vec3& x : m.coords) {
+    if ((x - geom::Vec3(1, 1, 1)).norm() < 1e-9) x += geom::Vec3(0.3, 0.3, 0.3);
+  }
+  m.hex_scaled_jacobian.clear();  // the report computes them on the moved node
+}
+
+// Meshes as the volume map does, and leans the node at (1, 1, 1) while its
+// mesh has fewer than `least` hexes.
 class PoorWhenCoarse final : public testing::PlansLikeMap {
  public:
   PoorWhenCoarse(const scheme::VolumeScheme& map, std::size_t least)
@@ -92,11 +110,7 @@ class PoorWhenCoarse final : public testing::PlansLikeMap {
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& settings) const override {
     scheme::EntityMesh m = map_.mesh(view, settings);
-    if (m.hexes.size() >= least_) return m;
-    for (geom::Vec3& x : m.coords) {
-      if ((x - geom::Vec3(1, 1, 1)).norm() < 1e-9) x += geom::Vec3(0.3, 0.3, 0.3);
-    }
-    m.hex_scaled_jacobian.clear();  // the report computes them on the moved node
+    if (m.hexes.size() < least_) lean_the_node_at_1_1_1(m);
     return m;
   }
 
@@ -104,44 +118,23 @@ class PoorWhenCoarse final : public testing::PlansLikeMap {
   std::size_t least_;
 };
 
-// Plans a straight sweep along the journal's direction hint, else along
-// +z, and meshes as the volume map does; swept upwards (and downwards too
-// when `poor_both_ways`) it moves the interior node at (1, 1, 1) as
-// PoorWhenCoarse does: a valid mesh whose worst hex is 0.182342.
-class PoorUpwards final : public testing::PlansLikeMap {
+// Meshes as the volume map does, and leans the node at (1, 1, 1) when it
+// sweeps upwards (and downwards too when `poor_both_ways`): a valid mesh
+// whose worst hex is 0.182342.
+class PoorUpwards final : public PlansAStraightSweep {
  public:
   PoorUpwards(const scheme::VolumeScheme& map, bool poor_both_ways)
-      : PlansLikeMap(map), both_(poor_both_ways) {}
+      : PlansAStraightSweep(map), both_(poor_both_ways) {}
   std::string_view name() const override { return "poor_upwards"; }
-  scheme::Applicability applicable(const scheme::VolumeView& view) const override {
-    scheme::Applicability a = map_.applicable(view);
-    if (!a.ok) return a;
-    auto plan = std::make_shared<Along>();
-    plan->d = {0.0, 0.0, downwards(view.settings(), view.volume_id) ? -1.0 : 1.0};
-    a.plan = plan;
-    return a;
-  }
   scheme::EntityMesh mesh(const scheme::VolumeView& view,
                           const scheme::Settings& settings) const override {
     scheme::EntityMesh m = map_.mesh(view, settings);
-    if (downwards(settings, view.volume_id) && !both_) return m;
-    for (geom::Vec3& x : m.coords) {
-      if ((x - geom::Vec3(1, 1, 1)).norm() < 1e-9) x += geom::Vec3(0.3, 0.3, 0.3);
-    }
-    m.hex_scaled_jacobian.clear();
+    if (!downwards(settings, view.volume_id) || both_) lean_the_node_at_1_1_1(m);
     return m;
   }
 
  private:
   bool both_;
-  struct Along final : scheme::PlanData {
-    std::array<double, 3> d{};
-    std::optional<std::array<double, 3>> straight_sweep() const override { return d; }
-  };
-  static bool downwards(const scheme::Settings& settings, int volume) {
-    const io::VolumeSetting* v = settings.volume(volume);
-    return v && v->direction && v->direction->z() < 0;
-  }
 };
 
 class FinerRetries : public testing::JournalFixture {
