@@ -40,8 +40,9 @@ std::vector<std::map<int, int>> layer_potentials(const SideLattice& lattice,
 
 /// The rows; every loop of `even_caps` is even; `tag` starts every label
 /// ("volume 3 (cooper)"). With a `layer_size` (the element size along the
-/// sweep; 0: none) on a straight sweep, a ring of vertices between two cap levels more than
-/// a quarter of it from one of them is preferably a layer away from it.
+/// sweep; 0: none), on a straight sweep, a ring of vertices between two
+/// cap levels more than a quarter of it from one of them is preferably a
+/// layer away from it.
 std::vector<IntervalRow> barrel_constraints(const VolumeFacts& facts, const SideLattice& lattice,
                                             const SweepOrder& order, const BarrelTree& tree,
                                             const std::set<int>& even_caps, const std::string& tag,

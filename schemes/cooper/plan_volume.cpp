@@ -292,13 +292,14 @@ VolumePlan evaluate(const geom::Model& model, const scheme::Registry& registry,
     const bool imprinted = p.roles.needs_polygon_mesher && in.elements != Elements::Wedge;
     if (imprinted || (paved && facts.face(cap)->loops.size() > 1)) even.insert(cap);
   }
+  // The volume's element size (its own, else the job's; none without a job).
+  double layer_size = 0;
   if (in.settings) {
-    p.layer_size = in.settings->size;
     const io::VolumeSetting* own = in.settings->volume(p.volume);
-    if (own && own->sizing.size) p.layer_size = *own->sizing.size;
+    layer_size = own && own->sizing.size ? *own->sizing.size : in.settings->size;
   }
   p.rows = barrel_constraints(facts, p.lattice, p.order, p.tree, even,
-                              volume_name(p.volume) + " (cooper)", p.layer_size);
+                              volume_name(p.volume) + " (cooper)", layer_size);
   if (p.down) {
     std::vector<int> caps;
     for (const auto& [cap, upper] : p.order.upper) caps.push_back(cap);

@@ -56,9 +56,6 @@ struct VolumePlan {
   int source = 0;
   int target = 0;
   std::optional<geom::Vec3> down;  ///< the straight sweep direction, if any
-  /// The volume's element size (the job's, or its <volume size>); 0 when
-  /// planned without a job.
-  double layer_size = 0;
   VolumeFacts facts;
   SideLattice lattice;
   SweepOrder order;
