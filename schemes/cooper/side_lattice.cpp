@@ -161,6 +161,10 @@ void type_corners(FaceFact& f) {
                         f.angles.size() == f.loops.front().size() && can_turn_four(f.angles);
 }
 
+bool cannot_be_side(const FaceFact& f) {
+  return f.loops.size() != 1 || !f.submappable || (!f.ambiguous_corners && f.directions.empty());
+}
+
 // cite: Blacker 1996, sec. 3 (side faces jointly submappable, Fig. 4/5).
 SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   SideLattice out;
@@ -180,16 +184,13 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   std::set<int> ambiguous;               // sides typed once their neighbours are
   for (const FaceFact& f : facts.faces) {
     if (caps.count(f.id)) continue;
-    if (f.loops.size() != 1 || !f.submappable) {
-      out.why = "surface " + std::to_string(f.id) + " cannot be a side (" + f.submap_why + ")";
+    if (cannot_be_side(f)) {
+      out.why = f.loops.size() != 1 || !f.submappable
+                    ? "surface " + std::to_string(f.id) + " cannot be a side (" + f.submap_why + ")"
+                    : f.directions_why;
       return out;
     }
-    if (f.ambiguous_corners) {
-      ambiguous.insert(f.id);
-    } else if (f.directions.empty()) {
-      out.why = f.directions_why;
-      return out;
-    }
+    if (f.ambiguous_corners) ambiguous.insert(f.id);
     dirs[f.id] = &f.directions;
     out.sides.push_back(f.id);
   }

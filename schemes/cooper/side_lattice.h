@@ -120,6 +120,11 @@ inline constexpr double kMinSideDihedral = 8.0;
 /// do not close). gather_facts() calls it for every single-loop face.
 void type_corners(FaceFact& f);
 
+/// Whether side_lattice() refuses `f` as a side whatever the caps are:
+/// several loops, not submappable, or corners that give no lattice and wait
+/// for no neighbour (not ambiguous). Every sorting must make it a cap.
+bool cannot_be_side(const FaceFact& f);
+
 /// Roles, chains, contacts and level classes for `caps` (every other face
 /// of the volume is a side). Not ok when a side has several loops, is not
 /// submappable, has a corner without a type or a REVERSAL, its roles cannot
