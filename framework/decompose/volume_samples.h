@@ -17,8 +17,13 @@ std::vector<int> curves_of(const geom::Model& model, int volume);
 /// seam (faces of other volumes are left out).
 std::vector<geom::Vec3> outward_normals_at(const geom::Model& model, int volume, int curve);
 
+/// Points inside each curve that stand for it (occ::SolidPieces::
+/// boundary_samples takes as many from a solid's edges).
+constexpr int kSamplesPerCurve = 7;
+
 /// The vertices of the volume, then `per_curve` points inside each of its
 /// curves (evenly in parameter), in curve id order.
-std::vector<geom::Vec3> volume_samples(const geom::Model& model, int volume, int per_curve = 7);
+std::vector<geom::Vec3> volume_samples(const geom::Model& model, int volume,
+                                       int per_curve = kSamplesPerCurve);
 
 }  // namespace cooperage::decompose

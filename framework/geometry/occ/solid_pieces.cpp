@@ -5,12 +5,17 @@
 
 #include "framework/geometry/occ/detail.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Splitter.hxx>
 #include <BRepBndLib.hxx>
+#include <BRep_Tool.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <Bnd_Box.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Cone.hxx>
 #include <gp_Cylinder.hxx>
@@ -160,6 +165,29 @@ SolidPieces SolidPieces::split(int index, const CutSurface& cut) const {
                          "cutting solid " + std::to_string(index + 1) + " failed in the kernel");
     for (TopExp_Explorer ex(splitter.Shape(), TopAbs_SOLID); ex.More(); ex.Next())
       out.impl_->solids.push_back({ex.Current(), 0});
+  });
+  return out;
+}
+
+std::vector<Vec3> SolidPieces::boundary_samples(int index, int per_curve) const {
+  check_index(*this, index);
+  const TopoDS_Shape& solid = impl_->solids[static_cast<size_t>(index)].shape;
+  std::vector<Vec3> out;
+  detail::guarded(ErrorCode::GeometryError, "sampling solid " + std::to_string(index + 1), [&] {
+    TopTools_IndexedMapOfShape vertices, edges;
+    TopExp::MapShapes(solid, TopAbs_VERTEX, vertices);
+    TopExp::MapShapes(solid, TopAbs_EDGE, edges);
+    for (int i = 1; i <= vertices.Extent(); ++i)
+      out.push_back(detail::to_vec3(BRep_Tool::Pnt(TopoDS::Vertex(vertices(i)))));
+    for (int i = 1; i <= edges.Extent(); ++i) {
+      const TopoDS_Edge edge = TopoDS::Edge(edges(i).Oriented(TopAbs_FORWARD));
+      if (BRep_Tool::Degenerated(edge)) continue;  // a pole: its vertex is in
+      // As the model's curve geometry evaluates it (curve_geometry.cpp).
+      const BRepAdaptor_Curve c(edge);
+      const double t0 = c.FirstParameter(), t1 = c.LastParameter();
+      for (int k = 1; k <= per_curve; ++k)
+        out.push_back(detail::to_vec3(c.Value(t0 + (t1 - t0) * k / (per_curve + 1))));
+    }
   });
   return out;
 }

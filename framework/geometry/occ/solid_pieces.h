@@ -61,6 +61,12 @@ class SolidPieces {
   /// interior. Throws MeshingError(GeometryError) when the kernel fails.
   SolidPieces split(int index, const CutSurface& cut) const;
 
+  /// The vertices of solid `index`, then `per_curve` points inside each of
+  /// its edges (evenly in parameter): the points decompose::volume_samples
+  /// takes from its model, without building one (a piece too thin to keep
+  /// is told from them before its model is built).
+  std::vector<Vec3> boundary_samples(int index, int per_curve) const;
+
   /// These solids with solid `index` replaced by all solids of `pieces`
   /// (which keep the name of the replaced one).
   SolidPieces replace(int index, const SolidPieces& pieces) const;
