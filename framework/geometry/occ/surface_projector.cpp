@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace cooperage::occ::detail {
@@ -190,7 +192,31 @@ void SurfaceProjector::d1(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv)
   evaluator().D1(u, v, p, su, sv);
 }
 
+size_t SurfaceProjector::PointKeyHash::operator()(const PointKey& k) const {
+  const auto bits = [](double d) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &d, sizeof b);
+    return b;
+  };
+  std::uint64_t h = bits(k.x);
+  for (const double d : {k.y, k.z}) h = (h ^ bits(d)) * 0x100000001b3ULL + (h >> 29);
+  return static_cast<size_t>(h);
+}
+
 Vec2 SurfaceProjector::global(const gp_Pnt& p) const {
+  // Bounded (a few kB a face and thread): a mesh asks few points twice, a
+  // search its vertices and curve points on every piece.
+  constexpr size_t kKnownMax = 256;
+  auto& known = known_.local();
+  const PointKey key{p.X(), p.Y(), p.Z()};
+  if (const auto it = known.find(key); it != known.end()) return it->second;
+  if (known.size() >= kKnownMax) known.clear();
+  const Vec2 uv = global_uncached(p);
+  known.emplace(key, uv);
+  return uv;
+}
+
+Vec2 SurfaceProjector::global_uncached(const gp_Pnt& p) const {
   double u = 0.5 * (u0_ + u1_), v = 0.5 * (v0_ + v1_);
   bool found = false;
   try {

@@ -27,6 +27,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 namespace cooperage::occ::detail {
@@ -69,6 +70,7 @@ class SurfaceProjector {
   enum class Kind { Plane, Cylinder, Cone, Sphere, Torus, Other };
 
   geom::Vec2 global(const gp_Pnt& p) const;
+  geom::Vec2 global_uncached(const gp_Pnt& p) const;
   /// This thread's adaptor of the surface. On a B-spline it keeps the
   /// polynomial of the last span evaluated (BSplSLib_Cache), so a run of
   /// evaluations in one span costs a Horner scheme each instead of the
@@ -83,6 +85,19 @@ class SurfaceProjector {
   bool u_periodic_ = false, v_periodic_ = false;
   double u_period_ = 0.0, v_period_ = 0.0;
   mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAPI_ProjectPointOnSurf>> per_thread_;
+  /// global()'s answers by the query's exact coordinates, per thread: the
+  /// decomposition search builds the facts of every piece of every cut,
+  /// and most of a piece's vertices and curves are its solid's, projected
+  /// onto the same faces again (a tenth of occt_CrankArm's refusal).
+  struct PointKey {
+    double x, y, z;
+    bool operator==(const PointKey& o) const { return x == o.x && y == o.y && z == o.z; }
+  };
+  struct PointKeyHash {
+    size_t operator()(const PointKey& k) const;
+  };
+  mutable tbb::enumerable_thread_specific<std::unordered_map<PointKey, geom::Vec2, PointKeyHash>>
+      known_;
   mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAdaptor_Surface>> adaptors_;
   struct Sample {
     double x, y, z, u, v;

@@ -189,6 +189,24 @@ TEST(OccProjection, SameAnswerOnEveryThread) {
   EXPECT_EQ(mismatches.load(), 0) << "bitwise equal results expected";
 }
 
+// The global search remembers its answers per face and thread (bounded):
+// an answer asked again, before or after the memory is cleared, is the
+// answer computed first.
+TEST(OccProjection, AnAnswerAskedAgainIsTheSame) {
+  const Model m = bspline_solid();
+  const geom::Surface* bs = nullptr;
+  for (const auto& s : m.surfaces())
+    if (s.geometry->type() == geom::SurfaceType::BSpline) bs = &s;
+  ASSERT_NE(bs, nullptr);
+  const auto pts = probes(*bs->geometry);
+  std::vector<Vec2> first;
+  for (const auto& p : pts) first.push_back(bs->geometry->project(p).uv);
+  for (size_t k = 0; k < pts.size(); ++k) EXPECT_EQ(bs->geometry->project(pts[k]).uv, first[k]);
+  // More other points than the memory holds, then the first ones again.
+  for (int k = 0; k < 600; ++k) bs->geometry->project(Vec3(0.007 * k, 0.005 * k, 1.0));
+  for (size_t k = 0; k < pts.size(); ++k) EXPECT_EQ(bs->geometry->project(pts[k]).uv, first[k]);
+}
+
 // A backend without a local solver answers project_near with project.
 class FlatOnly final : public geom::SurfaceGeometry {
  public:
