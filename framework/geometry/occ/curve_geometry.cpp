@@ -1,6 +1,7 @@
 // CurveGeometry over an OCCT edge. The evaluator holds only the immutable
 // edge and builds its adaptor per call, so it is safe to share across threads.
 #include "framework/geometry/occ/detail.h"
+#include "framework/geometry/occ/shape_memo.h"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <Extrema_ExtPC.hxx>
@@ -9,9 +10,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <unordered_map>
 
 namespace cooperage::occ::detail {
 namespace {
+
+/// parameter_at_length()'s answers per edge and thread, by the exact arc
+/// length asked: the decomposition search plans every piece of every cut,
+/// and the pieces' facts walk the solid's own blend curves at the same
+/// lengths again (8 % of occt_CrankArm's refusal, tangent_departure.cpp).
+using ParametersAt = std::unordered_map<double, double>;
+using KnownParameters = ShapeMemo<std::shared_ptr<ParametersAt>, 4096>;
+/// Lengths asked of one edge that are remembered (cleared when full): a
+/// walk asks a few dozen; meshing a long curve asks each node's once.
+constexpr size_t kKnownLengths = 64;
 
 geom::CurveType curve_type(GeomAbs_CurveType t) {
   switch (t) {
@@ -80,6 +93,21 @@ class EdgeCurve final : public geom::CurveGeometry {
   double parameter_at_length(double s) const override {
     if (s <= 0.0) return t0_;
     if (s >= total_) return t1_;
+    const std::shared_ptr<ParametersAt>* known = KnownParameters::find(edge_);
+    if (!known) {
+      KnownParameters::remember(edge_, std::make_shared<ParametersAt>());
+      known = KnownParameters::find(edge_);
+    }
+    const std::shared_ptr<ParametersAt> at = *known;  // this thread's, kept while in use
+    if (const auto it = at->find(s); it != at->end()) return it->second;
+    if (at->size() >= kKnownLengths) at->clear();
+    const double t = parameter_at_length_uncached(s);
+    at->emplace(s, t);
+    return t;
+  }
+
+ private:
+  double parameter_at_length_uncached(double s) const {
     const BRepAdaptor_Curve c(edge_);
     const double guess = t0_ + (t1_ - t0_) * s / total_;
     GCPnts_AbscissaPoint ap(c, s, t0_, guess);
@@ -90,7 +118,6 @@ class EdgeCurve final : public geom::CurveGeometry {
     return std::clamp(ap.Parameter(), t0_, t1_);
   }
 
- private:
   TopoDS_Edge edge_;
   double t0_ = 0.0, t1_ = 0.0, total_ = 0.0;
   geom::CurveType type_ = geom::CurveType::Other;
