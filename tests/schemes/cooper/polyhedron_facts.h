@@ -146,4 +146,24 @@ inline std::vector<PolyFace> walls(double x0, double y0, double x1, double y1, d
           {oriented({{x0, y1, z0}, {x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}}, Vec3(-s, 0, 0))}};
 }
 
+/// The unit cube: surfaces 1-4 its walls (y = 0, x = 1, y = 1, x = 0),
+/// 5 its bottom, 6 its top.
+inline std::vector<PolyFace> cube() {
+  std::vector<PolyFace> f = walls(0, 0, 1, 1, 0, 1);
+  f.push_back({oriented(rect_xy(0, 0, 1, 1, 0), Vec3(0, 0, -1))});
+  f.push_back({oriented(rect_xy(0, 0, 1, 1, 1), Vec3(0, 0, 1))});
+  return f;
+}
+
+/// A 4 x 4 x 2 block with a 2 x 2 pocket 1 deep from the top.
+inline std::vector<PolyFace> pocket() {
+  const Vec3 up(0, 0, 1);
+  std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), -up)});
+  f.push_back({oriented(rect_xy(0, 0, 4, 4, 2), up), oriented(rect_xy(1, 1, 3, 3, 2), up, false)});
+  for (const PolyFace& w : walls(1, 1, 3, 3, 1, 2, true)) f.push_back(w);
+  f.push_back({oriented(rect_xy(1, 1, 3, 3, 1), up)});
+  return f;
+}
+
 }  // namespace cooperage::cooper::facts_test

@@ -20,20 +20,15 @@
 namespace cooperage::cooper {
 namespace {
 
+using facts_test::cube;
 using facts_test::oriented;
+using facts_test::pocket;
 using facts_test::PolyFace;
 using facts_test::rect_xy;
 using facts_test::walls;
 using geom::Vec3;
 
 const Vec3 kUp(0, 0, 1), kDown(0, 0, -1);
-
-std::vector<PolyFace> cube() {
-  std::vector<PolyFace> f = walls(0, 0, 1, 1, 0, 1);
-  f.push_back({oriented(rect_xy(0, 0, 1, 1, 0), kDown)});
-  f.push_back({oriented(rect_xy(0, 0, 1, 1, 1), kUp)});
-  return f;
-}
 
 // A 4 x 4 x 2 block with a 1 x 1 x 1 boss on top.
 std::vector<PolyFace> boss_on_block() {
@@ -43,17 +38,6 @@ std::vector<PolyFace> boss_on_block() {
                oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 2), kUp, false)});
   for (const PolyFace& w : walls(1.5, 1.5, 2.5, 2.5, 2, 3)) f.push_back(w);
   f.push_back({oriented(rect_xy(1.5, 1.5, 2.5, 2.5, 3), kUp)});
-  return f;
-}
-
-// A 4 x 4 x 2 block with a 2 x 2 pocket 1 deep from the top.
-std::vector<PolyFace> pocket() {
-  std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
-  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
-  f.push_back(
-      {oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1, 1, 3, 3, 2), kUp, false)});
-  for (const PolyFace& w : walls(1, 1, 3, 3, 1, 2, true)) f.push_back(w);
-  f.push_back({oriented(rect_xy(1, 1, 3, 3, 1), kUp)});
   return f;
 }
 

@@ -16,31 +16,13 @@
 namespace cooperage::cooper {
 namespace side_parity_test {
 
+using facts_test::cube;
 using facts_test::oriented;
+using facts_test::pocket;
 using facts_test::PolyFace;
-using facts_test::rect_xy;
-using facts_test::walls;
 using geom::Vec3;
 
 const Vec3 kUp(0, 0, 1), kDown(0, 0, -1);
-
-std::vector<PolyFace> brick() {
-  std::vector<PolyFace> f = walls(0, 0, 1, 1, 0, 1);       // surfaces 1-4
-  f.push_back({oriented(rect_xy(0, 0, 1, 1, 0), kDown)});  // 5
-  f.push_back({oriented(rect_xy(0, 0, 1, 1, 1), kUp)});    // 6
-  return f;
-}
-
-// A 4 x 4 x 2 block with a 2 x 2 pocket 1 deep from the top.
-std::vector<PolyFace> pocket() {
-  std::vector<PolyFace> f = walls(0, 0, 4, 4, 0, 2);
-  f.push_back({oriented(rect_xy(0, 0, 4, 4, 0), kDown)});
-  f.push_back(
-      {oriented(rect_xy(0, 0, 4, 4, 2), kUp), oriented(rect_xy(1, 1, 3, 3, 2), kUp, false)});
-  for (const PolyFace& w : walls(1, 1, 3, 3, 1, 2, true)) f.push_back(w);
-  f.push_back({oriented(rect_xy(1, 1, 3, 3, 1), kUp)});
-  return f;
-}
 
 // An L-shaped plate 1 thick: its top and bottom have a 270-degree corner.
 std::vector<PolyFace> l_plate() {
@@ -85,7 +67,7 @@ int refused_by_parity_only_when_the_lattice_refuses(const std::vector<PolyFace>&
 
 TEST(SideParity, RefusesOnlySortingsTheLatticeRefuses) {
   for (const auto& [name, faces] : std::vector<std::pair<std::string, std::vector<PolyFace>>>{
-           {"brick", brick()}, {"pocket", pocket()}, {"L plate", l_plate()}}) {
+           {"cube", cube()}, {"pocket", pocket()}, {"L plate", l_plate()}}) {
     SCOPED_TRACE(name);
     int lattices = 0;
     const int refused = refused_by_parity_only_when_the_lattice_refuses(faces, &lattices);
@@ -99,7 +81,7 @@ TEST(SideParity, RefusesOnlySortingsTheLatticeRefuses) {
 }
 
 TEST(SideParity, ABricksOppositeFacesAreCapsAndOneFaceAloneIsNot) {
-  const VolumeFacts facts = facts_test::polyhedron_facts(brick());
+  const VolumeFacts facts = facts_test::polyhedron_facts(cube());
   const SideParity parity(facts);
   // Top alone: the walls carry "along" down to the bottom's four edges,
   // but the bottom square's edges alternate roles as a side.

@@ -92,6 +92,14 @@ Model bspline_solid() {
   return wb.build_model();
 }
 
+// Its B-spline face (null when there is none).
+const geom::Surface* bspline_face(const Model& m) {
+  const geom::Surface* out = nullptr;
+  for (const auto& s : m.surfaces())
+    if (s.geometry->type() == geom::SurfaceType::BSpline) out = &s;
+  return out;
+}
+
 TEST(OccProjection, WarmStartAgreesWithTheGlobalSearch) {
   const Model m = bspline_solid();
   int checked = 0;
@@ -163,9 +171,7 @@ TEST(OccProjection, AFootJustOutsideAnAnalyticFaceIsTheRimBesideIt) {
 
 TEST(OccProjection, SameAnswerOnEveryThread) {
   const Model m = bspline_solid();
-  const geom::Surface* bs = nullptr;
-  for (const auto& s : m.surfaces())
-    if (s.geometry->type() == geom::SurfaceType::BSpline) bs = &s;
+  const geom::Surface* bs = bspline_face(m);
   ASSERT_NE(bs, nullptr);
   const auto pts = probes(*bs->geometry);
   std::vector<geom::SurfaceProjection> serial, serial_near;
@@ -194,9 +200,7 @@ TEST(OccProjection, SameAnswerOnEveryThread) {
 // answer computed first.
 TEST(OccProjection, AnAnswerAskedAgainIsTheSame) {
   const Model m = bspline_solid();
-  const geom::Surface* bs = nullptr;
-  for (const auto& s : m.surfaces())
-    if (s.geometry->type() == geom::SurfaceType::BSpline) bs = &s;
+  const geom::Surface* bs = bspline_face(m);
   ASSERT_NE(bs, nullptr);
   const auto pts = probes(*bs->geometry);
   std::vector<Vec2> first;
