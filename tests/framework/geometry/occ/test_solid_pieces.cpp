@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <thread>
 
@@ -72,7 +73,13 @@ TEST(SolidPieces, RememberedFaceAreasAndBoxesEqualFreshOnes) {
   for (const auto& v : warm.volumes()) {
     EXPECT_EQ(v.box.min, fresh.volume(v.id).box.min);
     EXPECT_EQ(v.box.max, fresh.volume(v.id).box.max);
+    // The uncut faces' remembered volume terms, the fresh ones alike.
+    EXPECT_EQ(v.volume, fresh.volume(v.id).volume);
   }
+  // Cut at z = 1 of 3: a third and two thirds of pi r^2 h.
+  const double lower = std::min(warm.volume(1).volume, warm.volume(2).volume);
+  EXPECT_NEAR(lower, M_PI * 4.0 * 1.0, 1e-9 * M_PI * 12.0);
+  EXPECT_NEAR(total_volume(warm), M_PI * 4.0 * 3.0, 1e-9 * M_PI * 12.0);
   // The cylinder's tight box, not its control points' (a circle's B-spline
   // hull would reach past the radius).
   const geom::BoundingBox box = warm.volume(1).box;
