@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <unordered_map>
 
 namespace cooperage::occ::detail {
 namespace {
@@ -20,11 +19,10 @@ namespace {
 /// length asked: the decomposition search plans every piece of every cut,
 /// and the pieces' facts walk the solid's own blend curves at the same
 /// lengths again (8 % of occt_CrankArm's refusal, tangent_departure.cpp).
-using ParametersAt = std::unordered_map<double, double>;
+/// 64 lengths an edge (a walk asks a few dozen; meshing a long curve asks
+/// each node's once), 4,096 edges.
+using ParametersAt = QueryMemo<double, double, 64>;
 using KnownParameters = ShapeMemo<std::shared_ptr<ParametersAt>, 4096>;
-/// Lengths asked of one edge that are remembered (cleared when full): a
-/// walk asks a few dozen; meshing a long curve asks each node's once.
-constexpr size_t kKnownLengths = 64;
 
 geom::CurveType curve_type(GeomAbs_CurveType t) {
   switch (t) {
@@ -93,17 +91,14 @@ class EdgeCurve final : public geom::CurveGeometry {
   double parameter_at_length(double s) const override {
     if (s <= 0.0) return t0_;
     if (s >= total_) return t1_;
-    const std::shared_ptr<ParametersAt>* known = KnownParameters::find(edge_);
-    if (!known) {
-      KnownParameters::remember(edge_, std::make_shared<ParametersAt>());
-      known = KnownParameters::find(edge_);
+    std::shared_ptr<ParametersAt> at;  // this thread's, kept while in use
+    if (const auto* known = KnownParameters::find(edge_)) {
+      at = *known;
+    } else {
+      at = std::make_shared<ParametersAt>();
+      KnownParameters::remember(edge_, at);
     }
-    const std::shared_ptr<ParametersAt> at = *known;  // this thread's, kept while in use
-    if (const auto it = at->find(s); it != at->end()) return it->second;
-    if (at->size() >= kKnownLengths) at->clear();
-    const double t = parameter_at_length_uncached(s);
-    at->emplace(s, t);
-    return t;
+    return at->answer(s, [&] { return parameter_at_length_uncached(s); });
   }
 
  private:

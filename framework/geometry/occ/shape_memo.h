@@ -7,6 +7,9 @@
 #include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <cstddef>
+#include <unordered_map>
+
 namespace cooperage::occ::detail {
 
 template <class T, int kMax>
@@ -25,6 +28,25 @@ class ShapeMemo {
     thread_local Map map;
     return map;
   }
+};
+
+/// A function's answers by their exact query, at most kMax (cleared when
+/// full): for a pure function asked the same queries again (a search
+/// planning every piece of every cut). Not thread-safe; keep one per thread.
+template <class Key, class Value, std::size_t kMax, class Hash = std::hash<Key>>
+class QueryMemo {
+ public:
+  template <class Compute>
+  Value answer(const Key& key, Compute&& compute) {
+    if (const auto it = known_.find(key); it != known_.end()) return it->second;
+    if (known_.size() >= kMax) known_.clear();
+    const Value value = compute();
+    known_.emplace(key, value);
+    return value;
+  }
+
+ private:
+  std::unordered_map<Key, Value, Hash> known_;
 };
 
 }  // namespace cooperage::occ::detail

@@ -204,16 +204,7 @@ size_t SurfaceProjector::PointKeyHash::operator()(const PointKey& k) const {
 }
 
 Vec2 SurfaceProjector::global(const gp_Pnt& p) const {
-  // Bounded (a few kB a face and thread): a mesh asks few points twice, a
-  // search its vertices and curve points on every piece.
-  constexpr size_t kKnownMax = 256;
-  auto& known = known_.local();
-  const PointKey key{p.X(), p.Y(), p.Z()};
-  if (const auto it = known.find(key); it != known.end()) return it->second;
-  if (known.size() >= kKnownMax) known.clear();
-  const Vec2 uv = global_uncached(p);
-  known.emplace(key, uv);
-  return uv;
+  return known_.local().answer({p.X(), p.Y(), p.Z()}, [&] { return global_uncached(p); });
 }
 
 Vec2 SurfaceProjector::global_uncached(const gp_Pnt& p) const {

@@ -14,6 +14,7 @@
 // Internal to framework/geometry/occ (names OCCT types).
 #pragma once
 
+#include "framework/geometry/occ/shape_memo.h"
 #include "framework/geometry/types.h"
 
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -27,7 +28,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 namespace cooperage::occ::detail {
@@ -96,7 +96,9 @@ class SurfaceProjector {
   struct PointKeyHash {
     size_t operator()(const PointKey& k) const;
   };
-  mutable tbb::enumerable_thread_specific<std::unordered_map<PointKey, geom::Vec2, PointKeyHash>>
+  /// At most 256 a face and thread (a few kB): a mesh asks few points
+  /// twice, a search its vertices and curve points on every piece.
+  mutable tbb::enumerable_thread_specific<QueryMemo<PointKey, geom::Vec2, 256, PointKeyHash>>
       known_;
   mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAdaptor_Surface>> adaptors_;
   struct Sample {
