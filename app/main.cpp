@@ -1,7 +1,6 @@
 // The `cooperage` command line: parse arguments, call the library, print.
 // Exit codes: 0 success, 1 a quality check failed, 2 bad input (file,
 // journal, geometry, no applicable scheme), 3 internal error.
-#include "huge_pages.h"
 #include "model_report.h"
 #include "plan_command.h"
 #include "progress.h"
@@ -93,7 +92,6 @@ void print_error(const MeshingError& e) {
 }
 
 int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
-  app::share_heap_when_few_threads(limits.threads);
   scheme::Registry registry;
   register_schemes(registry, run_plugins(limits.plugins, job.plugins));
   app::Progress progress(!limits.quiet);

@@ -11,7 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <exception>
 #include <map>
+
+#include <tbb/parallel_for.h>
 
 namespace cooperage::decompose {
 namespace {
@@ -22,6 +25,7 @@ struct Evaluated {
   occ::SolidPieces pieces;
   std::vector<PieceVerdict> verdicts;
   CutOutcome outcome;
+  double thinnest = 0.0;  ///< model units
   double score = 0.0;
   geom::Model model;
 };
@@ -81,6 +85,27 @@ std::string surface_kinds(const geom::Model& model, int volume) {
   for (const auto& [type, n] : count)
     out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + geom::to_string(type);
   return out;
+}
+
+// One cut's pieces judged: their thickness across the cut, their model and
+// a-priori verdicts. This reads the shapes only, so cuts are judged in
+// parallel. Nullopt for a sliver or a model the kernel cannot build.
+std::optional<Evaluated> judge(occ::SolidPieces pieces, const CutCandidate& c, double size,
+                               const scheme::Registry& registry, const scheme::Settings* settings) {
+  Evaluated e;
+  e.candidate = &c;
+  e.pieces = std::move(pieces);
+  try {
+    e.thinnest = thinnest_piece(e.pieces, c.surface);
+    if (e.thinnest < size) return std::nullopt;  // a sliver thinner than one element layer
+    e.model = e.pieces.build_model(false);
+  } catch (const MeshingError&) {
+    return std::nullopt;
+  }
+  for (const geom::Volume& v : e.model.volumes())
+    e.verdicts.push_back(best_scheme(e.model, v.id, registry, settings));
+  e.outcome = summarise(e.model, e.verdicts, e.thinnest, size);
+  return e;
 }
 
 AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
@@ -190,7 +215,9 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     candidates_ = static_cast<int>(candidates.size());
     face_kinds_ = surface_kinds(model, 1);
   }
-  std::vector<Evaluated> evaluated;
+  // The cuts given to the kernel, chosen before any is made: the budget and
+  // the counters are then those of any thread count.
+  std::vector<const CutCandidate*> chosen;
   for (const CutCandidate& c : candidates) {
     if (tried_ >= options_.max_cuts) break;
     // A cut must leave at least one element layer on each side.
@@ -199,27 +226,48 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     if (s.below > -size || s.above < size) continue;
     if (depth == 0) ++crossing_;
     ++tried_;
-    Evaluated e;
-    e.candidate = &c;
-    double thinnest = 0.0;
+    chosen.push_back(&c);
+  }
+  // The kernel's cuts one after another, in the candidates' order: a split
+  // may change the solid it is given in place (a vertex's tolerance, an
+  // edge's p-curve on the cut), so each sees what the ones before left, as
+  // on one thread. Copying instead (the kernel's non-destructive mode) made
+  // occt_Pump_TopCover's search 40 % slower: its faces' remembered measures
+  // were lost with the copies.
+  std::vector<std::optional<occ::SolidPieces>> cut(chosen.size());
+  for (size_t i = 0; i < chosen.size(); ++i) {
     try {
-      e.pieces = solid.split(0, c.surface);
-      if (e.pieces.size() < 2) continue;
-      thinnest = thinnest_piece(e.pieces, c.surface);
-      if (thinnest < size) continue;  // a sliver thinner than one element layer
-      e.model = e.pieces.build_model(false);
+      occ::SolidPieces pieces = solid.split(0, chosen[i]->surface);
+      if (pieces.size() >= 2) cut[i] = std::move(pieces);
     } catch (const MeshingError&) {
-      continue;  // the kernel could not make this cut: try the next
+      // the kernel could not make this cut: try the next
     }
-    for (const geom::Volume& v : e.model.volumes())
-      e.verdicts.push_back(best_scheme(e.model, v.id, registry_, options_.settings));
-    e.outcome = summarise(e.model, e.verdicts, thinnest, size);
+  }
+  // Their pieces judged in parallel, kept in the candidates' order; the
+  // first error in that order is the one raised.
+  std::vector<std::optional<Evaluated>> made(chosen.size());
+  std::vector<std::exception_ptr> errors(chosen.size());
+  arena_.execute([&] {
+    tbb::parallel_for(size_t{0}, chosen.size(), [&](size_t i) {
+      if (!cut[i]) return;
+      try {
+        made[i] = judge(std::move(*cut[i]), *chosen[i], size, registry_, options_.settings);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  });
+  std::vector<Evaluated> evaluated;
+  for (size_t i = 0; i < chosen.size(); ++i) {
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    if (!made[i]) continue;
+    Evaluated& e = *made[i];
     if (log::threshold() <= log::Level::Info) {
       std::string schemes;
       for (const auto& v : e.verdicts) schemes += " " + (v.ok ? v.scheme : std::string("-"));
-      log::info("decompose: depth " + std::to_string(depth) + ", " + c.through + " (" +
-                describe(c.surface) + "): " + std::to_string(e.outcome.pieces) + " pieces," +
-                schemes + ", thinnest " + std::to_string(thinnest));
+      log::info("decompose: depth " + std::to_string(depth) + ", " + e.candidate->through + " (" +
+                describe(e.candidate->surface) + "): " + std::to_string(e.outcome.pieces) +
+                " pieces," + schemes + ", thinnest " + std::to_string(e.thinnest));
     }
     evaluated.push_back(std::move(e));
   }

@@ -9,6 +9,8 @@
 #include <functional>
 #include <optional>
 
+#include <tbb/task_arena.h>
+
 namespace cooperage::decompose {
 
 /// The cuts found for one solid and the solids they give.
@@ -22,7 +24,10 @@ class CutSearch {
  public:
   CutSearch(const scheme::Registry& registry, const ModelCheck& check,
             const DecomposeOptions& options)
-      : registry_(registry), check_(check), options_(options) {}
+      : registry_(registry),
+        check_(check),
+        options_(options),
+        arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic) {}
 
   /// The decomposition of `solid`, or nullopt (then failure() says why).
   /// A second pass, within what is left of the budget of cuts, adds the
@@ -63,6 +68,7 @@ class CutSearch {
   const scheme::Registry& registry_;
   const ModelCheck& check_;
   DecomposeOptions options_;
+  tbb::task_arena arena_;  ///< the cuts of one level are made in parallel
   int tried_ = 0;
   bool last_resort_ = false;  ///< the second pass: meridian cuts, rings of sweeps
   int crossing_ = 0;          ///< candidates crossing the volume by a layer on each side

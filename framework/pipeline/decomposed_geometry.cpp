@@ -4,6 +4,7 @@
 #include "framework/geometry/occ/solid_pieces.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/build_geometry.h"
+#include "framework/pipeline/mesher.h"
 
 #include <algorithm>
 #include <chrono>
@@ -87,7 +88,7 @@ double decomposition_size(const io::MeshSettings& settings, const geom::Model& m
 }
 
 DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::Registry& registry,
-                                             const Planner& planner, int dim) {
+                                             const Planner& planner, int dim, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
   occ::Workbench bench;
   bench.set_imprint_merge(job.imprint_merge);
@@ -146,6 +147,7 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   decompose::DecomposeOptions options;
   options.size = decomposition_size(settings, out.model);
   options.settings = &job_settings;
+  options.threads = limit_threads_count(threads > 0 ? threads : settings.threads);
   decompose::Decomposed d = decompose::decompose(occ::SolidPieces::of(bench, build), out.model,
                                                  registry, check, options, refused);
   out.model = std::move(d.model);

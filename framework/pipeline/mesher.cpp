@@ -683,7 +683,8 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   auto stage_start = Clock::now();
   RunResult result;
   {
-    DecomposedGeometry g = build_decomposed_geometry(job, registry, options.planner, options.dim);
+    DecomposedGeometry g =
+        build_decomposed_geometry(job, registry, options.planner, options.dim, options.threads);
     result.model = std::move(g.model);
     result.decomposition = std::move(g.decomposition);
     check_groups(result.model, job.groups);

@@ -131,6 +131,7 @@ TEST(DecomposeMeshes, TheSameCutsAndMeshForAnyThreadCount) {
   const auto& b = two.run.decomposition.volumes;
   ASSERT_EQ(a.size(), b.size());
   for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].tried, b[k].tried);
     ASSERT_EQ(a[k].cuts.size(), b[k].cuts.size());
     for (size_t c = 0; c < a[k].cuts.size(); ++c)
       EXPECT_EQ(a[k].cuts[c].through, b[k].cuts[c].through);
