@@ -1,7 +1,9 @@
 #include "framework/decompose/decompose.h"
 
 #include "framework/core/error.h"
+#include "framework/core/log.h"
 #include "framework/decompose/piece_verdict.h"
+#include "framework/decompose/same_part.h"
 #include "framework/decompose/search_cuts.h"
 
 #include <algorithm>
@@ -121,7 +123,15 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
   if (refused.empty()) {
     out.model = model;
   } else {
-    out.model = result.build_model(true);
+    // Glued, as the trial models were (the solids only touch), unless that
+    // changed the part's skin or volume: a face pair the glue left unmerged
+    // would add twice its area to the skin; then fused in full. gmsh_as1-tu-203:
+    // 0.9 s of 4.8 (a fuse of 21 solids), the same model.
+    out.model = result.build_model(true, true);
+    if (!same_skin_and_volume(out.model, model)) {
+      log::info("decompose: the glued pieces differ from the part; fusing them in full");
+      out.model = result.build_model(true);
+    }
     if (static_cast<int>(out.model.volumes().size()) != result.size()) {
       throw MeshingError(ErrorCode::GeometryError,
                          "decomposition: imprinting the pieces changed their number (" +

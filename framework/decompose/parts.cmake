@@ -7,5 +7,6 @@ cooperage_framework_part(decompose SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/piece_verdict.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cut_score.cpp
   ${CMAKE_CURRENT_LIST_DIR}/search_cuts.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/same_part.cpp
   ${CMAKE_CURRENT_LIST_DIR}/decompose.cpp
   ${CMAKE_CURRENT_LIST_DIR}/report_text.cpp)

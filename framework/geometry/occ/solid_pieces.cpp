@@ -207,13 +207,13 @@ SolidPieces SolidPieces::replace(int index, const SolidPieces& pieces) const {
   return out;
 }
 
-geom::Model SolidPieces::build_model(bool imprint_merge, bool trial) const {
+geom::Model SolidPieces::build_model(bool imprint_merge, bool glue) const {
   silence_kernel_output();
   return detail::guarded(ErrorCode::GeometryError, "building the model of the pieces", [&] {
     std::vector<detail::Piece> solids = impl_->solids, faces = impl_->faces;
     if (solids.empty() && faces.empty())
       throw MeshingError(ErrorCode::InvalidInput, "no shapes to build a model from");
-    if (imprint_merge) detail::imprint_merge(solids, faces, trial && impl_->touching_only);
+    if (imprint_merge) detail::imprint_merge(solids, faces, glue && impl_->touching_only);
     return detail::number_model(solids, faces, impl_->names, impl_->unit_in_metres);
   });
 }

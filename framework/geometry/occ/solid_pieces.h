@@ -75,11 +75,11 @@ class SolidPieces {
   /// again so touching solids share faces (needed after cuts that cross a
   /// neighbour's face; the pieces of one split share their cut faces
   /// already). Volumes keep the solid order. Throws MeshingError.
-  /// `trial`: a model to judge cuts by, not to mesh; solids known only to
-  /// touch are then glued (OCCT's gluing skips the intersections of faces
-  /// that do not coincide: a third faster), which is exact only while
-  /// that holds, so the model that is meshed is fused in full.
-  geom::Model build_model(bool imprint_merge, bool trial = false) const;
+  /// `glue`: solids known only to touch are glued (OCCT's gluing skips the
+  /// intersections of faces that do not coincide: a third faster), which is
+  /// exact only while that holds; the decomposition checks a glued model it
+  /// meshes against the part (same skin and volume) and else fuses in full.
+  geom::Model build_model(bool imprint_merge, bool glue = false) const;
 
   struct Impl;
 

@@ -188,11 +188,11 @@ void expect_same(const Shape& a, const Shape& b) {
   EXPECT_NEAR(a.volume, b.volume, 1e-9);
 }
 
-// A trial model glues pieces that only touch (build_model(true, true)); it
+// A model glues pieces that only touch (build_model(true, true)); it
 // must imprint as the full fuse does: a piece cut again whose cut ends
 // inside a neighbour's face (b's bottom, split by the first cut and then
 // by the second across one half), and an edge of a cut lying in it.
-TEST(SolidPieces, ATrialModelOfTouchingPiecesImprintsAsTheFullFuse) {
+TEST(SolidPieces, AGluedModelOfTouchingPiecesImprintsAsTheFullFuse) {
   Workbench bench;
   bench.brick("a", {0, 0, 0}, {4, 4, 1});
   bench.brick("b", {0, 0, 1}, {4, 4, 1});
@@ -215,8 +215,8 @@ TEST(SolidPieces, ATrialModelOfTouchingPiecesImprintsAsTheFullFuse) {
   expect_same(shape_of(cored.build_model(true, true)), shape_of(cored.build_model(true)));
 }
 
-// Solids imported without imprinting may overlap: a trial model fuses
-// them in full (glued, the overlap would be lost).
+// Solids imported without imprinting may overlap: a model fuses
+// them in full, glue asked or not (glued, the overlap would be lost).
 TEST(SolidPieces, OverlappingSolidsAreNeverGlued) {
   Workbench bench;
   bench.brick("a", {0, 0, 0}, {2, 2, 2});
