@@ -1,6 +1,7 @@
 // The `cooperage` command line: parse arguments, call the library, print.
 // Exit codes: 0 success, 1 a quality check failed, 2 bad input (file,
 // journal, geometry, no applicable scheme), 3 internal error.
+#include "huge_pages.h"
 #include "model_report.h"
 #include "plan_command.h"
 #include "progress.h"
@@ -104,6 +105,9 @@ int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   options.allow_partial = limits.allow_partial;
   options.progress = [&](const std::string& stage, std::size_t done, std::size_t total) {
     progress.update(stage, done, total);
+  };
+  options.after_geometry = [threads = limits.threads] {
+    app::share_heap_when_few_threads(threads);
   };
   try {
     const pipeline::RunResult result = pipeline::run_job(job, registry, options);

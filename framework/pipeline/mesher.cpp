@@ -692,6 +692,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
     if (!result.decomposition.volumes.empty())
       result.stages.push_back({"decompose", seconds_since(stage_start) - g.geometry_seconds});
   }
+  if (options.after_geometry) options.after_geometry();
   MeshOptions opts = options;
   if (opts.threads == 0) opts.threads = job.mesh->threads;
   // The exports are written (staged, not yet renamed) beside the mesher's

@@ -53,6 +53,10 @@ struct MeshOptions {
   /// returns or throws. It must only read the mesh, and must not throw. The
   /// mesh returned is the one it saw unless MeshResult::mesh_replaced.
   std::function<void(const mesh::MeshDB&)> beside_checks;
+  /// Optional: called by run_job once the geometry (and its decomposition)
+  /// is built, before the meshing starts its threads (the command tunes its
+  /// heap there: app/huge_pages.cpp).
+  std::function<void()> after_geometry;
 };
 
 /// Wall-clock time of one stage of a run.
