@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <exception>
+#include <limits>
 #include <map>
 
 #include <tbb/parallel_for.h>
