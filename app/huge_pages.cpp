@@ -84,8 +84,9 @@ struct HeapAdvice {
 // lock could cost more than the faults; that was not measured, so glibc's
 // default stays. Called once the geometry is built: the decomposition's
 // search judges cuts on the worker threads, which one arena's lock made
-// slower on two threads than on one (gmsh_Kurbelwelle 1.57 s against
-// 1.38); threads that took their own arena then keep it.
+// slower on two threads than on one (gmsh_Kurbelwelle 1.33 s against
+// 1.22; 1.14 s with an arena per thread); threads that took their own
+// arena then keep it.
 void cooperage::app::share_heap_when_few_threads(int requested) {
   if (cooperage::pipeline::limit_threads_count(requested) <= 2) mallopt(M_ARENA_MAX, 1);
 }

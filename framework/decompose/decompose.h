@@ -22,7 +22,7 @@ struct DecomposeOptions {
   int max_cuts = 80;  ///< candidate cuts given to the kernel, per volume in all
   int max_depth = 3;  ///< cuts along one chain (a cut, a cut of a piece, ...)
   int branches = 2;   ///< cuts that leave pieces to cut again, explored per level
-  int threads = 0;    ///< threads making the cuts of a level (0: all cores); same result for any
+  int threads = 0;    ///< threads judging the cuts of a level (0: all cores); same result for any
   /// The job's settings (null: defaults), for every a-priori verdict on the
   /// volume and its pieces; per-entity settings never reach a decomposition
   /// (the pipeline refuses them first: cuts renumber the entities).

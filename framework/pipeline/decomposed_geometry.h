@@ -26,7 +26,7 @@ struct DecomposedGeometry {
 /// so a job that sets entities by id is not decomposed: a volume no scheme
 /// applies to is then refused naming the setting (unless the volume's own
 /// scheme is pinned, when the planner's refusal of the pin stands).
-/// The search makes its cuts on `threads` threads (0: the job's <mesh
+/// The search judges its cuts on `threads` threads (0: the job's <mesh
 /// threads>); the result is the same for any number.
 /// @throws MeshingError as build_geometry() and decompose::decompose() do.
 DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::Registry& registry,
