@@ -6,7 +6,7 @@
 find_path(OCCT_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade REQUIRED)
 # OCCT_LIBRARIES: what the framework links. The toolkits only some runs
 # need are linked by modules the framework opens on first use
-# (framework/geometry/occ/lazy_module.h): OCCT_EXCHANGE_LIBRARIES (STEP,
+# (framework/core/lazy_module.h): OCCT_EXCHANGE_LIBRARIES (STEP,
 # IGES) and OCCT_LOFT_LIBRARIES (ThruSections; TKOffset brings TKFillet and
 # TKBool). OCCT_TEST_LIBRARIES: the modelling toolkits tests use directly
 # (a fillet).

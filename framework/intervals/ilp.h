@@ -1,6 +1,6 @@
 // Internal: one component of the interval problem as a mixed-integer program,
-// built and solved with CBC (CbcModel over OsiClpSolverInterface). The
-// formulation is documented in solve.h.
+// built here and solved with CBC (CbcModel over OsiClpSolverInterface) in
+// the module cbc_module.cpp. The formulation is documented in solve.h.
 #pragma once
 
 #include <optional>
@@ -49,6 +49,10 @@ struct IlpResult {
 ///                  some large, equality-dense components)
 IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& rows,
                     const SolveOptions& options, const std::vector<int>* start = nullptr);
+
+/// Opens the CBC module now (it is opened on the first solve otherwise).
+/// @throws MeshingError(Internal) when it cannot be loaded
+void load_solver();
 
 /// True when the values satisfy every row and column bound.
 bool satisfies(const std::vector<Column>& columns, const std::vector<Row>& rows,

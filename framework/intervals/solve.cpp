@@ -417,6 +417,13 @@ std::string memo_key(const Component& comp) {
 
 }  // namespace
 
+void preload_solver() noexcept {
+  try {
+    detail::load_solver();
+  } catch (...) {  // the first solve says why
+  }
+}
+
 IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& options) {
   const auto& curves = problem.curves();
   std::map<int, int> index_of;

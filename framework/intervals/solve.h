@@ -136,4 +136,10 @@ struct IntervalSolution {
 ///         without a solution.
 IntervalSolution solve(const IntervalProblem& problem, const SolveOptions& options = {});
 
+/// Loads the solver (CBC, a module opened on the first solve otherwise) now:
+/// a caller with a moment to spare, the import waiting for its child,
+/// hides the ~10 ms of linking there. A failure is left for the first solve
+/// to report.
+void preload_solver() noexcept;
+
 }  // namespace cooperage::intervals

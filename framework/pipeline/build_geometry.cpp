@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/workbench.h"
+#include "framework/intervals/solve.h"
 #include "framework/io/export/write_mesh.h"
 #include "framework/io/journal_reader.h"
 
@@ -81,21 +82,23 @@ geom::Model build_geometry(const io::Job& job) {
   return bench.build_model(options);
 }
 
-void run_geometry(const io::Job& job, occ::Workbench& bench) {
+void run_geometry(const io::Job& job, occ::Workbench& bench, bool will_mesh) {
   if (job.geometry.empty()) {
     throw MeshingError(ErrorCode::InvalidInput,
                        (job.file.empty() ? std::string("job") : clip_path(job.file)) +
                            ": the journal defines no geometry");
   }
-  // The export libraries load while the first import's child reads its file
-  // (the Exodus II library: ~20 ms of dynamic linking, otherwise paid in
-  // the export on one thread). In this thread, after the fork: a child must
-  // not inherit a thread in the middle of dlopen.
+  // The interval solver's and the export's libraries load while the first
+  // import's child reads its file (CBC's modules and the Exodus II library:
+  // ~10 and ~20 ms of dynamic linking, otherwise paid on the way). In this
+  // thread, after the fork: a child must not inherit a thread in the middle
+  // of dlopen.
   std::vector<std::string> exports;
   for (const io::ExportSetting& e : job.exports)
     exports.push_back(resolve_path(job.base_dir, e.file));
-  if (!exports.empty()) {
-    bench.set_while_importing([exports] {
+  if (will_mesh || !exports.empty()) {
+    bench.set_while_importing([exports, will_mesh] {
+      if (will_mesh) intervals::preload_solver();
       for (const std::string& path : exports) io::prepare_export(path);
     });
   }

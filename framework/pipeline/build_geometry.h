@@ -22,7 +22,8 @@ geom::Model build_geometry(const io::Job& job);
 std::string where_prefix(const io::SourceLocation& where);
 /// Runs job.geometry in order on `bench` (build_geometry() without the
 /// model), for callers that go on working on the shapes (decomposition).
-void run_geometry(const io::Job& job, occ::Workbench& bench);
+/// `will_mesh`: the interval solver is loaded while an import's child reads.
+void run_geometry(const io::Job& job, occ::Workbench& bench, bool will_mesh = false);
 
 /// Reads a model from a CAD file (.step/.stp/.iges/.igs/.brep) or a journal
 /// (.xml, geometry only).

@@ -92,7 +92,7 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   const auto t0 = std::chrono::steady_clock::now();
   occ::Workbench bench;
   bench.set_imprint_merge(job.imprint_merge);
-  run_geometry(job, bench);
+  run_geometry(job, bench, /*will_mesh=*/true);
   occ::BuildOptions build;
   build.imprint_merge = job.imprint_merge;
   DecomposedGeometry out;

@@ -1,7 +1,7 @@
 // Issue 20, start-up: OCCT's STEP/IGES toolkits are loaded only when a STEP
 // or IGES file is read or written, its loft toolkit (with the fillet and
-// boolean toolkits it needs) only for a <loft>
-// (framework/geometry/occ/lazy_module.h). The
+// boolean toolkits it needs) only for a <loft>, CBC only for a run that
+// assigns intervals (framework/core/lazy_module.h). The
 // dynamic loader's own trace (LD_DEBUG=files names every library it opens)
 // tells which libraries a command mapped.
 #include "run_command.h"
@@ -66,6 +66,24 @@ TEST_F(StartupLibraries, AStepFileLoadsTheExchangeModuleAndReads) {
     EXPECT_TRUE(opened(info.err, "libcooperage_occ_exchange")) << file;
     EXPECT_TRUE(opened(info.err, "libTKXSBase")) << file;
   }
+}
+
+TEST_F(StartupLibraries, CbcIsLoadedOnlyByARunThatAssignsIntervals) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 3, 4});
+  bench.write(path("b.step"), {});
+  const auto version = testing::run_command("LD_DEBUG=files " + kCli + " --version");
+  const auto info = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto mesh = testing::run_command("LD_DEBUG=files " + kCli + " mesh " + path("b.step") +
+                                         " --size 1 -q -o " + path("b.vtu"));
+  for (const auto* r : {&version, &info, &mesh}) ASSERT_EQ(r->exit_code, 0) << r->err;
+  for (const char* library : {"libcooperage_cbc", "libCbc", "libClp", "libCoinUtils", "libOsi"}) {
+    EXPECT_FALSE(opened(version.err, library)) << library << " mapped by --version";
+    EXPECT_FALSE(opened(info.err, library)) << library << " mapped by info";
+  }
+  EXPECT_TRUE(opened(mesh.err, "libcooperage_cbc"));
+  EXPECT_TRUE(opened(mesh.err, "libCbcSolver"));
+  EXPECT_TRUE(std::filesystem::exists(path("b.vtu")));
 }
 
 TEST_F(StartupLibraries, ALoftLoadsTheLoftModule) {

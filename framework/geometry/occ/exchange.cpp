@@ -1,7 +1,7 @@
 #include "framework/geometry/occ/exchange.h"
 
 #include "framework/core/error.h"
-#include "framework/geometry/occ/lazy_module.h"
+#include "framework/core/lazy_module.h"
 
 #include <dlfcn.h>
 

@@ -3,7 +3,7 @@
 // (loft_module.cpp). The sections are validated here so that OCCT only sees
 // input it can loft.
 #include "framework/geometry/occ/detail.h"
-#include "framework/geometry/occ/lazy_module.h"
+#include "framework/core/lazy_module.h"
 
 #include <Eigen/Geometry>
 

@@ -4,7 +4,6 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/primitives.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loft.cpp
   ${CMAKE_CURRENT_LIST_DIR}/booleans.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/lazy_module.cpp
   ${CMAKE_CURRENT_LIST_DIR}/exchange.cpp
   ${CMAKE_CURRENT_LIST_DIR}/import.cpp
   ${CMAKE_CURRENT_LIST_DIR}/write.cpp
@@ -18,10 +17,8 @@ cooperage_framework_part(occ OCCT SOURCES
   PRIVATE_DEPS TBB::tbb)
 
 # OCCT toolkits most runs never need, in modules of their own opened on
-# first use (lazy_module.h): STEP/IGES (exchange_module.cpp) and lofts
-# (loft_module.cpp). Built beside libcooperage_framework, where the loader
-# looks first; tests that link the framework's objects find them in the
-# build directory.
+# first use (core/lazy_module.h): STEP/IGES (exchange_module.cpp) and lofts
+# (loft_module.cpp), built beside libcooperage_framework.
 foreach(_module exchange loft)
   set(_target cooperage_occ_${_module})
   add_library(${_target} MODULE ${CMAKE_CURRENT_LIST_DIR}/${_module}_module.cpp)
@@ -35,5 +32,3 @@ foreach(_module exchange loft)
 endforeach()
 target_link_libraries(cooperage_occ_exchange PRIVATE ${OCCT_EXCHANGE_LIBRARIES})
 target_link_libraries(cooperage_occ_loft PRIVATE ${OCCT_LOFT_LIBRARIES})
-target_compile_definitions(cooperage_fw_occ PRIVATE
-  COOPERAGE_MODULE_BUILD_DIR="${CMAKE_CURRENT_BINARY_DIR}")

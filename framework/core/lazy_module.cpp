@@ -1,4 +1,4 @@
-#include "framework/geometry/occ/lazy_module.h"
+#include "framework/core/lazy_module.h"
 
 #include "framework/core/error.h"
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace cooperage::occ {
+namespace cooperage {
 namespace {
 
 // RTLD_DEEPBIND: a module's toolkits look up symbols among themselves
@@ -82,4 +82,4 @@ void* open_module(const char* file, const char* abi_symbol, int abi) {
                                               " (set COOPERAGE_MODULE_DIR to its directory)");
 }
 
-}  // namespace cooperage::occ
+}  // namespace cooperage

@@ -1,10 +1,11 @@
-// Opening one of Cooperage's own OCCT modules (libcooperage_occ_*.so) on
-// first use. Each module links OCCT toolkits that most runs never need
-// (STEP/IGES: exchange.h; lofts: loft.cpp), so no process maps them at
-// start-up, where their symbol relocations cost every run (issue 20).
+// Opening one of Cooperage's own modules (libcooperage_*.so) on first use.
+// Each links libraries that many runs never need or need only later (OCCT's
+// STEP/IGES: occ/exchange.h; lofts: occ/loft.cpp; CBC: intervals/ilp.cpp),
+// so no process maps them at start-up, where their symbol relocations cost
+// every run (issue 20).
 #pragma once
 
-namespace cooperage::occ {
+namespace cooperage {
 
 /// The handle of module `file` ("libcooperage_occ_exchange.so"), opened
 /// with its toolkits looking up symbols among themselves first
@@ -16,4 +17,4 @@ namespace cooperage::occ {
 /// open once (std::call_once) and keep the handle.
 void* open_module(const char* file, const char* abi_symbol, int abi);
 
-}  // namespace cooperage::occ
+}  // namespace cooperage
