@@ -17,6 +17,13 @@ Parts (the issue 20 set):
     and extruded with layers.
   * cylinder_boss: cylinder r 2 h 3 with a coaxial boss r 1 h 1.5
     (many-to-one); Gmsh: split by hand into disc + annulus, extruded twice.
+  * stepped_shaft: coaxial cylinders r 2, 1.5 and 1, each 1 high, stacked
+    (many-to-one, three levels); Gmsh: split by hand into a disc and two
+    annuli, extruded, then the inner two again, then the disc.
+  * block_appendage: a 6 x 4 x 1 block with a 2 x 2 x 1.5 block standing on
+    its middle (many-to-one); Gmsh: the base face split by hand into the
+    square under the appendage and the frame around it, extruded, then the
+    square again.
   * curved_loft_hole: a loft from a circle r 2 at z 0 to a circle r 2.6 at
     z 3 moved 0.6 sideways, with a lofted hole (r 0.8 to 1.1): B-spline side
     faces (an oblique cone, as OCCT lofts it); Gmsh: four lofted quadrant
@@ -71,6 +78,25 @@ def solid_cylinder_boss():
     occ.fuse([(3, body)], [(3, boss)])
 
 
+STEPS = [(2.0, 1.0), (1.5, 1.0), (1.0, 1.0)]  # stepped_shaft: (radius, height), bottom up
+
+
+def solid_stepped_shaft():
+    occ = gmsh.model.occ
+    z, parts = 0.0, []
+    for r, h in STEPS:
+        parts.append((3, occ.addCylinder(0, 0, z, 0, 0, h, r)))
+        z += h
+    occ.fuse(parts[:1], parts[1:])
+
+
+def solid_block_appendage():
+    occ = gmsh.model.occ
+    base = occ.addBox(0, 0, 0, 6, 4, 1)
+    lug = occ.addBox(2, 1, 1, 2, 2, 1.5)
+    occ.fuse([(3, base)], [(3, lug)])
+
+
 def solid_curved_loft_hole():
     occ = gmsh.model.occ
     outer, inner = [], []
@@ -113,6 +139,50 @@ def gmsh_cylinder_boss(size):
     occ.synchronize()
     _quads(size)
     return "split by hand into disc + annulus, quads extruded with layers"
+
+
+def _top_faces(entities, z, within):
+    """The faces among `entities` lying in the plane at height z whose
+    bounding box lies within `within` (x0, y0, x1, y1)."""
+    faces = []
+    for dim, tag in entities:
+        if dim != 2:
+            continue
+        x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(dim, tag)
+        if abs(z0 - z) < 1e-7 and abs(z1 - z) < 1e-7 and x0 > within[0] - 1e-6 and \
+                y0 > within[1] - 1e-6 and x1 < within[2] + 1e-6 and y1 < within[3] + 1e-6:
+            faces.append((dim, tag))
+    return faces
+
+
+def gmsh_stepped_shaft(size):
+    occ = gmsh.model.occ
+    disks = [(2, occ.addDisk(0, 0, 0, r, r)) for r, _ in STEPS]
+    base, _ = occ.fragment(disks[:1], disks[1:])
+    layer, z = base, 0.0
+    for k, (_, h) in enumerate(STEPS):
+        made = occ.extrude(layer, 0, 0, h, numElements=[intervals(h, size)], recombine=True)
+        occ.synchronize()
+        z += h
+        if k + 1 < len(STEPS):
+            r = STEPS[k + 1][0]
+            layer = _top_faces(made, z, (-r, -r, r, r))
+    _quads(size)
+    return "split by hand into a disc and two annuli, quads extruded three times"
+
+
+def gmsh_block_appendage(size):
+    occ = gmsh.model.occ
+    rect = occ.addRectangle(0, 0, 0, 6, 4)
+    square = occ.addRectangle(2, 1, 0, 2, 2)
+    base, _ = occ.fragment([(2, rect)], [(2, square)])
+    body = occ.extrude(base, 0, 0, 1, numElements=[intervals(1, size)], recombine=True)
+    occ.synchronize()
+    top = _top_faces(body, 1.0, (2, 1, 4, 3))
+    occ.extrude(top, 0, 0, 1.5, numElements=[intervals(1.5, size)], recombine=True)
+    occ.synchronize()
+    _quads(size)
+    return "split by hand into the square and its frame, quads extruded twice"
 
 
 def gmsh_curved_loft_hole(size):
@@ -159,6 +229,8 @@ MODELS = {
     "plate_holes": (solid_plate_holes, gmsh_plate_holes),
     "cylinder_boss": (solid_cylinder_boss, gmsh_cylinder_boss),
     "curved_loft_hole": (solid_curved_loft_hole, gmsh_curved_loft_hole),
+    "stepped_shaft": (solid_stepped_shaft, gmsh_stepped_shaft),
+    "block_appendage": (solid_block_appendage, gmsh_block_appendage),
 }
 
 

@@ -33,7 +33,9 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 MODELS_PY = os.path.join(HERE, "models.py")
-ALL_MODELS = ["plate_holes", "cylinder_boss", "curved_loft_hole"]
+ALL_MODELS = [
+    "plate_holes", "cylinder_boss", "stepped_shaft", "block_appendage", "curved_loft_hole"
+]
 
 
 def count(text):
