@@ -121,26 +121,6 @@ def gmsh_plate_holes(size):
     return "face quads (frontal-Delaunay + Blossom) extruded with layers"
 
 
-def gmsh_cylinder_boss(size):
-    occ = gmsh.model.occ
-    inner = occ.addDisk(0, 0, 0, 1, 1)
-    outer = occ.addDisk(0, 0, 0, 2, 2)
-    base, _ = occ.fragment([(2, outer)], [(2, inner)])
-    body = occ.extrude(base, 0, 0, 3, numElements=[intervals(3, size)], recombine=True)
-    occ.synchronize()
-    top = None
-    for dim, tag in body:
-        if dim != 2:
-            continue
-        x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(dim, tag)
-        if abs(z0 - 3) < 1e-7 and abs(z1 - 3) < 1e-7 and x1 - x0 < 2 + 1e-6:
-            top = (dim, tag)
-    occ.extrude([top], 0, 0, 1.5, numElements=[intervals(1.5, size)], recombine=True)
-    occ.synchronize()
-    _quads(size)
-    return "split by hand into disc + annulus, quads extruded with layers"
-
-
 def _top_faces(entities, z, within):
     """The faces among `entities` lying in the plane at height z whose
     bounding box lies within `within` (x0, y0, x1, y1)."""
@@ -153,6 +133,20 @@ def _top_faces(entities, z, within):
                 y0 > within[1] - 1e-6 and x1 < within[2] + 1e-6 and y1 < within[3] + 1e-6:
             faces.append((dim, tag))
     return faces
+
+
+def gmsh_cylinder_boss(size):
+    occ = gmsh.model.occ
+    inner = occ.addDisk(0, 0, 0, 1, 1)
+    outer = occ.addDisk(0, 0, 0, 2, 2)
+    base, _ = occ.fragment([(2, outer)], [(2, inner)])
+    body = occ.extrude(base, 0, 0, 3, numElements=[intervals(3, size)], recombine=True)
+    occ.synchronize()
+    top = _top_faces(body, 3.0, (-1, -1, 1, 1))
+    occ.extrude(top, 0, 0, 1.5, numElements=[intervals(1.5, size)], recombine=True)
+    occ.synchronize()
+    _quads(size)
+    return "split by hand into disc + annulus, quads extruded with layers"
 
 
 def gmsh_stepped_shaft(size):
