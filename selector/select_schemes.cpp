@@ -4,6 +4,7 @@
 #include "framework/intervals/solve.h"
 #include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/interval_setup.h"
+#include "framework/scheme/refusals.h"
 #include "selector/starved_curves.h"
 
 #include <algorithm>
@@ -54,11 +55,11 @@ std::vector<const Candidate*> ranked(const std::vector<Candidate>& candidates) {
 }
 
 std::string all_reasons(const std::vector<Candidate>& candidates) {
-  std::string r;
+  std::vector<std::pair<std::string, std::string>> refusals;
   for (const auto& c : candidates) {
-    if (!c.applicability.ok) r += (r.empty() ? "" : "; ") + c.scheme + ": " + c.applicability.why;
+    if (!c.applicability.ok) refusals.emplace_back(c.scheme, c.applicability.why);
   }
-  return r.empty() ? std::string("no scheme registered") : r;
+  return refusals.empty() ? std::string("no scheme registered") : scheme::join_refusals(refusals);
 }
 
 const Candidate* find_candidate(const std::vector<Candidate>& candidates, const std::string& name) {

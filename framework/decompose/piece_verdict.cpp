@@ -1,5 +1,7 @@
 #include "framework/decompose/piece_verdict.h"
 
+#include "framework/scheme/refusals.h"
+
 namespace cooperage::decompose {
 
 PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry,
@@ -9,6 +11,7 @@ PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Reg
   // Wedge and mixed volumes take only the schemes that make wedges, as the
   // selector does: a piece the volume map would take is no answer then.
   const bool wedges = settings && settings->elements(volume) != io::ElementKind::Hex;
+  std::vector<std::pair<std::string, std::string>> refusals;
   for (const scheme::VolumeScheme* s : registry.volume_schemes()) {
     if (wedges && !s->makes_wedges()) continue;
     const scheme::Applicability a = s->applicable(view);
@@ -19,10 +22,10 @@ PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Reg
         out.score = a.score;
       }
     } else {
-      out.why += (out.why.empty() ? "" : "; ") + std::string(s->name()) + ": " + a.why;
+      refusals.emplace_back(std::string(s->name()), a.why);
     }
   }
-  if (out.ok) out.why.clear();
+  if (!out.ok) out.why = scheme::join_refusals(refusals);
   if (!out.ok && out.why.empty()) out.why = "no volume scheme registered";
   return out;
 }

@@ -293,7 +293,9 @@ TEST(DecomposeSearch, APieceWhoseBestCutConflictsWithItsNeighbourTakesTheNextCut
 }
 
 // The built-in schemes: Fig. 3a is refused whole by every scheme, and the
-// refusal of a decomposition that cannot work names them all.
+// refusal of a decomposition that cannot work names them all, cooper's
+// reason (which face stops the sweep) before the volume map's count of
+// faces.
 TEST(DecomposeBuiltin, Fig3aIsRefusedWholeAndTooCoarseASizeIsExplained) {
   scheme::Registry registry;
   register_builtin_schemes(registry);
@@ -307,6 +309,7 @@ TEST(DecomposeBuiltin, Fig3aIsRefusedWholeAndTooCoarseASizeIsExplained) {
     const std::string what = e.what();
     EXPECT_NE(what.find("map: "), std::string::npos) << what;
     EXPECT_NE(what.find("cooper: "), std::string::npos) << what;
+    EXPECT_LT(what.find("cooper: "), what.find("map: ")) << what;
     EXPECT_NE(what.find("tried 0 cuts"), std::string::npos) << what;
   }
 }
