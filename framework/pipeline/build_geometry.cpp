@@ -89,7 +89,7 @@ void run_geometry(const io::Job& job, occ::Workbench& bench, bool will_mesh) {
                            ": the journal defines no geometry");
   }
   // The interval solver's and the export's libraries load while the first
-  // import's child reads its file (CBC's modules and the Exodus II library:
+  // import's child reads its file (the CBC module and the Exodus II library:
   // ~10 and ~20 ms of dynamic linking, otherwise paid on the way). In this
   // thread, after the fork: a child must not inherit a thread in the middle
   // of dlopen.
