@@ -3,6 +3,7 @@
 accepts, `cooperage run` meshes).
 
 usage: fuzz/parity_campaign.py COUNT --bin BUILD/bin/cooperage [--seed S] [--out DIR]
+                               [--only CASE ...]
 
 Builds random machined parts from journal primitives -- a block with
 bosses and feet (round or square), blind and through holes, pockets, and
@@ -145,6 +146,10 @@ def main():
     ap.add_argument("--finer-retries", type=int, default=0,
                     help="the journals' finer_retries (0, the default, judges the scheme at the "
                     "part's own size; 2 is what a user gets)")
+    ap.add_argument("--only", type=int, nargs="+", default=[],
+                    help="run only these cases of the seed (a failure reproduced: "
+                    "`200 --seed 4 --only 126`); their journals are kept in DIR/failures/ "
+                    "when they fail, as always")
     ap.add_argument("--elements", choices=["hex", "wedge", "mixed"], default="hex",
                     help="the journals' <mesh elements>")
     a = ap.parse_args()
@@ -154,6 +159,8 @@ def main():
     failed = 0
     with open(os.path.join(a.out, "results.jsonl"), "w") as results:
         for case in range(a.count):
+            if a.only and case not in a.only:
+                continue
             rng = random.Random(a.seed * 100003 + case)
             text, what = random_part(rng)
             text = text.replace('decompose="off"',
@@ -197,7 +204,7 @@ def main():
                 results.flush()
             finally:
                 shutil.rmtree(tmp, ignore_errors=True)
-    summary = {"cases": a.count, "seed": a.seed, "counts": counts, "failed": failed}
+    summary = {"cases": sum(counts.values()), "seed": a.seed, "counts": counts, "failed": failed}
     print(json.dumps(summary, indent=1))
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(summary, f, indent=1)
