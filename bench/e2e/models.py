@@ -135,17 +135,28 @@ def _top_faces(entities, z, within):
     return faces
 
 
+def _extrude_stack(base, stack, size):
+    """A many-to-one part split by hand, extruded as a Gmsh user would:
+    `base` (faces at z = 0) by the first height, then the top faces within
+    each level's footprint (x0, y0, x1, y1) by the next height; the last
+    level has no footprint."""
+    occ = gmsh.model.occ
+    layer, z = base, 0.0
+    for h, within in stack:
+        made = occ.extrude(layer, 0, 0, h, numElements=[intervals(h, size)], recombine=True)
+        occ.synchronize()
+        z += h
+        if within is not None:
+            layer = _top_faces(made, z, within)
+    _quads(size)
+
+
 def gmsh_cylinder_boss(size):
     occ = gmsh.model.occ
     inner = occ.addDisk(0, 0, 0, 1, 1)
     outer = occ.addDisk(0, 0, 0, 2, 2)
     base, _ = occ.fragment([(2, outer)], [(2, inner)])
-    body = occ.extrude(base, 0, 0, 3, numElements=[intervals(3, size)], recombine=True)
-    occ.synchronize()
-    top = _top_faces(body, 3.0, (-1, -1, 1, 1))
-    occ.extrude(top, 0, 0, 1.5, numElements=[intervals(1.5, size)], recombine=True)
-    occ.synchronize()
-    _quads(size)
+    _extrude_stack(base, [(3, (-1, -1, 1, 1)), (1.5, None)], size)
     return "split by hand into disc + annulus, quads extruded with layers"
 
 
@@ -153,15 +164,8 @@ def gmsh_stepped_shaft(size):
     occ = gmsh.model.occ
     disks = [(2, occ.addDisk(0, 0, 0, r, r)) for r, _ in STEPS]
     base, _ = occ.fragment(disks[:1], disks[1:])
-    layer, z = base, 0.0
-    for k, (_, h) in enumerate(STEPS):
-        made = occ.extrude(layer, 0, 0, h, numElements=[intervals(h, size)], recombine=True)
-        occ.synchronize()
-        z += h
-        if k + 1 < len(STEPS):
-            r = STEPS[k + 1][0]
-            layer = _top_faces(made, z, (-r, -r, r, r))
-    _quads(size)
+    footprints = [(-r, -r, r, r) for r, _ in STEPS[1:]] + [None]
+    _extrude_stack(base, [(h, f) for (_, h), f in zip(STEPS, footprints)], size)
     return "split by hand into a disc and two annuli, quads extruded three times"
 
 
@@ -170,12 +174,7 @@ def gmsh_block_appendage(size):
     rect = occ.addRectangle(0, 0, 0, 6, 4)
     square = occ.addRectangle(2, 1, 0, 2, 2)
     base, _ = occ.fragment([(2, rect)], [(2, square)])
-    body = occ.extrude(base, 0, 0, 1, numElements=[intervals(1, size)], recombine=True)
-    occ.synchronize()
-    top = _top_faces(body, 1.0, (2, 1, 4, 3))
-    occ.extrude(top, 0, 0, 1.5, numElements=[intervals(1.5, size)], recombine=True)
-    occ.synchronize()
-    _quads(size)
+    _extrude_stack(base, [(1, (2, 1, 4, 3)), (1.5, None)], size)
     return "split by hand into the square and its frame, quads extruded twice"
 
 
