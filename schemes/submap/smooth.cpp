@@ -79,9 +79,14 @@ void smooth_quads(std::vector<Vec3>& x, std::vector<Vec3>& normals, const std::v
       // mean edge length, so the decision does not depend on placement.
       const double mean_edge = wsum / static_cast<double>(neighbours[v].size());
       if ((acc / wsum - x[v]).norm() <= 1e-12 * mean_edge) continue;
+      const geom::SurfaceProjection pr = project(acc / wsum, v);
+      // On a curved face the Laplacian point of an even lattice lies off the
+      // surface and projects back onto the node: that is a fixed point too.
+      // Without this test every sweep "moved" every node of a cylinder's
+      // lattice and checked its quads again (issue 20).
+      if ((pr.point - x[v]).norm() <= 1e-12 * mean_edge) continue;
       moved = true;
       const Vec3 old_x = x[v], old_n = normals[v];
-      const geom::SurfaceProjection pr = project(acc / wsum, v);
       x[v] = pr.point;
       normals[v] = pr.normal;
       bool accept = true;

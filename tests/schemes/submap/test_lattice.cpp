@@ -1,6 +1,7 @@
 // Lattice walk and fill, and the guarded smoother (value types, no CAD).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -269,6 +270,52 @@ TEST(SubmapSmooth, SmoothingNeverInvertsAndKeepsTopology) {
   }
   EXPECT_NEAR(x[static_cast<size_t>(id(2, 2))].x(), 2.0, 1e-2);
   EXPECT_EQ(x[0], Vec3(0, 0, 0));
+}
+
+TEST(SubmapSmooth, AnEvenLatticeOnACylinderIsAFixedPoint) {
+  // A quarter cylinder of radius 1, 7 x 6 nodes at even angles and heights:
+  // each free node's Laplacian point lies inside the cylinder on the node's
+  // own radius and projects back onto the node. One sweep finds that and the
+  // smoothing stops; it used to project and check every node in every sweep.
+  std::vector<Vec3> x;
+  std::vector<bool> fixed;
+  const int na = 6, nz = 5;
+  for (int i = 0; i <= na; ++i) {
+    const double a = 0.5 * M_PI * i / na;
+    for (int j = 0; j <= nz; ++j) {
+      x.emplace_back(std::cos(a), std::sin(a), 0.2 * j);
+      fixed.push_back(i == 0 || j == 0 || i == na || j == nz);
+    }
+  }
+  auto id = [&](int i, int j) { return i * (nz + 1) + j; };
+  std::vector<mesh::Quad> quads;
+  for (int i = 0; i < na; ++i) {
+    for (int j = 0; j < nz; ++j)
+      quads.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  }
+  std::vector<Vec3> normals;
+  for (const Vec3& p : x) normals.emplace_back(p.x(), p.y(), 0.0);
+  int projections = 0;
+  const auto cylinder = [&](const Vec3& p, size_t) {
+    ++projections;
+    const Vec3 radial = Vec3(p.x(), p.y(), 0).normalized();
+    return geom::SurfaceProjection{Vec3(radial.x(), radial.y(), p.z()), radial,
+                                   Vec2(std::atan2(p.y(), p.x()), p.z()),
+                                   std::abs(Vec3(p.x(), p.y(), 0).norm() - 1.0)};
+  };
+  for (const auto& q : quads) {  // counter-clockwise about the outward normal
+    std::array<Vec3, 4> p, n;
+    for (size_t k = 0; k < 4; ++k) {
+      p[k] = x[static_cast<size_t>(q[k])];
+      n[k] = normals[static_cast<size_t>(q[k])];
+    }
+    ASSERT_GT(quad_scaled_jacobian(p, n), 0.9);
+  }
+  const std::vector<Vec3> before = x;
+  smooth_quads(x, normals, fixed, quads, cylinder, {4, 0.2});
+  EXPECT_EQ(x, before);
+  const int free_nodes = static_cast<int>(std::count(fixed.begin(), fixed.end(), false));
+  EXPECT_EQ(projections, free_nodes) << "sweeps after the first one that moved nothing";
 }
 
 }  // namespace
