@@ -6,8 +6,8 @@
 find_path(OCCT_INCLUDE_DIR Standard_Version.hxx PATH_SUFFIXES opencascade REQUIRED)
 # OCCT_LIBRARIES: what the framework links. The toolkits only some runs
 # need are linked by modules the framework opens on first use
-# (framework/core/lazy_module.h): OCCT_EXCHANGE_LIBRARIES (STEP,
-# IGES) and OCCT_LOFT_LIBRARIES (ThruSections; TKOffset brings TKFillet and
+# (framework/core/lazy_module.h): OCCT_STEP_LIBRARIES, OCCT_IGES_LIBRARIES
+# and OCCT_LOFT_LIBRARIES (ThruSections; TKOffset brings TKFillet and
 # TKBool). OCCT_TEST_LIBRARIES: the modelling toolkits tests use directly
 # (a fillet).
 set(OCCT_LIBRARIES "")
@@ -16,11 +16,13 @@ foreach(_lib TKShHealing TKBO TKPrim TKTopAlgo TKGeomAlgo TKBRep TKGeomBase TKG3
   find_library(OCCT_${_lib}_LIBRARY ${_lib} REQUIRED)
   list(APPEND OCCT_LIBRARIES ${OCCT_${_lib}_LIBRARY})
 endforeach()
-set(OCCT_EXCHANGE_LIBRARIES "")
-foreach(_lib TKSTEP TKSTEPAttr TKSTEP209 TKSTEPBase TKIGES TKXSBase)
+set(OCCT_STEP_LIBRARIES "")
+foreach(_lib TKSTEP TKSTEPAttr TKSTEP209 TKSTEPBase TKXSBase)
   find_library(OCCT_${_lib}_LIBRARY ${_lib} REQUIRED)
-  list(APPEND OCCT_EXCHANGE_LIBRARIES ${OCCT_${_lib}_LIBRARY})
+  list(APPEND OCCT_STEP_LIBRARIES ${OCCT_${_lib}_LIBRARY})
 endforeach()
+find_library(OCCT_TKIGES_LIBRARY TKIGES REQUIRED)
+set(OCCT_IGES_LIBRARIES ${OCCT_TKIGES_LIBRARY} ${OCCT_TKXSBase_LIBRARY})
 find_library(OCCT_TKOffset_LIBRARY TKOffset REQUIRED)
 set(OCCT_LOFT_LIBRARIES ${OCCT_TKOffset_LIBRARY})
 set(OCCT_TEST_LIBRARIES "")

@@ -7,7 +7,7 @@
 
 namespace cooperage {
 
-/// The handle of module `file` ("libcooperage_occ_exchange.so"), opened
+/// The handle of module `file` ("libcooperage_occ_step.so"), opened
 /// with its toolkits looking up symbols among themselves first
 /// (RTLD_DEEPBIND, except under sanitizers). Looks in $COOPERAGE_MODULE_DIR,
 /// beside the binary holding this code (the installed or built framework),

@@ -54,18 +54,26 @@ TEST_F(StartupLibraries, AJournalRunMapsNoStepOrIgesToolkit) {
   }
 }
 
-TEST_F(StartupLibraries, AStepFileLoadsTheExchangeModuleAndReads) {
+TEST_F(StartupLibraries, AStepOrIgesFileLoadsItsFormatsModuleAlone) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {2, 3, 4});
   bench.write(path("b.step"), {});
   bench.write(path("b.igs"), {});
-  for (const char* file : {"b.step", "b.igs"}) {
-    const auto info = testing::run_command("LD_DEBUG=files " + kCli + " info " + path(file));
-    ASSERT_EQ(info.exit_code, 0) << info.err;
-    EXPECT_NE(info.out.find("1 volumes, 6 surfaces"), std::string::npos) << info.out;
-    EXPECT_TRUE(opened(info.err, "libcooperage_occ_exchange")) << file;
-    EXPECT_TRUE(opened(info.err, "libTKXSBase")) << file;
+  const auto step = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto iges = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.igs"));
+  for (const auto* r : {&step, &iges}) {
+    ASSERT_EQ(r->exit_code, 0) << r->err;
+    EXPECT_NE(r->out.find("1 volumes, 6 surfaces"), std::string::npos) << r->out;
+    EXPECT_TRUE(opened(r->err, "libTKXSBase"));
   }
+  EXPECT_TRUE(opened(step.err, "libcooperage_occ_step"));
+  EXPECT_TRUE(opened(iges.err, "libcooperage_occ_iges"));
+  // A STEP run maps none of IGES's toolkits (TKIGES needs TKBool: 17,600
+  // relocations), and an IGES run none of STEP's.
+  for (const char* library : {"libcooperage_occ_iges", "libTKIGES", "libTKBool"})
+    EXPECT_FALSE(opened(step.err, library)) << library << " mapped by a STEP run";
+  for (const char* library : {"libcooperage_occ_step", "libTKSTEP"})
+    EXPECT_FALSE(opened(iges.err, library)) << library << " mapped by an IGES run";
 }
 
 TEST_F(StartupLibraries, CbcIsLoadedOnlyByARunThatAssignsIntervals) {
@@ -107,18 +115,18 @@ TEST_F(StartupLibraries, CooperageModuleDirIsLookedInFirst) {
   std::istringstream lines(where.err);
   for (std::string line; std::getline(lines, line);) {
     const size_t at = line.find("file=/");
-    const size_t end = line.find("libcooperage_occ_exchange.so");
+    const size_t end = line.find("libcooperage_occ_step.so");
     if (at != std::string::npos && end != std::string::npos && end > at)
-      built = line.substr(at + 5, end - at - 5) + "libcooperage_occ_exchange.so";
+      built = line.substr(at + 5, end - at - 5) + "libcooperage_occ_step.so";
   }
   ASSERT_FALSE(built.empty()) << where.err;
   const std::filesystem::path modules = dir_ / "modules";
   std::filesystem::create_directories(modules);
-  std::filesystem::create_symlink(built, modules / "libcooperage_occ_exchange.so");
+  std::filesystem::create_symlink(built, modules / "libcooperage_occ_step.so");
   const auto run = testing::run_command("COOPERAGE_MODULE_DIR=" + modules.string() +
                                         " LD_DEBUG=files " + kCli + " info " + path("b.step"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_TRUE(opened(run.err, (modules / "libcooperage_occ_exchange.so").string())) << run.err;
+  EXPECT_TRUE(opened(run.err, (modules / "libcooperage_occ_step.so").string())) << run.err;
 }
 
 }  // namespace

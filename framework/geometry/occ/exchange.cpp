@@ -6,48 +6,52 @@
 #include <dlfcn.h>
 
 #include <mutex>
+#include <string>
 
 namespace cooperage::occ::exchange {
 namespace {
 
-using ReadFn = int (*)(int, const char*, TopoDS_Shape*, Unit*, char*, size_t);
-using WriteFn = int (*)(int, const char*, const TopoDS_Shape*, const char*);
+using ReadFn = int (*)(const char*, TopoDS_Shape*, Unit*, char*, size_t);
+using WriteFn = int (*)(const char*, const TopoDS_Shape*, const char*);
 
+/// The module of one format (step_module.cpp, iges_module.cpp).
 struct Api {
   ReadFn read = nullptr;
   WriteFn write = nullptr;
 };
 
-const Api& api() {
-  static Api loaded;
-  static std::once_flag once;
-  std::call_once(once, [] {
-    void* handle =
-        open_module("libcooperage_occ_exchange.so", "cooperage_exchange_abi", /*abi=*/1);
-    loaded.read = reinterpret_cast<ReadFn>(dlsym(handle, "cooperage_exchange_read"));
-    loaded.write = reinterpret_cast<WriteFn>(dlsym(handle, "cooperage_exchange_write"));
-    if (loaded.read == nullptr || loaded.write == nullptr)
+const Api& api(Format format) {
+  static Api loaded[2];
+  static std::once_flag once[2];
+  const int k = static_cast<int>(format);
+  std::call_once(once[k], [k] {
+    const char* file = k == static_cast<int>(Format::Step) ? "libcooperage_occ_step.so"
+                                                           : "libcooperage_occ_iges.so";
+    void* handle = open_module(file, "cooperage_exchange_abi", /*abi=*/2);
+    loaded[k].read = reinterpret_cast<ReadFn>(dlsym(handle, "cooperage_exchange_read"));
+    loaded[k].write = reinterpret_cast<WriteFn>(dlsym(handle, "cooperage_exchange_write"));
+    if (loaded[k].read == nullptr || loaded[k].write == nullptr)
       throw MeshingError(ErrorCode::Internal,
-                         "libcooperage_occ_exchange.so lacks its read or write function");
+                         std::string(file) + " lacks its read or write function");
   });
-  return loaded;
+  return loaded[k];
 }
 
 }  // namespace
 
-void load() { api(); }
+void load(Format format) { api(format); }
 
 TopoDS_Shape read(Format format, const std::string& path, Unit& unit) {
   TopoDS_Shape shape;
   char error[256] = {0};
-  if (api().read(static_cast<int>(format), path.c_str(), &shape, &unit, error, sizeof error) != 0)
+  if (api(format).read(path.c_str(), &shape, &unit, error, sizeof error) != 0)
     throw MeshingError(ErrorCode::ParseError, path + ": " + error);
   return shape;
 }
 
 bool write(Format format, const std::string& path, const TopoDS_Shape& shape,
            const std::string& unit_name) {
-  return api().write(static_cast<int>(format), path.c_str(), &shape, unit_name.c_str()) == 0;
+  return api(format).write(path.c_str(), &shape, unit_name.c_str()) == 0;
 }
 
 }  // namespace cooperage::occ::exchange

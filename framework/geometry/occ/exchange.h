@@ -1,7 +1,8 @@
-// STEP and IGES through the exchange module (exchange_module.cpp), which is
-// loaded on first use: a process that reads no STEP or IGES file never maps
-// OCCT's data-exchange toolkits (issue 20, start-up). Private to
-// framework/geometry/occ (OCCT types).
+// STEP and IGES through a module per format (step_module.cpp,
+// iges_module.cpp), loaded on first use: a process that reads no STEP or
+// IGES file never maps OCCT's data-exchange toolkits, and a STEP run never
+// maps IGES's (issue 20, start-up). Private to framework/geometry/occ (OCCT
+// types).
 #pragma once
 
 #include "framework/geometry/occ/exchange_units.h"
@@ -14,10 +15,10 @@ namespace cooperage::occ::exchange {
 
 enum class Format { Step = 0, Iges = 1 };
 
-/// Loads the module now (idempotent, thread-safe). Call it before fork():
+/// Loads the format's module now (idempotent, thread-safe). Call it before fork():
 /// the child of a forked reader must not be the first to run the loader.
 /// Throws MeshingError(Internal) naming every place looked in.
-void load();
+void load(Format format);
 
 /// Reads a file; `unit` is the default on entry and the file's on return.
 /// Throws MeshingError(ParseError) "<path>: <reason>" when the reader fails.

@@ -272,10 +272,11 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
                            "' (expected .step, .stp, .iges, .igs or .brep)");
   const CadKind kind = step ? CadKind::Step : iges ? CadKind::Iges : CadKind::Brep;
 
-  // The STEP/IGES module is loaded here, before the fork: the child must not
+  // The STEP or IGES module is loaded here, before the fork: the child must not
   // be the first to run the dynamic loader (another thread of this process
   // may hold its lock at the fork).
-  if (kind != CadKind::Brep) exchange::load();
+  if (kind != CadKind::Brep)
+    exchange::load(kind == CadKind::Step ? exchange::Format::Step : exchange::Format::Iges);
   const IsolationLimits limits = limits_for(path);
   std::function<void()> while_reading;
   while_reading.swap(impl_->while_importing);  // once

@@ -17,11 +17,15 @@ cooperage_framework_part(occ OCCT SOURCES
   PRIVATE_DEPS TBB::tbb)
 
 # OCCT toolkits most runs never need, in modules of their own opened on
-# first use (core/lazy_module.h): STEP/IGES (exchange_module.cpp) and lofts
-# (loft_module.cpp), built beside libcooperage_framework.
-cooperage_framework_module(occ_exchange PART occ OCCT
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/exchange_module.cpp
-  LIBS ${OCCT_LIBRARIES} ${OCCT_EXCHANGE_LIBRARIES})
+# first use (core/lazy_module.h): STEP (step_module.cpp), IGES
+# (iges_module.cpp) and lofts (loft_module.cpp), built beside
+# libcooperage_framework.
+cooperage_framework_module(occ_step PART occ OCCT
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/step_module.cpp
+  LIBS ${OCCT_LIBRARIES} ${OCCT_STEP_LIBRARIES})
+cooperage_framework_module(occ_iges PART occ OCCT
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/iges_module.cpp
+  LIBS ${OCCT_LIBRARIES} ${OCCT_IGES_LIBRARIES})
 cooperage_framework_module(occ_loft PART occ OCCT
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/loft_module.cpp
   LIBS ${OCCT_LIBRARIES} ${OCCT_LOFT_LIBRARIES})

@@ -1,0 +1,46 @@
+// What the STEP and the IGES module (step_module.cpp, iges_module.cpp) share:
+// the C interface's error text and the transfer of a read file's roots.
+// Included only by those two modules.
+#pragma once
+
+#include "framework/geometry/occ/exchange_units.h"
+
+#include <Interface_Static.hxx>
+#include <TopoDS_Shape.hxx>
+#include <XSControl_Reader.hxx>
+
+#include <cstdio>
+
+namespace cooperage::occ::exchange_module {
+
+/// The interface version both modules report (cooperage_exchange_abi); the
+/// loader refuses a module that differs.
+constexpr int kAbi = 2;
+
+inline int fail(char* error, size_t size, const char* why) {
+  std::snprintf(error, size, "%s", why);
+  return 1;
+}
+
+/// The read file's roots as one shape, in the file's unit (the cascade unit
+/// set for the transfer only, so the kernel does not convert).
+inline int transfer(XSControl_Reader& reader, const char* kind, TopoDS_Shape* shape,
+                    const Unit& unit, char* error, size_t size) {
+  char why[64];
+  Interface_Static::SetCVal("xstep.cascade.unit", unit.occt);
+  if (reader.NbRootsForTransfer() <= 0) {
+    std::snprintf(why, sizeof why, "the %s file holds no shape", kind);
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    return fail(error, size, why);
+  }
+  reader.TransferRoots();
+  Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+  if (reader.NbShapes() <= 0) {
+    std::snprintf(why, sizeof why, "no shape could be read from the %s file", kind);
+    return fail(error, size, why);
+  }
+  *shape = reader.OneShape();
+  return 0;
+}
+
+}  // namespace cooperage::occ::exchange_module
