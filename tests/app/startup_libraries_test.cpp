@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace cooperage {
 namespace {
@@ -51,6 +52,31 @@ TEST_F(StartupLibraries, AJournalRunMapsNoStepOrIgesToolkit) {
        {"libTKSTEP", "libTKIGES", "libTKXSBase", "libTKOffset", "libTKFillet", "libTKBool"}) {
     EXPECT_FALSE(opened(version.err, toolkit)) << toolkit << " mapped by --version";
     EXPECT_FALSE(opened(run.err, toolkit)) << toolkit << " mapped by a journal of primitives";
+  }
+}
+
+TEST_F(StartupLibraries, OcctsKernelIsNearTheFrontOfTheLookupScope) {
+  // Every symbol reference is resolved by walking the scope in order
+  // (cmake/CooperageLookupOrder.cmake); OCCT's toolkits refer mostly to
+  // themselves, TKernel and TKMath, which the link order had put last (28th
+  // and 27th of 30).
+  const auto run = testing::run_command("LD_DEBUG=scopes " + kCli + " --version");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const size_t at = run.err.find("scope 0:");
+  ASSERT_NE(at, std::string::npos) << run.err;
+  std::istringstream scope(run.err.substr(at + 8, run.err.find('\n', at) - at - 8));
+  std::vector<std::string> objects;
+  for (std::string o; scope >> o;) objects.push_back(o);
+  auto position = [&](const std::string& name) {
+    for (size_t k = 0; k < objects.size(); ++k)
+      if (objects[k].find(name) != std::string::npos) return static_cast<int>(k);
+    return -1;
+  };
+  ASSERT_GT(objects.size(), 20u);
+  for (const char* toolkit : {"libTKernel", "libTKMath", "libTKGeomAlgo"}) {
+    const int k = position(toolkit);
+    EXPECT_GE(k, 1) << toolkit;
+    EXPECT_LE(k, 6) << toolkit << " is object " << k << " of " << objects.size();
   }
 }
 

@@ -23,6 +23,11 @@ cooperage_framework_part(occ OCCT SOURCES
 cooperage_framework_module(occ_step PART occ OCCT
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/step_module.cpp
   LIBS ${OCCT_LIBRARIES} ${OCCT_STEP_LIBRARIES})
+# The toolkits that answer most of the module's symbol lookups first
+# (cmake/CooperageLookupOrder.cmake; counted with LD_DEBUG=bindings).
+cooperage_lookup_first(cooperage_occ_step
+  ${OCCT_TKSTEPBase_LIBRARY} ${OCCT_TKXSBase_LIBRARY} ${OCCT_TKSTEPAttr_LIBRARY}
+  ${OCCT_TKSTEP_LIBRARY} ${OCCT_TKSTEP209_LIBRARY} ${OCCT_TKernel_LIBRARY})
 cooperage_framework_module(occ_iges PART occ OCCT
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/iges_module.cpp
   LIBS ${OCCT_LIBRARIES} ${OCCT_IGES_LIBRARIES})
