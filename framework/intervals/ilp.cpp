@@ -11,6 +11,7 @@
 #include "framework/core/lazy_module.h"
 #include "framework/intervals/cbc_problem.h"
 #include "framework/intervals/deviation.h"
+#include "framework/intervals/separable_optimum.h"
 
 namespace cooperage::intervals::detail {
 namespace {
@@ -69,6 +70,8 @@ bool satisfies(const std::vector<Column>& columns, const std::vector<Row>& rows,
 
 IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& rows,
                     const SolveOptions& options, const std::vector<int>* start) {
+  if (std::optional<std::vector<int>> x = separable_optimum(columns, rows))
+    return IlpResult{IlpStatus::Optimal, std::move(*x)};
   const double inf = std::numeric_limits<double>::max();  // CBC's infinity
   Builder b;
   // x columns first, so column j of the result is curve column j.

@@ -2,6 +2,7 @@ cooperage_framework_part(intervals SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/interval_problem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/deviation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ilp.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/separable_optimum.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solve.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curve_sizing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/faceting_budget.cpp
