@@ -27,6 +27,7 @@
 
 #include <fcntl.h>
 #include <sys/random.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace cooperage::io::detail {
@@ -167,9 +168,14 @@ std::string temp_path_for(const std::string& path) {
 
 void remove_temp_file(const std::string& tmp) noexcept { ::unlink(tmp.c_str()); }
 
+int replace_file(const std::string& from, const std::string& to) noexcept {
+  struct stat st {};
+  if (::lstat(to.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::unlink(to.c_str());
+  return std::rename(from.c_str(), to.c_str()) == 0 ? 0 : errno;
+}
+
 void commit_temp_file(const std::string& tmp, const std::string& path) {
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
+  if (const int err = replace_file(tmp, path); err != 0) {
     remove_temp_file(tmp);
     throw MeshingError(ErrorCode::FileNotFound,
                        "cannot write '" + clip_path(path) + "' (" + std::strerror(err) + ")");

@@ -33,8 +33,19 @@ bool has_volume_elements(const mesh::MeshDB& db);
 /// old "<path>.tmp-<pid>" could be guessed).
 std::string temp_path_for(const std::string& path);
 
-/// Renames `tmp` over `path`; throws MeshingError(FileNotFound) on failure
-/// (and removes `tmp`).
+/// Moves the finished file `from` to `to`, removing a regular file already
+/// there first; errno as rename(2) on failure. Why not rename over it: ext4
+/// (Debian's default, with auto_da_alloc) then writes the new file's
+/// delayed blocks out before the rename returns, so that a crash cannot
+/// leave it empty. A 100 MB export (a 1 M-hex .exo) waited 72 ms in such a
+/// rename against 38 ms for unlink and rename (issue 20). A reader may see no
+/// file for that moment, and after a power cut the new file may be empty,
+/// as after any tool that truncates and writes (Gmsh); a failed run still
+/// leaves the old file untouched (nothing is removed before the commit).
+int replace_file(const std::string& from, const std::string& to) noexcept;
+
+/// Moves `tmp` to `path` (replace_file); throws MeshingError(FileNotFound)
+/// on failure (and removes `tmp`).
 void commit_temp_file(const std::string& tmp, const std::string& path);
 
 /// Removes `tmp` if it exists; never throws.

@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "framework/core/text.h"
 #include "framework/io/export/exodus_writer.h"
+#include "framework/io/export/export_common.h"
 #include "framework/io/export/inp_writer.h"
 #include "framework/io/export/msh_writer.h"
 #include "framework/io/export/surface_writer.h"
@@ -170,8 +171,7 @@ void ExportBatch::stage(const std::string& path, const mesh::MeshDB& db, const g
 std::vector<std::string> ExportBatch::commit() {
   std::vector<std::string> done;
   for (const Staged& s : staged_) {
-    if (std::rename(s.file.c_str(), s.target.c_str()) != 0) {
-      const int err = errno;
+    if (const int err = detail::replace_file(s.file, s.target); err != 0) {
       for (const std::string& t : done) ::unlink(t.c_str());
       const std::string target = s.target;
       discard();

@@ -92,6 +92,24 @@ TEST(ExportSafety, ABatchCommitsEveryFileAtOnce) {
   EXPECT_EQ(read_all(dir + "/m.exo").substr(0, 3), "CDF");
 }
 
+TEST(ExportSafety, AnExistingFileIsReplacedOnlyAtTheCommit) {
+  // replace_file removes the old file just before the rename (ext4 would
+  // otherwise flush the new one inside rename): until then it is intact.
+  const TestMesh t = one_block();
+  const std::string dir = scratch_dir();
+  { std::ofstream(dir + "/m.vtu") << "old"; }
+  io::ExportBatch batch;
+  batch.stage(dir + "/m.vtu", t.db, t.model);
+  EXPECT_EQ(read_all(dir + "/m.vtu"), "old");
+  batch.commit();
+  EXPECT_EQ(read_all(dir + "/m.vtu").substr(0, 5), "<?xml");
+  EXPECT_EQ(entries(dir), std::vector<std::string>{"m.vtu"});
+  // The same through the text writers' own temporary file.
+  { std::ofstream(dir + "/m.msh") << "old"; }
+  io::write_mesh(dir + "/m.msh", t.db, t.model);
+  EXPECT_EQ(read_all(dir + "/m.msh").substr(0, 11), "$MeshFormat");
+}
+
 TEST(ExportSafety, ARenameThatFailsUndoesTheBatch) {
   const TestMesh t = one_block();
   const std::string dir = scratch_dir();
