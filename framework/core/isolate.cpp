@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <new>
@@ -249,6 +250,30 @@ IsolatedRun fork_and_wait(const std::function<void(std::string& out)>& work,
 }
 
 }  // namespace
+
+bool single_threaded() {
+  // /proc/self/stat: "pid (comm) state ..." with num_threads the 20th field;
+  // comm may hold spaces and parentheses, so count from the last ')'.
+  FILE* f = std::fopen("/proc/self/stat", "r");
+  if (f == nullptr) return false;
+  char buf[1024];
+  const size_t n = std::fread(buf, 1, sizeof buf - 1, f);
+  std::fclose(f);
+  buf[n] = '\0';
+  const char* p = std::strrchr(buf, ')');
+  if (p == nullptr) return false;
+  long threads = 0;
+  // After ')': state (field 3) ... num_threads (field 20): 17 fields to skip.
+  int field = 2;
+  for (const char* c = p + 1; *c != '\0'; ++c) {
+    if (*c != ' ') continue;
+    if (++field == 20) {
+      threads = std::strtol(c + 1, nullptr, 10);
+      break;
+    }
+  }
+  return threads == 1;
+}
 
 IsolatedRun run_isolated(const std::function<void(std::string& out)>& work,
                          const IsolationLimits& limits,

@@ -43,6 +43,11 @@ struct IsolatedRun {
   std::string describe(const IsolationLimits& limits) const;
 };
 
+/// True when this process runs one thread (/proc/self/stat), so that the
+/// child of a fork may run the dynamic loader: no other thread can have
+/// held its lock at the fork. False when that cannot be read.
+bool single_threaded();
+
 /// Runs `work(out)` in a forked child: stdout and stderr of the child go to
 /// /dev/null (kernels print), core dumps are off, the address space is
 /// capped when asked. A MeshingError thrown by `work` comes back as Failed

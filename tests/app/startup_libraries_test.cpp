@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -39,14 +40,43 @@ class StartupLibraries : public testing::TempDirTest {
     return "cp " + std::string(COOPERAGE_SOURCE_DIR) + "/examples/" + example + " " +
            dir_.string() + " && cd " + dir_.string();
   }
+
+  // Runs `command`, whose "LD_DEBUG=files " gets LD_DEBUG_OUTPUT beside it:
+  // the loader writes one trace per process, so the import's child (which
+  // opens the STEP module; its stderr goes to /dev/null) is traced too.
+  // `err` holds every process's trace; `traces` them one by one.
+  struct Traced : testing::CommandResult {
+    std::vector<std::string> traces;
+  };
+  Traced traced(const std::string& command) {
+    const std::string base = "trace" + std::to_string(++runs_);
+    const std::string marker = "LD_DEBUG=files ";
+    std::string full = command;
+    full.insert(full.find(marker) + marker.size(),
+                "LD_DEBUG_OUTPUT=" + (dir_ / base).string() + " ");
+    Traced r;
+    static_cast<testing::CommandResult&>(r) = testing::run_command(full);
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(dir_))
+      if (e.path().filename().string().rfind(base + ".", 0) == 0) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      r.traces.push_back(testing::slurp(f.string()));
+      r.err += r.traces.back();
+    }
+    return r;
+  }
+
+ private:
+  int runs_ = 0;
 };
 
 TEST_F(StartupLibraries, AJournalRunMapsNoStepOrIgesToolkit) {
-  const auto version = testing::run_command("LD_DEBUG=files " + kCli + " --version");
+  const auto version = traced("LD_DEBUG=files " + kCli + " --version");
   ASSERT_EQ(version.exit_code, 0) << version.err;
   EXPECT_TRUE(opened(version.err, "libTKernel")) << "the trace should name OCCT's kernel";
-  const auto run = testing::run_command(journal_here("brick.xml") + " && LD_DEBUG=files " + kCli +
-                                        " run -q brick.xml");
+  const auto run =
+      traced(journal_here("brick.xml") + " && LD_DEBUG=files " + kCli + " run -q brick.xml");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* toolkit :
        {"libTKSTEP", "libTKIGES", "libTKXSBase", "libTKOffset", "libTKFillet", "libTKBool"}) {
@@ -85,8 +115,8 @@ TEST_F(StartupLibraries, AStepOrIgesFileLoadsItsFormatsModuleAlone) {
   bench.brick("b", {0, 0, 0}, {2, 3, 4});
   bench.write(path("b.step"), {});
   bench.write(path("b.igs"), {});
-  const auto step = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
-  const auto iges = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.igs"));
+  const auto step = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto iges = traced("LD_DEBUG=files " + kCli + " info " + path("b.igs"));
   for (const auto* r : {&step, &iges}) {
     ASSERT_EQ(r->exit_code, 0) << r->err;
     EXPECT_NE(r->out.find("1 volumes, 6 surfaces"), std::string::npos) << r->out;
@@ -102,14 +132,39 @@ TEST_F(StartupLibraries, AStepOrIgesFileLoadsItsFormatsModuleAlone) {
     EXPECT_FALSE(opened(iges.err, library)) << library << " mapped by an IGES run";
 }
 
+TEST_F(StartupLibraries, TheImportsChildAloneOpensTheStepModule) {
+  // The command has one thread when it imports, so its child loads the
+  // module and the command itself never maps STEP's toolkits.
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 3, 4});
+  bench.write(path("b.step"), {});
+  const auto info = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  // Each trace line starts with the pid of the process that wrote it.
+  auto pid_opening = [&](const std::string& library) {
+    std::istringstream lines(info.err);
+    for (std::string line; std::getline(lines, line);) {
+      const size_t at = line.find("file=");
+      if (at != std::string::npos && line.find(library, at) != std::string::npos)
+        return std::stol(line);
+    }
+    return 0L;
+  };
+  const long command = pid_opening("libTKernel");  // mapped at start-up
+  const long module = pid_opening("libcooperage_occ_step");
+  ASSERT_NE(command, 0) << info.err;
+  ASSERT_NE(module, 0) << info.err;
+  EXPECT_NE(module, command) << "the command itself opened the STEP module";
+}
+
 TEST_F(StartupLibraries, CbcIsLoadedOnlyByARunThatAssignsIntervals) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {2, 3, 4});
   bench.write(path("b.step"), {});
-  const auto version = testing::run_command("LD_DEBUG=files " + kCli + " --version");
-  const auto info = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
-  const auto mesh = testing::run_command("LD_DEBUG=files " + kCli + " mesh " + path("b.step") +
-                                         " --size 1 -q -o " + path("b.vtu"));
+  const auto version = traced("LD_DEBUG=files " + kCli + " --version");
+  const auto info = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto mesh = traced("LD_DEBUG=files " + kCli + " mesh " + path("b.step") +
+                           " --size 1 -q -o " + path("b.vtu"));
   for (const auto* r : {&version, &info, &mesh}) ASSERT_EQ(r->exit_code, 0) << r->err;
   for (const char* library : {"libcooperage_cbc", "libCbc", "libClp", "libCoinUtils", "libOsi"}) {
     EXPECT_FALSE(opened(version.err, library)) << library << " mapped by --version";
@@ -121,8 +176,8 @@ TEST_F(StartupLibraries, CbcIsLoadedOnlyByARunThatAssignsIntervals) {
 }
 
 TEST_F(StartupLibraries, ALoftLoadsTheLoftModule) {
-  const auto run = testing::run_command(journal_here("twisted_block.xml") + " && LD_DEBUG=files " +
-                                        kCli + " run -q twisted_block.xml");
+  const auto run = traced(journal_here("twisted_block.xml") + " && LD_DEBUG=files " + kCli +
+                          " run -q twisted_block.xml");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(opened(run.err, "libcooperage_occ_loft"));
   EXPECT_TRUE(opened(run.err, "libTKOffset"));
@@ -135,7 +190,7 @@ TEST_F(StartupLibraries, CooperageModuleDirIsLookedInFirst) {
   occ::Workbench bench;
   bench.brick("b", {0, 0, 0}, {1, 1, 1});
   bench.write(path("b.step"), {});
-  const auto where = testing::run_command("LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto where = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
   ASSERT_EQ(where.exit_code, 0) << where.err;
   std::string built;
   std::istringstream lines(where.err);
@@ -149,8 +204,8 @@ TEST_F(StartupLibraries, CooperageModuleDirIsLookedInFirst) {
   const std::filesystem::path modules = dir_ / "modules";
   std::filesystem::create_directories(modules);
   std::filesystem::create_symlink(built, modules / "libcooperage_occ_step.so");
-  const auto run = testing::run_command("COOPERAGE_MODULE_DIR=" + modules.string() +
-                                        " LD_DEBUG=files " + kCli + " info " + path("b.step"));
+  const auto run = traced("COOPERAGE_MODULE_DIR=" + modules.string() + " LD_DEBUG=files " + kCli +
+                          " info " + path("b.step"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(opened(run.err, (modules / "libcooperage_occ_step.so").string())) << run.err;
 }
