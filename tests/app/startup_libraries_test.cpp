@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,6 +40,13 @@ class StartupLibraries : public testing::TempDirTest {
   std::string journal_here(const std::string& example) const {
     return "cp " + std::string(COOPERAGE_SOURCE_DIR) + "/examples/" + example + " " +
            dir_.string() + " && cd " + dir_.string();
+  }
+
+  // A 2 x 3 x 4 brick written in the scratch directory in each file format.
+  void write_brick(std::initializer_list<const char*> files) {
+    occ::Workbench bench;
+    bench.brick("b", {0, 0, 0}, {2, 3, 4});
+    for (const char* file : files) bench.write(path(file), {});
   }
 
   // Runs `command`, whose "LD_DEBUG=files " gets LD_DEBUG_OUTPUT beside it:
@@ -111,10 +119,7 @@ TEST_F(StartupLibraries, OcctsKernelIsNearTheFrontOfTheLookupScope) {
 }
 
 TEST_F(StartupLibraries, AStepOrIgesFileLoadsItsFormatsModuleAlone) {
-  occ::Workbench bench;
-  bench.brick("b", {0, 0, 0}, {2, 3, 4});
-  bench.write(path("b.step"), {});
-  bench.write(path("b.igs"), {});
+  write_brick({"b.step", "b.igs"});
   const auto step = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
   const auto iges = traced("LD_DEBUG=files " + kCli + " info " + path("b.igs"));
   for (const auto* r : {&step, &iges}) {
@@ -135,9 +140,7 @@ TEST_F(StartupLibraries, AStepOrIgesFileLoadsItsFormatsModuleAlone) {
 TEST_F(StartupLibraries, TheImportsChildAloneOpensTheStepModule) {
   // The command has one thread when it imports, so its child loads the
   // module and the command itself never maps STEP's toolkits.
-  occ::Workbench bench;
-  bench.brick("b", {0, 0, 0}, {2, 3, 4});
-  bench.write(path("b.step"), {});
+  write_brick({"b.step"});
   const auto info = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
   ASSERT_EQ(info.exit_code, 0) << info.err;
   // Each trace line starts with the pid of the process that wrote it.
@@ -158,9 +161,7 @@ TEST_F(StartupLibraries, TheImportsChildAloneOpensTheStepModule) {
 }
 
 TEST_F(StartupLibraries, CbcIsLoadedOnlyByARunThatAssignsIntervals) {
-  occ::Workbench bench;
-  bench.brick("b", {0, 0, 0}, {2, 3, 4});
-  bench.write(path("b.step"), {});
+  write_brick({"b.step"});
   const auto version = traced("LD_DEBUG=files " + kCli + " --version");
   const auto info = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
   const auto mesh = traced("LD_DEBUG=files " + kCli + " mesh " + path("b.step") +
@@ -187,9 +188,7 @@ TEST_F(StartupLibraries, ALoftLoadsTheLoftModule) {
 TEST_F(StartupLibraries, CooperageModuleDirIsLookedInFirst) {
   // The built module, linked into a scratch directory named by the variable:
   // the loader's trace shows the one it opened.
-  occ::Workbench bench;
-  bench.brick("b", {0, 0, 0}, {1, 1, 1});
-  bench.write(path("b.step"), {});
+  write_brick({"b.step"});
   const auto where = traced("LD_DEBUG=files " + kCli + " info " + path("b.step"));
   ASSERT_EQ(where.exit_code, 0) << where.err;
   std::string built;
