@@ -1,6 +1,6 @@
 // What the STEP and the IGES module (step_module.cpp, iges_module.cpp) share:
-// the C interface's error text and the transfer of a read file's roots.
-// Included only by those two modules.
+// their C interface (exchange.cpp finds it by name), its error text and the
+// transfer of a read file's roots. Included only by those two modules.
 #pragma once
 
 #include "framework/geometry/occ/exchange_units.h"
@@ -44,3 +44,26 @@ inline int transfer(XSControl_Reader& reader, const char* kind, TopoDS_Shape* sh
 }
 
 }  // namespace cooperage::occ::exchange_module
+
+// The interface each module defines. OCCT objects cross it by pointer (one
+// OCCT in the process); errors come back as text, kernel exceptions
+// propagate to the caller's guard (detail::guarded).
+extern "C" {
+
+/// The interface version (kAbi); the loader refuses a module that differs.
+__attribute__((visibility("default"))) int cooperage_exchange_abi();
+
+/// Reads a file of the module's format into *shape, in the file's length
+/// unit (*unit: in, the default; out, the file's). 0 on success; otherwise
+/// the reason in `error`.
+__attribute__((visibility("default"))) int cooperage_exchange_read(const char* path,
+                                                                   TopoDS_Shape* shape,
+                                                                   cooperage::occ::Unit* unit,
+                                                                   char* error, size_t size);
+
+/// Writes *shape in the module's format, in the unit named (an OCCT unit
+/// name, "MM", "INCH", ...). 0 on success.
+__attribute__((visibility("default"))) int cooperage_exchange_write(const char* path,
+                                                                    const TopoDS_Shape* shape,
+                                                                    const char* unit_name);
+}

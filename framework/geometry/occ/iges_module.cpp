@@ -17,13 +17,10 @@ using namespace cooperage::occ::exchange_module;
 
 extern "C" {
 
-__attribute__((visibility("default"))) int cooperage_exchange_abi() { return kAbi; }
+int cooperage_exchange_abi() { return kAbi; }
 
-/// Reads an IGES file into *shape, in the file's length unit (*unit: in, the
-/// default; out, the file's). 0 on success; otherwise the reason in `error`.
-__attribute__((visibility("default"))) int cooperage_exchange_read(const char* path,
-                                                                   TopoDS_Shape* shape, Unit* unit,
-                                                                   char* error, size_t size) {
+int cooperage_exchange_read(const char* path, TopoDS_Shape* shape, Unit* unit, char* error,
+                            size_t size) {
   IGESControl_Reader reader;
   if (reader.ReadFile(path) != IFSelect_RetDone)
     return fail(error, size, "not a readable IGES file");
@@ -47,10 +44,7 @@ __attribute__((visibility("default"))) int cooperage_exchange_read(const char* p
   return transfer(reader, "IGES", shape, *unit, error, size);
 }
 
-/// Writes *shape as IGES (B-rep solids) in the unit named. 0 on success.
-__attribute__((visibility("default"))) int cooperage_exchange_write(const char* path,
-                                                                    const TopoDS_Shape* shape,
-                                                                    const char* unit_name) {
+int cooperage_exchange_write(const char* path, const TopoDS_Shape* shape, const char* unit_name) {
   IGESControl_Controller::Init();
   IGESControl_Writer writer(unit_name, /*modecr=*/1);  // 1: B-rep solids
   bool ok = writer.AddShape(*shape);

@@ -4,11 +4,8 @@
 // relocations: linked into every process they cost ~30 ms of CPU before
 // main (issue 20), also in runs that only build geometry from a journal.
 // IGES has a module of its own (iges_module.cpp): TKIGES and the TKBool it
-// needs are another 17,600 relocations no STEP run uses.
-// A C interface, versioned by cooperage_exchange_abi(), so the loader finds
-// the functions by name; OCCT objects cross it by pointer (one OCCT in the
-// process). Errors come back as text; kernel exceptions propagate to the
-// caller's guard (detail::guarded) like any other kernel call's.
+// needs are another 17,600 relocations no STEP run uses. The C interface
+// both define is declared in exchange_transfer.h.
 #include "framework/geometry/occ/exchange_transfer.h"
 
 #include <IFSelect_ReturnStatus.hxx>
@@ -24,13 +21,10 @@ using namespace cooperage::occ::exchange_module;
 
 extern "C" {
 
-__attribute__((visibility("default"))) int cooperage_exchange_abi() { return kAbi; }
+int cooperage_exchange_abi() { return kAbi; }
 
-/// Reads a STEP file into *shape, in the file's length unit (*unit: in, the
-/// default; out, the file's). 0 on success; otherwise the reason in `error`.
-__attribute__((visibility("default"))) int cooperage_exchange_read(const char* path,
-                                                                   TopoDS_Shape* shape, Unit* unit,
-                                                                   char* error, size_t size) {
+int cooperage_exchange_read(const char* path, TopoDS_Shape* shape, Unit* unit, char* error,
+                            size_t size) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path) != IFSelect_RetDone)
     return fail(error, size, "not a readable STEP file");
@@ -41,11 +35,7 @@ __attribute__((visibility("default"))) int cooperage_exchange_read(const char* p
   return transfer(reader, "STEP", shape, *unit, error, size);
 }
 
-/// Writes *shape as STEP in the unit named (an OCCT unit name, "MM",
-/// "INCH", ...). 0 on success.
-__attribute__((visibility("default"))) int cooperage_exchange_write(const char* path,
-                                                                    const TopoDS_Shape* shape,
-                                                                    const char* unit_name) {
+int cooperage_exchange_write(const char* path, const TopoDS_Shape* shape, const char* unit_name) {
   STEPControl_Writer writer;
   Interface_Static::SetCVal("xstep.cascade.unit", unit_name);
   Interface_Static::SetCVal("write.step.unit", unit_name);
