@@ -27,7 +27,7 @@ const Api& api(Format format) {
   std::call_once(once[k], [k] {
     const char* file = k == static_cast<int>(Format::Step) ? "libcooperage_occ_step.so"
                                                            : "libcooperage_occ_iges.so";
-    void* handle = open_module(file, "cooperage_exchange_abi", /*abi=*/2);
+    void* handle = open_module(file, "cooperage_exchange_abi", kExchangeModuleAbi);
     loaded[k].read = reinterpret_cast<ReadFn>(dlsym(handle, "cooperage_exchange_read"));
     loaded[k].write = reinterpret_cast<WriteFn>(dlsym(handle, "cooperage_exchange_write"));
     if (loaded[k].read == nullptr || loaded[k].write == nullptr)

@@ -13,10 +13,6 @@
 
 namespace cooperage::occ::exchange_module {
 
-/// The interface version both modules report (cooperage_exchange_abi); the
-/// loader refuses a module that differs.
-constexpr int kAbi = 2;
-
 inline int fail(char* error, size_t size, const char* why) {
   std::snprintf(error, size, "%s", why);
   return 1;
@@ -50,7 +46,7 @@ inline int transfer(XSControl_Reader& reader, const char* kind, TopoDS_Shape* sh
 // propagate to the caller's guard (detail::guarded).
 extern "C" {
 
-/// The interface version (kAbi); the loader refuses a module that differs.
+/// The interface version (kExchangeModuleAbi, exchange_units.h).
 __attribute__((visibility("default"))) int cooperage_exchange_abi();
 
 /// Reads a file of the module's format into *shape, in the file's length

@@ -1,5 +1,6 @@
-// Length units of STEP and IGES files, shared by the reader in the exchange
-// module (exchange_module.cpp) and the import that gets its answer.
+// What the exchange modules (step_module.cpp, iges_module.cpp) and their
+// loader (exchange.cpp) share: the interface's version and the length units
+// of STEP and IGES files.
 #pragma once
 
 #include <algorithm>
@@ -7,6 +8,10 @@
 #include <string>
 
 namespace cooperage::occ {
+
+/// The exchange modules' interface version (cooperage_exchange_abi); the
+/// loader refuses a module that reports another.
+constexpr int kExchangeModuleAbi = 2;
 
 struct Unit {
   const char* occt;  ///< name understood by "xstep.cascade.unit"

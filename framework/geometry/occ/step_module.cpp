@@ -21,7 +21,7 @@ using namespace cooperage::occ::exchange_module;
 
 extern "C" {
 
-int cooperage_exchange_abi() { return kAbi; }
+int cooperage_exchange_abi() { return cooperage::occ::kExchangeModuleAbi; }
 
 int cooperage_exchange_read(const char* path, TopoDS_Shape* shape, Unit* unit, char* error,
                             size_t size) {
