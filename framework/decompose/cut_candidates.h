@@ -18,7 +18,8 @@ namespace cooperage::decompose {
 struct CutCandidate {
   CutSurface surface;
   /// Where it comes from, for a person: "plane of surface 12",
-  /// "cylinder of surface 9", "plane through curve 7 along z".
+  /// "cylinder of surface 9", "plane through curve 7 along z" (ids of the
+  /// model it was found in; the search names the part's, part_ids.h).
   std::string through;
 };
 

@@ -90,7 +90,8 @@ Decomposed decompose(const occ::SolidPieces& solids, const geom::Model& model,
     }
     DecomposeOptions budget = options;
     budget.max_cuts = std::min(options.max_cuts, std::max(8, kSearchFaceCuts / std::max(faces, 1)));
-    CutSearch search(registry, check, budget);
+    const PartIds part_ids(model, v);
+    CutSearch search(registry, check, budget, part_ids);
     auto plan = search.solve(solids.only(v - 1));
     d.tried = search.tried();
     out.report.tried += d.tried;

@@ -38,7 +38,7 @@ struct RefusedVolume {
 /// One cut of the decomposition.
 struct AppliedCut {
   CutSurface surface;
-  std::string through;    ///< "plane of surface 12" (ids of the model it was found in)
+  std::string through;    ///< "plane of surface 12" (the part's ids, part_ids.h)
   int depth = 0;          ///< 0: cut of the volume itself; 1: of one of its pieces, ...
   int pieces = 0;         ///< solids it gave
   double thinnest = 0.0;  ///< thinnest of them across the cut, model units

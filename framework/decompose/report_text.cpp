@@ -29,8 +29,9 @@ std::vector<std::string> report_lines(const Report& report) {
                   " tried); as one volume: " + v.refusal + " (" + v.why + ")");
     for (size_t k = 0; k < v.cuts.size(); ++k) {
       const AppliedCut& c = v.cuts[k];
-      out.push_back("  cut " + std::to_string(k + 1) + ": " + describe(c.surface) + ", the " +
-                    c.through + (c.depth ? " of a piece" : "") + " -> " + std::to_string(c.pieces) +
+      // `through` names the part's entities, whichever piece was cut.
+      out.push_back("  cut " + std::to_string(k + 1) + (c.depth ? " (of a piece)" : "") + ": " +
+                    describe(c.surface) + ", the " + c.through + " -> " + std::to_string(c.pieces) +
                     " pieces, thinnest " + num(c.thinnest));
     }
   }

@@ -139,16 +139,20 @@ std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Mode
                                 const Context& context) {
   // The pieces of one split share their cut faces already; among other
   // solids they are imprinted and merged with them first.
-  if (!context) return check_(alone ? *alone : pieces.build_model(true, true), last_resort_);
-  return check_(context(pieces).build_model(true, true), last_resort_);
+  const geom::Model model = !context ? (alone ? *alone : pieces.build_model(true, true))
+                                     : context(pieces).build_model(true, true);
+  const std::string reason = check_(model, last_resort_);
+  return reason.empty() ? reason : part_ids_.translate(reason, model);
 }
 
 std::optional<SolidPlan> CutSearch::solve_turned(const occ::SolidPieces& solid) {
   const geom::Model model = solid.build_model(false);
   if (model.volumes().size() != 1) return std::nullopt;
   const double size = options_.size;
-  for (const CoreCut& c : core_candidates(model, 1)) {
+  for (CoreCut c : core_candidates(model, 1)) {
     if (tried_ + 2 > options_.max_cuts) break;
+    c.core.through = part_ids_.translate(c.core.through, model);
+    c.meridian.through = part_ids_.translate(c.meridian.through, model);
     tried_ += 2;
     try {
       const occ::SolidPieces cored = solid.split(0, c.core.surface);
@@ -204,6 +208,9 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
   std::vector<CutCandidate> candidates =
       last_resort_ ? meridian_candidates(model, 1) : std::vector<CutCandidate>();
   std::vector<CutCandidate> more = cut_candidates(model, 1);
+  // Named by the part's entities (the inherited ones are already).
+  for (CutCandidate& c : candidates) c.through = part_ids_.translate(c.through, model);
+  for (CutCandidate& c : more) c.through = part_ids_.translate(c.through, model);
   more.insert(more.end(), inherited.begin(), inherited.end());
   for (const CutCandidate& c : more) {
     bool known = false;
@@ -310,7 +317,8 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       if (e.verdicts[k].ok) continue;
       best_partial_ = "the best, " + e.candidate->through + " (" + describe(e.candidate->surface) +
                       "), leaves a piece of volume " + number(e.model.volumes()[k].volume) +
-                      " not sweepable because " + e.verdicts[k].why;
+                      " not sweepable because " +
+                      part_ids_.translate(e.verdicts[k].why, e.model, static_cast<int>(k) + 1);
       break;
     }
   }

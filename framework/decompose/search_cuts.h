@@ -5,6 +5,7 @@
 
 #include "framework/decompose/cut_candidates.h"
 #include "framework/decompose/decompose.h"
+#include "framework/decompose/part_ids.h"
 
 #include <functional>
 #include <optional>
@@ -22,11 +23,14 @@ struct SolidPlan {
 /// Searches the cuts of one solid (a SolidPieces of size 1).
 class CutSearch {
  public:
+  /// `part_ids`: the part's ids for what the search says of its pieces
+  /// (cuts, refusals).
   CutSearch(const scheme::Registry& registry, const ModelCheck& check,
-            const DecomposeOptions& options)
+            const DecomposeOptions& options, const PartIds& part_ids)
       : registry_(registry),
         check_(check),
         options_(options),
+        part_ids_(part_ids),
         arena_(options.threads > 0 ? options.threads : tbb::task_arena::automatic) {}
 
   /// The decomposition of `solid`, or nullopt (then failure() says why).
@@ -61,13 +65,15 @@ class CutSearch {
   /// then a meridian cut of the tube around it, when all three pieces have
   /// a scheme and plan together.
   std::optional<SolidPlan> solve_turned(const occ::SolidPieces& solid);
-  /// "" when `pieces` plan among the solids of `context`, else the reason.
+  /// "" when `pieces` plan among the solids of `context`, else the reason
+  /// (in the part's ids).
   std::string check_in(const occ::SolidPieces& pieces, const geom::Model* alone,
                        const Context& context);
 
   const scheme::Registry& registry_;
   const ModelCheck& check_;
   DecomposeOptions options_;
+  const PartIds& part_ids_;
   tbb::task_arena arena_;  ///< the cuts of one level are made in parallel
   int tried_ = 0;
   bool last_resort_ = false;  ///< the second pass: meridian cuts, rings of sweeps

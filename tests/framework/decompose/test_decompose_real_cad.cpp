@@ -1,6 +1,7 @@
 // Real CAD parts made by other people (../shared/real-cad, PROVENANCE.md
 // there) meshed by `cooperage mesh`'s job at D/40 (D the bounding-box
 // diagonal): issue 17's list. Skipped, saying so, when the folder is absent.
+#include "framework/decompose/cut_surface.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
 #include "framework/pipeline/model_job.h"
@@ -12,7 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -22,6 +26,51 @@ namespace {
 namespace fs = std::filesystem;
 
 using testing::real_cad;
+
+// Centre of the circle through three points.
+geom::Vec3 circumcentre(const geom::Vec3& a, const geom::Vec3& b, const geom::Vec3& c) {
+  const geom::Vec3 u = b - a, v = c - a, w = u.cross(v);
+  return a + (u.squaredNorm() * v - v.squaredNorm() * u).cross(w) / (2 * w.squaredNorm());
+}
+
+// A cut is named by entities of the part the user has (part_ids.h), also
+// the cuts of a piece: "plane of surface N" is a face of the part in the
+// cut's plane, "plane through curve N" a curve of the part in it, "cone
+// through curves A and B" circles of the part on the cone, "plane through
+// the axis of surface N" holds the centres of that face's circles.
+void expect_named_by_the_part(const geom::Model& part, const decompose::AppliedCut& c) {
+  const double tol = std::max(1e-6 * part.box().diagonal(), 2 * c.surface.fuzzy);
+  const bool axis = c.through.find("axis of surface") != std::string::npos;
+  std::vector<geom::Vec3> points;
+  const auto add_curve = [&](int id) {
+    const auto& g = part.curve(id).geometry;
+    const auto [a, b] = g->range();
+    const auto at = [&](double f) { return g->point(a + f * (b - a)); };
+    if (!axis) {
+      for (double f : {0.0, 0.3, 0.7, 1.0}) points.push_back(at(f));
+    } else if (g->type() == geom::CurveType::Circle) {
+      points.push_back(circumcentre(at(0.1), at(0.4), at(0.8)));
+    }
+  };
+  const std::regex named("(surface|curves?) ([0-9]+)(?: and ([0-9]+))?");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(c.through, m, named)) << c.through;
+  for (size_t k : {size_t{2}, size_t{3}}) {
+    if (!m[k].matched) continue;
+    const int id = std::stoi(m[k].str());
+    if (m[1] == "surface") {
+      for (const auto& loop : part.surface(id).loops)
+        for (const auto& use : loop.uses) add_curve(use.curve);
+    } else {
+      add_curve(id);
+    }
+  }
+  EXPECT_FALSE(points.empty()) << c.through;
+  for (const geom::Vec3& p : points)
+    EXPECT_LT(std::abs(decompose::signed_distance(c.surface, p)), tol)
+        << c.through << ": (" << p.transpose() << ") is off the cut, "
+        << decompose::describe(c.surface);
+}
 
 class DecomposeRealCad : public ::testing::TestWithParam<const char*> {};
 
@@ -48,6 +97,11 @@ TEST_P(DecomposeRealCad, MeshesAllHexAtADiagonalOverForty) {
   EXPECT_NEAR(s.volume, exact, 0.01 * exact);
   EXPECT_FALSE(r.decomposition.volumes.empty()) << "not cut";
   EXPECT_GE(r.model.volumes().size(), 2u);
+  for (const auto& v : r.decomposition.volumes)
+    for (const auto& c : v.cuts) {
+      if (c.through.rfind("core cylinder", 0) == 0) continue;  // about an axis, no face
+      expect_named_by_the_part(part, c);
+    }
 }
 
 // A search that fails tries every cut it may, on as many threads as it is
