@@ -8,11 +8,14 @@
 #include "schemes/cooper/chart_warp.h"
 #include "schemes/cooper/imprint_debug.h"
 #include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/imprint_site.h"
 #include "schemes/cooper/sweep_state.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -273,6 +276,31 @@ std::string unmatched_surfaces(const SweepState& s, const ImprintResult& r) {
   return out;
 }
 
+// Where an imprint stopped, in model coordinates: "; near (1.2, 3.4, 5.6)",
+// the closest approach of the rims left unmatched on its two ends (a
+// crossing or a near miss: both where features meet). `in`: the ends given
+// (their nodes are the sweep's).
+std::string failure_site(const SweepState& s, const BarrelEnds& in, const ImprintResult& r) {
+  const ImprintSite site = narrowest_gap(r);
+  if (site.node < 0) return "";
+  // A node the imprint made has no 3D position yet: the given node nearest it.
+  int known = site.node;
+  if (!in.xy.count(known)) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [n, p] : in.xy) {
+      const double d = (p - site.at).norm();
+      if (d < best) {
+        best = d;
+        known = n;
+      }
+    }
+  }
+  const Vec3& x = s.pos(known);
+  char text[96];
+  std::snprintf(text, sizeof text, "; near (%.4g, %.4g, %.4g)", x.x(), x.y(), x.z());
+  return text;
+}
+
 }  // namespace
 
 // cite: Blacker 1996, sec. 5 (5.1 matching, 5.2 subtraction, 5.3
@@ -312,7 +340,7 @@ void imprint_barrels(SweepState& s) {
         write_imprint_debug("volume" + std::to_string(s.vid) + "-barrel" + std::to_string(b + 1),
                             ends, r);
         fail(s.vid, s.barrel_name(b) + ": subcap imprinting failed" + unmatched_surfaces(s, r) +
-                        " (" + r.why + ")");
+                        " (" + r.summary + failure_site(s, ends, r) + ")");
       }
       try {
         changed = apply(s, b, ends, r, warp) || changed;

@@ -75,11 +75,14 @@ ImprintResult Imprinter::run() {
     if (try_coincident()) continue;
     if (try_gaps()) continue;
     r_.why = "no imprinting step applies to the unmatched subcaps" + unmatched_list();
+    r_.summary = "no imprinting step applies to the " + left_unmatched();
     export_ribs();
     return r_;
   }
   r_.why = "imprinting did not finish within " + std::to_string(bound) +
            " steps; unmatched subcaps" + unmatched_list();
+  r_.summary = "imprinting did not finish within " + std::to_string(bound) + " steps (" +
+               left_unmatched() + ")";
   export_ribs();
   return r_;
 }
@@ -103,15 +106,27 @@ bool Imprinter::all_matched() {
 }
 
 std::string Imprinter::unmatched_list() {
+  // The first few by id (r_.unmatched holds them all): a cycle of splits
+  // left 240 subcaps, a 2 KB line no person reads.
+  constexpr size_t kListed = 8;
   std::string s;
+  size_t count = 0;
   for (int e = 0; e < 2; ++e) {
     for (const Subcap& c : caps(e)) {
       if (matched(c.id)) continue;
-      s += std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
+      if (count++ < kListed)
+        s +=
+            std::string(s.empty() ? ": " : ", ") + (e ? "lower " : "upper ") + std::to_string(c.id);
       r_.unmatched[static_cast<size_t>(e)].push_back(c.id);
     }
   }
+  if (count > kListed) s += " and " + std::to_string(count - kListed) + " more";
   return s;
+}
+
+std::string Imprinter::left_unmatched() const {
+  const size_t n = r_.unmatched[0].size() + r_.unmatched[1].size();
+  return std::to_string(n) + (n == 1 ? " subcap" : " subcaps") + " left unmatched";
 }
 
 void Imprinter::finish() {

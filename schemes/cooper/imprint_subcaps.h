@@ -68,7 +68,10 @@ const char* to_string(ImprintStep step);
 
 struct ImprintResult {
   bool ok = false;
-  std::string why;  ///< for !ok: which subcaps could not be resolved
+  std::string why;  ///< for !ok: which subcaps could not be resolved (their ids)
+  /// For !ok: the same for a person, without the ids ("no imprinting step
+  /// applies to the 4 subcaps left unmatched").
+  std::string summary;
   /// The ends after imprinting: new nodes in xy, split subcaps (new ids
   /// above the input's), exterior + interior ribs.
   BarrelEnds ends;

@@ -27,6 +27,8 @@ class Imprinter {
   bool matched(int cap) const { return match_of_.count(cap) > 0; }
 
   bool all_matched();
+  /// "4 subcaps left unmatched" (after unmatched_list()).
+  std::string left_unmatched() const;
   std::string unmatched_list();
   void finish();
   // Every rib so far, the interior ones too, into r_.ends.ribs: a failed
