@@ -28,17 +28,22 @@ double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
 
 // Every node of `from` against every edge of `to`: the closest approach
 // above `touch`, kept in `site` when closer than what it holds.
+// Nodes of the exterior ring (joined to the other end by the barrel's own
+// ribs) and edges between two of them are settled: where the two ends' outer
+// rims run together (a wall charted twice) is no place to name.
 void approach(const std::vector<const std::vector<int>*>& from,
               const std::vector<const std::vector<int>*>& to, const std::map<int, Vec2>& xy,
-              double touch, ImprintSite& site) {
+              const std::set<int>& linked, double touch, ImprintSite& site) {
   for (const auto* lf : from) {
     for (int n : *lf) {
+      if (linked.count(n)) continue;
       const Vec2& p = xy.at(n);
       for (const auto* lt : to) {
         const size_t m = lt->size();
         for (size_t k = 0; k < m; ++k) {
           const int a = (*lt)[k], b = (*lt)[(k + 1) % m];
           if (a == n || b == n) continue;  // a shared node: a contact
+          if (linked.count(a) && linked.count(b)) continue;
           const double d = segment_distance(p, xy.at(a), xy.at(b));
           if (d > touch && d < site.gap) {
             site.gap = d;
@@ -70,8 +75,16 @@ ImprintSite narrowest_gap(const ImprintResult& r) {
   }
   site.edge = edges ? length / static_cast<double>(edges) : 0.0;
   const double touch = 1e-6 * site.edge;
-  approach(upper, lower, r.ends.xy, touch, site);
-  approach(lower, upper, r.ends.xy, touch, site);
+  // The exterior ribs: all ribs but those the imprint made.
+  const std::set<std::pair<int, int>> made(r.interior_ribs.begin(), r.interior_ribs.end());
+  std::set<int> linked;
+  for (const auto& rib : r.ends.ribs) {
+    if (made.count(rib)) continue;
+    linked.insert(rib.first);
+    linked.insert(rib.second);
+  }
+  approach(upper, lower, r.ends.xy, linked, touch, site);
+  approach(lower, upper, r.ends.xy, linked, touch, site);
   return site;
 }
 

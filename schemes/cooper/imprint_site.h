@@ -25,6 +25,8 @@ struct ImprintSite {
 /// subcaps `r` left unmatched: a node of one end off an edge of the other
 /// by the least distance above a millionth of their mean edge (a node on
 /// the edge up to rounding, or a shared node, is a contact, not a gap).
+/// Nodes of the exterior ribs (r.ends.ribs but r.interior_ribs) and edges
+/// between two of them are left out: the outer rims are joined already.
 /// Without unmatched subcaps on both ends, node -1.
 ImprintSite narrowest_gap(const ImprintResult& r);
 
