@@ -14,6 +14,7 @@
 #include "schemes/cooper/untangle_cap.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -42,6 +43,21 @@ std::pair<size_t, int> home(const Piece& p) {
                          : std::make_pair(static_cast<size_t>(p.lower_of), 1);
 }
 
+// Where a subcap lies, for a person: " within 0.4 of (1.2, 3.4, 5.6)", the
+// centre of its boundary nodes and their farthest from it.
+std::string place_of(const SweepState& s, const std::vector<int>& nodes) {
+  if (nodes.empty()) return "";
+  Vec3 centre = Vec3::Zero();
+  for (int n : nodes) centre += s.pos(n);
+  centre /= static_cast<double>(nodes.size());
+  double radius = 0.0;
+  for (int n : nodes) radius = std::max(radius, (s.pos(n) - centre).norm());
+  char text[128];
+  std::snprintf(text, sizeof text, " within %.2g of (%.4g, %.4g, %.4g)", radius, centre.x(),
+                centre.y(), centre.z());
+  return text;
+}
+
 // Meshes a piece with the polygon mesher in its barrel's chart.
 void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   if (!s.mesher)
@@ -63,8 +79,8 @@ void mesh_with_polygon_mesher(SweepState& s, Piece& p) {
   if (boundary.size() % 2 != 0 && s.plan.elements == Elements::Hex) {
     throw MeshingError(ErrorCode::MeshingFailed, EntityRef::volume(s.vid),
                        where + " has an odd number of boundary nodes (" +
-                           std::to_string(boundary.size()) +
-                           ") where imprinted features cross, and no all-hex mesh fits it",
+                           std::to_string(boundary.size()) + ")" + place_of(s, boundary) +
+                           " where imprinted features cross, and no all-hex mesh fits it",
                        "elements \"mixed\" (--elements mixed) meshes it with one column of "
                        "wedges; a smaller size or a <webcut> between the features may mesh it "
                        "all-hex");

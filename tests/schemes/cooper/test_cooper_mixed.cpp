@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -244,6 +245,8 @@ TEST(CooperMixed, AnOddImprintedSubcapGetsOneColumnOfWedges) {
     register_builtin_schemes(registry);
     return pipeline::mesh_model(model, s, registry, selector::mesh_options());
   };
+  Vec3 place = Vec3::Zero();
+  double within = -1;
   try {
     at(io::ElementKind::Hex);
     ADD_FAILURE() << "expected all-hex to fail";
@@ -251,9 +254,26 @@ TEST(CooperMixed, AnOddImprintedSubcapGetsOneColumnOfWedges) {
     EXPECT_EQ(e.entity().id, 1);
     EXPECT_NE(e.message().find("odd number of boundary nodes"), std::string::npos) << e.what();
     EXPECT_NE(e.hint().find("--elements mixed"), std::string::npos) << e.hint();
+    const size_t k = e.message().find(" within ");
+    ASSERT_NE(k, std::string::npos) << e.what();
+    ASSERT_EQ(std::sscanf(e.message().c_str() + k, " within %lf of (%lf, %lf, %lf)", &within,
+                          &place.x(), &place.y(), &place.z()),
+              4)
+        << e.what();
   }
 
   const pipeline::MeshResult mixed = at(io::ElementKind::Mixed);
+  // The place the refusal names holds one of the columns of wedges the
+  // mixed mesh puts into the odd subcaps (seen along the sweep, z).
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [id, v] : mixed.mesh.volumes()) {
+    for (const auto& w : v.wedges) {
+      Vec3 c = Vec3::Zero();
+      for (int n : w) c += mixed.mesh.node(n) / 6.0;
+      nearest = std::min(nearest, std::hypot(c.x() - place.x(), c.y() - place.y()));
+    }
+  }
+  EXPECT_LT(nearest, within + 0.93) << "no wedge near the place the refusal names";
   ASSERT_TRUE(mixed.plan.refused_volumes.empty());
   const testing::MixedMeshSummary m = testing::check_mixed_mesh(model, mixed.mesh);
   EXPECT_GT(m.wedges, 0u);
