@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <cmath>
@@ -341,8 +342,14 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
         mesh::untangle_corners(out.coords, normals, fixed, out.quads, project);
         if (untangle_quads(out.coords, normals, fixed, out.quads, project) > 0.0) return out;
       }
-      fail(sid, "the lattice fill gives an inverted quad (" + std::to_string(inverted) +
-                    "); the interval counts do not fit the face's shape");
+      // Where the fold was, for a person (the quad's index means nothing).
+      Vec3 at = Vec3::Zero();
+      for (int n : out.quads[static_cast<size_t>(inverted)])
+        at += out.coords[static_cast<size_t>(n)] / 4.0;
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.4g, %.4g, %.4g)", at.x(), at.y(), at.z());
+      fail(sid, "the lattice fill gives an inverted quad at " + std::string(where) +
+                    "; the interval counts do not fit the face's shape");
     }
   }
   throw std::logic_error("submap: unreachable");
