@@ -7,6 +7,7 @@
 #include "framework/scheme/vertex_angles.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -190,8 +191,11 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view,
         out.coords[static_cast<size_t>(q[0])], out.coords[static_cast<size_t>(q[1])],
         out.coords[static_cast<size_t>(q[2])], out.coords[static_cast<size_t>(q[3])]};
     if (!(quality::quad_scaled_jacobian(p, normals[k]) > 0)) {
+      const Eigen::Vector3d at = (p[0] + p[1] + p[2] + p[3]) / 4.0;
+      char where[96];
+      std::snprintf(where, sizeof where, "(%.4g, %.4g, %.4g)", at.x(), at.y(), at.z());
       fail(sid, ErrorCode::MeshingFailed,
-           "quad " + std::to_string(k) +
+           "a quad at " + std::string(where) +
                " is inverted on the surface (distortion of the parameter space)");
     }
   }
