@@ -30,4 +30,18 @@ PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Reg
   return out;
 }
 
+std::string deciding_reason(const std::string& why) {
+  // Cooper's words (schemes/cooper/plan_volume.cpp); without them, all.
+  const std::string marker = "(the one that got furthest: ";
+  const size_t at = why.find(marker);
+  if (at == std::string::npos) return why;
+  const size_t start = at + marker.size();
+  int depth = 1;
+  for (size_t i = start; i < why.size(); ++i) {
+    if (why[i] == '(') ++depth;
+    if (why[i] == ')' && --depth == 0) return why.substr(start, i - start);
+  }
+  return why.substr(start);  // cut short: what there is
+}
+
 }  // namespace cooperage::decompose

@@ -25,4 +25,9 @@ struct PieceVerdict {
 PieceVerdict best_scheme(const geom::Model& model, int volume, const scheme::Registry& registry,
                          const scheme::Settings* settings = nullptr);
 
+/// The clause of a refusal a person acts on: cooper's furthest sorting
+/// ("along (0, 1, 0): surface 39 cannot be a side (it has 2 loops; ...)")
+/// when `why` reports one, else `why` whole.
+std::string deciding_reason(const std::string& why);
+
 }  // namespace cooperage::decompose

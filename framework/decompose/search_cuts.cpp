@@ -315,10 +315,13 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     const Evaluated& e = *partial.front();
     for (size_t k = 0; k < e.verdicts.size(); ++k) {
       if (e.verdicts[k].ok) continue;
-      best_partial_ = "the best, " + e.candidate->through + " (" + describe(e.candidate->surface) +
-                      "), leaves a piece of volume " + number(e.model.volumes()[k].volume) +
-                      " not sweepable because " +
-                      part_ids_.translate(e.verdicts[k].why, e.model, static_cast<int>(k) + 1);
+      // Cooper's furthest sorting first: the whole of every scheme's
+      // refusal would push it past what a line shows.
+      best_partial_ =
+          "the best, " + e.candidate->through + " (" + describe(e.candidate->surface) +
+          "), leaves a piece of volume " + number(e.model.volumes()[k].volume) +
+          " that no scheme meshes: " +
+          part_ids_.translate(deciding_reason(e.verdicts[k].why), e.model, static_cast<int>(k) + 1);
       break;
     }
   }

@@ -188,7 +188,7 @@ TEST_F(Boxes, TheSearchIsBoundedAndSaysWhatTheBestCutLeft) {
   } catch (const MeshingError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("tried 1 cut;"), std::string::npos) << what;
-    EXPECT_NE(what.find("not sweepable because box: "), std::string::npos) << what;
+    EXPECT_NE(what.find("that no scheme meshes: box: "), std::string::npos) << what;
   }
 }
 
