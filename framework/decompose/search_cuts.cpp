@@ -108,6 +108,15 @@ std::optional<Evaluated> judge(occ::SolidPieces pieces, const CutCandidate& c, d
   return e;
 }
 
+// A cut's surface in a refusal, after the face or edge it runs through:
+// " (plane y = 2)"; an oblique one's origin and normal (60 characters) would
+// push the reason past what a line of the command shows (`cooperage plan`
+// lists every cut in full).
+std::string in_brief(const CutSurface& cut) {
+  const std::string d = describe(cut);
+  return d.size() <= 32 ? " (" + d + ")" : "";
+}
+
 AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
   return {e.candidate->surface, e.candidate->through, depth, e.outcome.pieces, thinnest};
 }
@@ -307,8 +316,8 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
     ++conflicts_;
     log::info("decompose: " + e->candidate->through + " does not plan: " + reason);
     if (conflict_.empty()) {
-      conflict_ = "the best cut with sweepable pieces, " + e->candidate->through + " (" +
-                  describe(e->candidate->surface) + "), does not plan: " + reason;
+      conflict_ = "the best cut with sweepable pieces, " + e->candidate->through +
+                  in_brief(e->candidate->surface) + ", does not plan: " + reason;
     }
   }
   if (depth == 0 && !partial.empty() && best_partial_.empty()) {
@@ -318,8 +327,8 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       // Cooper's furthest sorting first: the whole of every scheme's
       // refusal would push it past what a line shows.
       best_partial_ =
-          "the best, " + e.candidate->through + " (" + describe(e.candidate->surface) +
-          "), leaves a piece of volume " + number(e.model.volumes()[k].volume) +
+          "the best, " + e.candidate->through + in_brief(e.candidate->surface) +
+                      ", leaves a piece of volume " + number(e.model.volumes()[k].volume) +
           " that no scheme meshes: " +
           part_ids_.translate(deciding_reason(e.verdicts[k].why), e.model, static_cast<int>(k) + 1);
       break;
