@@ -286,6 +286,7 @@ std::string failure_site(const SweepState& s, const BarrelEnds& in, const Imprin
   // A node the imprint made has no 3D position yet: the given node nearest it.
   int known = site.node;
   if (!in.xy.count(known)) {
+    if (in.xy.empty()) return "";
     double best = std::numeric_limits<double>::infinity();
     for (const auto& [n, p] : in.xy) {
       const double d = (p - site.at).norm();
