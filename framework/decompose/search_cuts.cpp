@@ -110,8 +110,9 @@ std::optional<Evaluated> judge(occ::SolidPieces pieces, const CutCandidate& c, d
 
 // A cut's surface in a refusal, after the face or edge it runs through:
 // " (plane y = 2)"; an oblique one's origin and normal (60 characters) would
-// push the reason past what a line of the command shows (`cooperage plan`
-// lists every cut in full).
+// push the reason past what a line of the command shows, and follow from
+// the face, or the curve and direction, named (the cuts of a decomposition
+// that succeeds are listed in full).
 std::string in_brief(const CutSurface& cut) {
   const std::string d = describe(cut);
   return d.size() <= 32 ? " (" + d + ")" : "";
@@ -148,8 +149,13 @@ std::string CutSearch::check_in(const occ::SolidPieces& pieces, const geom::Mode
                                 const Context& context) {
   // The pieces of one split share their cut faces already; among other
   // solids they are imprinted and merged with them first.
-  const geom::Model model = !context ? (alone ? *alone : pieces.build_model(true, true))
-                                     : context(pieces).build_model(true, true);
+  geom::Model built;
+  if (context) {
+    built = context(pieces).build_model(true, true);
+  } else if (!alone) {
+    built = pieces.build_model(true, true);
+  }
+  const geom::Model& model = alone && !context ? *alone : built;
   const std::string reason = check_(model, last_resort_);
   return reason.empty() ? reason : part_ids_.translate(reason, model);
 }
@@ -328,7 +334,7 @@ std::optional<SolidPlan> CutSearch::solve(const occ::SolidPieces& solid, int dep
       // refusal would push it past what a line shows.
       best_partial_ =
           "the best, " + e.candidate->through + in_brief(e.candidate->surface) +
-                      ", leaves a piece of volume " + number(e.model.volumes()[k].volume) +
+          ", leaves a piece of volume " + number(e.model.volumes()[k].volume) +
           " that no scheme meshes: " +
           part_ids_.translate(deciding_reason(e.verdicts[k].why), e.model, static_cast<int>(k) + 1);
       break;
