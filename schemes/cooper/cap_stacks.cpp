@@ -14,8 +14,8 @@
 #include "schemes/cooper/untangle_cap.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <limits>
 #include <numeric>
