@@ -60,6 +60,12 @@ std::string clip_path(std::string_view path, std::size_t limit) {
   return clip(path, limit);
 }
 
+std::string point_text(double x, double y, double z) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", x, y, z);
+  return buf;
+}
+
 std::string number_text(double value) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", value);

@@ -21,6 +21,10 @@ std::string clip(std::string_view text, std::size_t limit = kEchoLimit);
 /// ("0.5", "3.1095", "1e+06").
 std::string number_text(double value);
 
+/// A point for a message: "(1.25, -3, 40.12)", four significant digits
+/// each (enough to find the spot on a part, short enough for a line).
+std::string point_text(double x, double y, double z);
+
 /// A file path for a message: like clip(), but a long path keeps its end
 /// (the file name) and loses its beginning: "…/deep/dir/part.step".
 std::string clip_path(std::string_view path, std::size_t limit = kEchoLimit);

@@ -1,6 +1,7 @@
 #include "framework/geometry/validate.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 
 #include <cmath>
 #include <cstdio>
@@ -16,9 +17,7 @@ std::string num(double v) {
   return buf;
 }
 
-std::string point_text(const Vec3& p) {
-  return "(" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) + ")";
-}
+std::string point_text(const Vec3& p) { return cooperage::point_text(p.x(), p.y(), p.z()); }
 
 [[noreturn]] void defect(EntityRef entity, const std::string& what) {
   throw MeshingError(ErrorCode::GeometryError, entity,

@@ -1,5 +1,6 @@
 #include "framework/pipeline/worst_element.h"
 
+#include "framework/core/text.h"
 #include "framework/quality/hex_metrics.h"
 #include "framework/quality/wedge_metrics.h"
 #include "framework/scheme/vertex_angles.h"
@@ -19,9 +20,7 @@ std::string number(double v, const char* format = "%.3g") {
   return buf;
 }
 
-std::string point_text(const geom::Vec3& x) {
-  return "(" + number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")";
-}
+std::string point_text(const geom::Vec3& x) { return cooperage::point_text(x.x(), x.y(), x.z()); }
 
 // The sharpest corner at model vertex `vertex` among the faces of `volume`.
 struct Corner {

@@ -6,6 +6,7 @@
 // barrel's least-squares map of its rings, plus the residuals of the
 // subcap's own boundary (whose images are known through the ribs)
 // interpolated inside, then onto the real cap.
+#include "framework/core/text.h"
 #include "schemes/cooper/imprint_polygons.h"
 #include "schemes/cooper/pinched_loops.h"
 #include "schemes/cooper/residual_field.h"
@@ -52,10 +53,9 @@ std::string place_of(const SweepState& s, const std::vector<int>& nodes) {
   centre /= static_cast<double>(nodes.size());
   double radius = 0.0;
   for (int n : nodes) radius = std::max(radius, (s.pos(n) - centre).norm());
-  char text[128];
-  std::snprintf(text, sizeof text, " within %.2g of (%.4g, %.4g, %.4g)", radius, centre.x(),
-                centre.y(), centre.z());
-  return text;
+  char reach[32];
+  std::snprintf(reach, sizeof reach, " within %.2g of ", radius);
+  return reach + point_text(centre.x(), centre.y(), centre.z());
 }
 
 // Meshes a piece with the polygon mesher in its barrel's chart.

@@ -5,6 +5,7 @@
 // (the pieces are shared), so the barrels are imprinted again until no
 // subcap changes. New nodes get positions on their end (projected onto a
 // real cap); a cap meshed beforehand must never be cut.
+#include "framework/core/text.h"
 #include "schemes/cooper/chart_warp.h"
 #include "schemes/cooper/imprint_debug.h"
 #include "schemes/cooper/imprint_polygons.h"
@@ -297,9 +298,7 @@ std::string failure_site(const SweepState& s, const BarrelEnds& in, const Imprin
     }
   }
   const Vec3& x = s.pos(known);
-  char text[96];
-  std::snprintf(text, sizeof text, "; near (%.4g, %.4g, %.4g)", x.x(), x.y(), x.z());
-  return text;
+  return "; near " + point_text(x.x(), x.y(), x.z());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "schemes/pave/pave_scheme.h"
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 #include "framework/quality/quad_metrics.h"
 #include "framework/mesh/loop_nodes.h"
 #include "framework/mesh2d/surface_chart.h"
@@ -192,10 +193,8 @@ scheme::EntityMesh PaveScheme::mesh(const scheme::SurfaceView& view,
         out.coords[static_cast<size_t>(q[2])], out.coords[static_cast<size_t>(q[3])]};
     if (!(quality::quad_scaled_jacobian(p, normals[k]) > 0)) {
       const Eigen::Vector3d at = (p[0] + p[1] + p[2] + p[3]) / 4.0;
-      char where[96];
-      std::snprintf(where, sizeof where, "(%.4g, %.4g, %.4g)", at.x(), at.y(), at.z());
       fail(sid, ErrorCode::MeshingFailed,
-           "a quad at " + std::string(where) +
+           "a quad at " + point_text(at.x(), at.y(), at.z()) +
                " is inverted on the surface (distortion of the parameter space)");
     }
   }

@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "framework/core/error.h"
+#include "framework/core/text.h"
 #include "framework/mesh/corner_untangle.h"
 #include "schemes/submap/directions.h"
 #include "schemes/submap/hole_offsets.h"
@@ -346,9 +347,7 @@ scheme::EntityMesh SurfaceSubmap::mesh(const scheme::SurfaceView& view,
       Vec3 at = Vec3::Zero();
       for (int n : out.quads[static_cast<size_t>(inverted)])
         at += out.coords[static_cast<size_t>(n)] / 4.0;
-      char where[96];
-      std::snprintf(where, sizeof where, "(%.4g, %.4g, %.4g)", at.x(), at.y(), at.z());
-      fail(sid, "the lattice fill gives an inverted quad at " + std::string(where) +
+      fail(sid, "the lattice fill gives an inverted quad at " + point_text(at.x(), at.y(), at.z()) +
                     "; the interval counts do not fit the face's shape");
     }
   }
