@@ -1,5 +1,7 @@
 #include "schemes/cooper/imprint_site.h"
 
+#include "schemes/cooper/imprint_polygons.h"
+
 #include <algorithm>
 #include <set>
 #include <vector>
@@ -17,13 +19,6 @@ std::vector<const std::vector<int>*> loops_of(const std::vector<Subcap>& caps,
     for (const auto& l : c.loops) out.push_back(&l);
   }
   return out;
-}
-
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
 }
 
 // Every node of `from` against every edge of `to`: the closest approach
@@ -44,7 +39,7 @@ void approach(const std::vector<const std::vector<int>*>& from,
           const int a = (*lt)[k], b = (*lt)[(k + 1) % m];
           if (a == n || b == n) continue;  // a shared node: a contact
           if (linked.count(a) && linked.count(b)) continue;
-          const double d = segment_distance(p, xy.at(a), xy.at(b));
+          const double d = (p - detail::closest_on_segment(p, xy.at(a), xy.at(b))).norm();
           if (d > touch && d < site.gap) {
             site.gap = d;
             site.node = n;
