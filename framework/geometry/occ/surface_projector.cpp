@@ -32,11 +32,26 @@ SurfaceProjector::SurfaceProjector(const Handle(Geom_Surface) & surface, double 
     : surface_(surface), u0_(u0), u1_(u1), v0_(v0), v1_(v1) {
   const GeomAdaptor_Surface a(surface_);
   switch (a.GetType()) {
-    case GeomAbs_Plane: kind_ = Kind::Plane; break;
-    case GeomAbs_Cylinder: kind_ = Kind::Cylinder; break;
-    case GeomAbs_Cone: kind_ = Kind::Cone; break;
-    case GeomAbs_Sphere: kind_ = Kind::Sphere; break;
-    case GeomAbs_Torus: kind_ = Kind::Torus; break;
+    case GeomAbs_Plane:
+      kind_ = Kind::Plane;
+      plane_ = a.Plane();
+      break;
+    case GeomAbs_Cylinder:
+      kind_ = Kind::Cylinder;
+      cylinder_ = a.Cylinder();
+      break;
+    case GeomAbs_Cone:
+      kind_ = Kind::Cone;
+      cone_ = a.Cone();
+      break;
+    case GeomAbs_Sphere:
+      kind_ = Kind::Sphere;
+      sphere_ = a.Sphere();
+      break;
+    case GeomAbs_Torus:
+      kind_ = Kind::Torus;
+      torus_ = a.Torus();
+      break;
     default: kind_ = Kind::Other; break;
   }
   u_periodic_ = surface_->IsUPeriodic();
@@ -68,19 +83,18 @@ bool SurfaceProjector::in_box(Vec2& uv) const {
 std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p,
                                                   std::optional<Vec2>* outside) const {
   if (kind_ == Kind::Other) return std::nullopt;
-  const GeomAdaptor_Surface a(surface_);
   double u = 0.0, v = 0.0;
   switch (kind_) {
-    case Kind::Plane: ElSLib::Parameters(a.Plane(), p, u, v); break;
+    case Kind::Plane: ElSLib::Parameters(plane_, p, u, v); break;
     case Kind::Cylinder: {
       // On the axis every angle is closest: leave the choice to the global search.
-      const gp_Cylinder c = a.Cylinder();
+      const gp_Cylinder& c = cylinder_;
       if (gp_Lin(c.Axis()).Distance(p) < 1e-9 * c.Radius()) return std::nullopt;
       ElSLib::Parameters(c, p, u, v);
       break;
     }
     case Kind::Cone: {
-      const gp_Cone c = a.Cone();
+      const gp_Cone& c = cone_;
       if (gp_Lin(c.Axis()).Distance(p) < 1e-9 * scale_) return std::nullopt;
       ElSLib::Parameters(c, p, u, v);
       // ElSLib gives the foot on the generatrix at the point's angle, the
@@ -89,13 +103,13 @@ std::optional<Vec2> SurfaceProjector::closed_form(const gp_Pnt& p,
       break;
     }
     case Kind::Sphere: {
-      const gp_Sphere s = a.Sphere();
+      const gp_Sphere& s = sphere_;
       if (s.Location().Distance(p) < 1e-9 * s.Radius()) return std::nullopt;
       ElSLib::Parameters(s, p, u, v);
       break;
     }
     case Kind::Torus: {
-      const gp_Torus t = a.Torus();
+      const gp_Torus& t = torus_;
       if (gp_Lin(t.Axis()).Distance(p) < 1e-9 * t.MajorRadius()) return std::nullopt;
       ElSLib::Parameters(t, p, u, v);
       break;
@@ -189,6 +203,15 @@ const GeomAdaptor_Surface& SurfaceProjector::evaluator() const {
 }
 
 void SurfaceProjector::d1(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv) const {
+  // An elementary surface's own formula, as its Geom_ class evaluates it.
+  switch (kind_) {
+    case Kind::Plane: ElSLib::D1(u, v, plane_, p, su, sv); return;
+    case Kind::Cylinder: ElSLib::D1(u, v, cylinder_, p, su, sv); return;
+    case Kind::Cone: ElSLib::D1(u, v, cone_, p, su, sv); return;
+    case Kind::Sphere: ElSLib::D1(u, v, sphere_, p, su, sv); return;
+    case Kind::Torus: ElSLib::D1(u, v, torus_, p, su, sv); return;
+    case Kind::Other: break;
+  }
   evaluator().D1(u, v, p, su, sv);
 }
 

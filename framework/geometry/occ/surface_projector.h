@@ -20,7 +20,12 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <Geom_Surface.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
+#include <gp_Pln.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Sphere.hxx>
+#include <gp_Torus.hxx>
 #include <gp_Vec.hxx>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -82,6 +87,13 @@ class SurfaceProjector {
   double u0_, u1_, v0_, v1_;
   double scale_;  // model size of the face (for tolerances)
   Kind kind_ = Kind::Other;
+  // The elementary surface, taken once: an adaptor built for every
+  // closed-form projection was most of its cost (a cylinder's smoothing).
+  gp_Pln plane_;
+  gp_Cylinder cylinder_;
+  gp_Cone cone_;
+  gp_Sphere sphere_;
+  gp_Torus torus_;
   bool u_periodic_ = false, v_periodic_ = false;
   double u_period_ = 0.0, v_period_ = 0.0;
   mutable tbb::enumerable_thread_specific<std::unique_ptr<GeomAPI_ProjectPointOnSurf>> per_thread_;
