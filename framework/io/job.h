@@ -55,6 +55,15 @@ struct SphereOp {
   Vec3 center = Vec3::Zero();
   double radius = 1;
 };
+/// A ring torus: the tube's centre circle (major radius) about `axis`
+/// through `center`; minor_radius < major_radius.
+struct TorusOp {
+  std::string name;
+  Vec3 center = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  double major_radius = 2;
+  double minor_radius = 1;
+};
 /// A planar polygon (closed implicitly), e.g. a profile or a hole.
 using Polygon = std::vector<Vec3>;
 /// Planar profile (with optional hole profiles) extruded along `direction`.
@@ -111,8 +120,9 @@ struct WebcutOp {
   Vec3 normal = Vec3::UnitZ();
 };
 
-using GeometryOp = std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, PrismOp, RevolveOp,
-                                LoftOp, BooleanOp, TranslateOp, RotateOp, ScaleOp, WebcutOp>;
+using GeometryOp =
+    std::variant<ImportOp, BrickOp, CylinderOp, ConeOp, SphereOp, TorusOp, PrismOp, RevolveOp,
+                 LoftOp, BooleanOp, TranslateOp, RotateOp, ScaleOp, WebcutOp>;
 
 struct GeometryStep {
   GeometryOp op;

@@ -20,8 +20,8 @@ namespace cooperage::io::detail {
 namespace {
 
 const std::vector<std::string> kGeometryElements = {
-    "import", "brick", "cylinder", "cone",      "sphere", "prism", "revolve", "loft",
-    "fuse",   "cut",   "common",   "translate", "rotate", "scale", "webcut",  "imprint_merge"};
+    "import", "brick", "cylinder", "cone",      "sphere", "torus", "prism",  "revolve",      "loft",
+    "fuse",   "cut",   "common",   "translate", "rotate", "scale", "webcut", "imprint_merge"};
 
 /// Names in journal order: where each was defined and, once a boolean used
 /// it, where it was consumed.
@@ -257,6 +257,20 @@ GeometryOp read_op(const Element& e, const std::string& tag, ShapeTable& shapes)
     op.name = e.shape_name("name");
     op.center = e.vector("center", VectorKind::Any).value_or(op.center);
     op.radius = e.required_number("radius", NumberKind::Positive);
+    return op;
+  }
+  if (tag == "torus") {
+    e.allow_attributes({"name", "center", "axis", "major_radius", "minor_radius"});
+    TorusOp op;
+    op.name = e.shape_name("name");
+    op.center = e.vector("center", VectorKind::Any).value_or(op.center);
+    op.axis = e.vector("axis", VectorKind::NonZero).value_or(op.axis);
+    op.major_radius = e.required_number("major_radius", NumberKind::Positive);
+    op.minor_radius = e.required_number("minor_radius", NumberKind::Positive);
+    if (op.minor_radius >= op.major_radius)
+      e.fail(
+          "minor_radius must be less than major_radius (a tube that reaches the axis "
+          "intersects itself)");
     return op;
   }
   if (tag == "prism") return read_prism(e);

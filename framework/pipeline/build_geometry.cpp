@@ -35,6 +35,8 @@ void apply(occ::Workbench& bench, const io::GeometryOp& op, const std::string& b
           bench.cone(o.name, o.base, o.axis, o.radius1, o.radius2, o.height);
         } else if constexpr (std::is_same_v<T, io::SphereOp>) {
           bench.sphere(o.name, o.center, o.radius);
+        } else if constexpr (std::is_same_v<T, io::TorusOp>) {
+          bench.torus(o.name, o.center, o.axis, o.major_radius, o.minor_radius);
         } else if constexpr (std::is_same_v<T, io::PrismOp>) {
           bench.prism(o.name, o.profile, o.holes, o.direction);
         } else if constexpr (std::is_same_v<T, io::RevolveOp>) {

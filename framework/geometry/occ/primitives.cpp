@@ -13,6 +13,7 @@
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -157,6 +158,20 @@ void Workbench::sphere(const std::string& name, const Vec3& center, double radiu
   positive(name, radius, "radius");
   impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
                return BRepPrimAPI_MakeSphere(detail::to_pnt(center), radius).Shape();
+             }));
+}
+
+void Workbench::torus(const std::string& name, const Vec3& center, const Vec3& axis,
+                      double major_radius, double minor_radius) {
+  impl_->check_new_name(name);
+  positive(name, major_radius, "major radius");
+  positive(name, minor_radius, "minor radius");
+  if (!axis.allFinite() || axis.norm() <= 0.0) invalid(name, "axis must be a non-zero vector");
+  if (minor_radius >= major_radius)
+    invalid(name, "minor radius must be less than the major radius");
+  impl_->add(name, detail::guarded(ErrorCode::GeometryError, "shape '" + name + "'", [&] {
+               const gp_Ax2 frame(detail::to_pnt(center), gp_Dir(axis.x(), axis.y(), axis.z()));
+               return BRepPrimAPI_MakeTorus(frame, major_radius, minor_radius).Shape();
              }));
 }
 

@@ -63,6 +63,9 @@ class Workbench {
   void cone(const std::string& name, const Vec3& base, const Vec3& axis, double radius1,
             double radius2, double height);
   void sphere(const std::string& name, const Vec3& center, double radius);
+  /// Ring torus about `axis` through `center`: 0 < minor < major.
+  void torus(const std::string& name, const Vec3& center, const Vec3& axis, double major_radius,
+             double minor_radius);
   /// Planar polygon profile (implicitly closed) with optional polygon holes,
   /// extruded along `direction` (its length is the extrusion distance).
   void prism(const std::string& name, const std::vector<Vec3>& profile,

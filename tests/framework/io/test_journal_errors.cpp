@@ -235,6 +235,8 @@ TEST(JournalErrors, ProfilesAndShapes) {
                ErrorCode::InvalidInput, {"<revolve>", "\"angle\""});
   expect_error(journal("<cone name=\"k\" radius1=\"1\" radius2=\"1\" height=\"1\"/>"),
                ErrorCode::InvalidInput, {"<cone>", "<cylinder>"});
+  expect_error(journal("<torus name=\"t\" major_radius=\"1\" minor_radius=\"1\"/>"),
+               ErrorCode::InvalidInput, {"<torus>", "minor_radius must be less than major_radius"});
   expect_error(journal("<import name=\"i\" file=\"part.stl\"/>"), ErrorCode::InvalidInput,
                {"<import>", "\"file\"", ".step"});
 }

@@ -277,6 +277,7 @@ TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
     <sphere name="s" radius="1"/>
     <revolve name="r" axis="0 0 1"><profile points="1 0 0, 2 0 0, 2 0 1"/></revolve>
     <import name="i" file="a.brep"/>
+    <torus name="t" major_radius="3" minor_radius="1"/>
   </geometry>
 </cooperage>)",
                                 "mem.xml", "/base");
@@ -294,6 +295,10 @@ TEST(JournalReader, DefaultsWhenAttributesAreOmitted) {
   EXPECT_DOUBLE_EQ(op<RevolveOp>(job, 3).angle, 360);
   EXPECT_EQ(op<RevolveOp>(job, 3).origin, Vec3::Zero());
   EXPECT_TRUE(op<ImportOp>(job, 4).heal);
+  EXPECT_EQ(op<TorusOp>(job, 5).center, Vec3::Zero());
+  EXPECT_EQ(op<TorusOp>(job, 5).axis, Vec3::UnitZ());
+  EXPECT_DOUBLE_EQ(op<TorusOp>(job, 5).major_radius, 3);
+  EXPECT_DOUBLE_EQ(op<TorusOp>(job, 5).minor_radius, 1);
   EXPECT_EQ(job.geometry[2].where.line, 5);
 }
 

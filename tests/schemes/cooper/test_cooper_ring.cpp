@@ -140,5 +140,34 @@ TEST(CooperRing, FourQuartersEachSweptRoundTheAxisCloseTheRing) {
   EXPECT_EQ(r.plan.ring_closers.size(), 1u);
 }
 
+// A torus (the journal's <torus>) cut along a meridian plane: each half's
+// only planar faces are its two round cut faces, so with no hint it sweeps
+// round the axis. Exact volume 2 pi^2 R r^2.
+TEST(CooperRing, HalvesOfATorusSweepRoundItsAxis) {
+  for (const double size : {0.5, 0.25}) {
+    occ::Workbench wb;
+    wb.torus("ring", {0, 0, 0}, {0, 0, 1}, 3.0, 1.0);
+    wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
+    const geom::Model model = wb.build_model();
+    ASSERT_EQ(model.volumes().size(), 2u);
+    io::MeshSettings settings;
+    settings.size = size;
+    settings.finer_retries = 0;
+    scheme::Registry registry;
+    register_builtin_schemes(registry);
+    const pipeline::MeshResult r =
+        pipeline::mesh_model(model, settings, registry, selector::mesh_options());
+    for (const auto& [id, v] : r.plan.volumes) EXPECT_EQ(v.scheme, "cooper") << "volume " << id;
+    const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
+    const double exact = 2 * M_PI * M_PI * 3.0;
+    // Chords of the tube's circle (r 1) take a little of it: at most what a
+    // polygon with sides of the element size leaves of a circle's area,
+    // (size / r)^2 / 6 of it.
+    EXPECT_LT(s.volume, exact * (1 + 1e-3)) << "size " << size;
+    EXPECT_GT(s.volume, exact * (1 - size * size / 6)) << "size " << size;
+    EXPECT_GT(s.min_sj, 0.5) << "size " << size;
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
