@@ -132,14 +132,18 @@ struct Piece {
   int owner = 0;       ///< index into the named shapes
 };
 
-/// A face's area and tight bounding box (BRepBndLib::AddOptimal without
-/// tolerances), computed once per face and thread (face_facts.cpp).
+/// A face's area and tight bounding box (tight_face_box), computed once per
+/// face and thread (face_facts.cpp).
 struct FaceFacts {
   double area = 0.0;
   geom::Vec3 centroid = geom::Vec3::Zero();
   geom::BoundingBox box;
 };
 FaceFacts face_facts(const TopoDS_Face& face);
+/// A face's tight bounding box, no tolerance added (face_box.cpp): on
+/// planes, cylinders, cones, spheres and tori from its edges and the
+/// surface's own extreme points; else BRepBndLib::AddOptimal's.
+geom::BoundingBox tight_face_box(const TopoDS_Face& face);
 /// Remembers facts computed elsewhere (the import child's) for this thread's
 /// later face_facts calls: the parent then does not bound every face again.
 void remember_face_facts(const TopoDS_Face& face, const FaceFacts& facts);

@@ -1,16 +1,15 @@
 // The area, area centroid and tight bounding box of a face, remembered per face (same
 // TShape and location) for the thread's later model builds: the
 // decomposition search builds a model for every candidate cut, and a cut
-// leaves most faces as they were. The tight box (BRepBndLib::AddOptimal, a
-// particle swarm over the surface) was a fifth of a refused screw's search,
-// and a quarter of a B-spline part's run in 2D, computed once in the import
-// child and once again in the parent until the child sent its facts along.
+// leaves most faces as they were. The tight box (face_box.cpp; on a B-spline
+// BRepBndLib::AddOptimal, a particle swarm over the surface) was a fifth of
+// a refused screw's search, and a quarter of a B-spline part's run in 2D,
+// computed once in the import child and once again in the parent until the
+// child sent its facts along.
 #include "framework/geometry/occ/detail.h"
 #include "framework/geometry/occ/shape_memo.h"
 
-#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
-#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 
 #include <cmath>
@@ -36,14 +35,7 @@ FaceFacts face_facts(const TopoDS_Face& face) {
     const gp_Pnt c = props.CentreOfMass();
     out.centroid = Vec3(c.X(), c.Y(), c.Z());
   }
-  Bnd_Box b;
-  BRepBndLib::AddOptimal(face, b, Standard_False, Standard_False);
-  if (!b.IsVoid()) {
-    double x0, y0, z0, x1, y1, z1;
-    b.Get(x0, y0, z0, x1, y1, z1);
-    out.box.add(Vec3(x0, y0, z0));
-    out.box.add(Vec3(x1, y1, z1));
-  }
+  out.box = tight_face_box(face);
   remember_face_facts(face, out);
   return out;
 }

@@ -11,6 +11,7 @@ cooperage_framework_part(occ OCCT SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/surface_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/surface_projector.cpp
   ${CMAKE_CURRENT_LIST_DIR}/face_facts.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/face_box.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solid_volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/model_builder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solid_pieces.cpp
