@@ -139,6 +139,12 @@ std::vector<CutCandidate> meridian_candidates(const geom::Model& model, int volu
     if (auto c = cylinder_of(model.surface(s)))
       add_unique(out, meridian_of(*c, s), options.tolerance);
   }
+  // A torus's too: a ring (an O-ring, a toroidal tank) has no other face
+  // to cut along, and its halves sweep round the axis.
+  for (int s : model.surfaces_of(volume)) {
+    if (auto c = torus_axis_of(model.surface(s)))
+      add_unique(out, meridian_of(*c, s), options.tolerance);
+  }
   return out;
 }
 

@@ -42,8 +42,8 @@ struct CandidateOptions {
 std::vector<CutCandidate> cut_candidates(const geom::Model& model, int volume,
                                          const CandidateOptions& options = {});
 
-/// Meridian planes: for each distinct axis of its cylindrical faces, one
-/// plane holding it. A solid of revolution that no axial sweep takes (a
+/// Meridian planes: for each distinct axis of its cylindrical and toroidal
+/// faces, one plane holding it. A solid of revolution that no axial sweep takes (a
 /// concave blend, a dome) is two halves swept round the axis, each ending
 /// on the other's source (a ring of sweeps); tried only when the other
 /// candidates find nothing, since where they do their pieces sweep better.

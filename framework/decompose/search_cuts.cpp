@@ -127,9 +127,11 @@ AppliedCut applied(const Evaluated& e, int depth, double thinnest) {
 std::string CutSearch::failure() const {
   std::string out = "tried " + std::to_string(tried_) + " cut" + (tried_ == 1 ? "" : "s");
   // Cuts come from the planes and cylinders of its faces and from its
-  // straight and circular edges along their axes.
-  if (candidates_ == 0)
-    return out + "; none of its faces is a plane or a cylinder to cut along (" + face_kinds_ + ")";
+  // straight and circular edges along their axes; the meridians of its
+  // cylinders and tori come last.
+  if (candidates_ == 0 && tried_ == 0)
+    return out + "; none of its faces is a plane, a cylinder or a torus to cut along (" +
+           face_kinds_ + ")";
   if (crossing_ == 0) {
     return out + "; no cut through its faces or edges leaves pieces at least one element layer (" +
            number(options_.size) + ") thick (the thickest leaves " + number(thickest_) +

@@ -28,42 +28,48 @@ std::optional<Cylinder> circle_through(const Vec3& a, const Vec3& b, const Vec3&
   return Cylinder{centre, n.normalized(), (a - centre).norm()};
 }
 
+namespace {
+
+// The circle through one parameter line of g at the middle of the other
+// (three points at 0.1, 0.5 and 0.9 of its range), if a fourth point (at
+// 0.3) lies on it.
+std::optional<Cylinder> circle_along(const geom::SurfaceGeometry& g, bool vary_u) {
+  const auto [u, v] = g.uv_bounds();
+  const geom::Vec2 lo(u.x(), v.x()), hi(u.y(), v.y());
+  const geom::Vec2 mid = 0.5 * (lo + hi);
+  const auto at = [&](double t) {
+    geom::Vec2 p = mid;
+    if (vary_u)
+      p.x() = lo.x() + t * (hi.x() - lo.x());
+    else
+      p.y() = lo.y() + t * (hi.y() - lo.y());
+    return g.point(p);
+  };
+  auto circle = circle_through(at(0.1), at(0.5), at(0.9));
+  if (!circle) return std::nullopt;
+  const Vec3 r = at(0.3) - circle->point;
+  const double off_plane = std::abs(r.dot(circle->axis));
+  const double off_circle =
+      std::abs((r - r.dot(circle->axis) * circle->axis).norm() - circle->radius);
+  if (off_plane + off_circle > 1e-6 * std::max(1.0, circle->radius)) return std::nullopt;
+  return circle;
+}
+
+}  // namespace
+
 std::optional<Cylinder> cylinder_of(const geom::Surface& surface) {
   if (!surface.geometry || surface.geometry->type() != geom::SurfaceType::Cylinder)
     return std::nullopt;
-  const auto& g = *surface.geometry;
-  const auto [u, v] = g.uv_bounds();
-  // Three points along one parameter line at the middle of the other.
-  const auto along = [&](bool vary_u) -> std::optional<Cylinder> {
-    const geom::Vec2 lo(u.x(), v.x()), hi(u.y(), v.y());
-    const geom::Vec2 mid = 0.5 * (lo + hi);
-    geom::Vec2 p[3];
-    for (int k = 0; k < 3; ++k) {
-      const double t = 0.1 + 0.4 * k;  // 0.1, 0.5, 0.9 of the range
-      p[k] = mid;
-      if (vary_u)
-        p[k].x() = lo.x() + t * (hi.x() - lo.x());
-      else
-        p[k].y() = lo.y() + t * (hi.y() - lo.y());
-    }
-    auto circle = circle_through(g.point(p[0]), g.point(p[1]), g.point(p[2]));
-    if (!circle) return std::nullopt;
-    // The line must lie on the circle: a fourth point checks it.
-    geom::Vec2 q = mid;
-    if (vary_u)
-      q.x() = lo.x() + 0.3 * (hi.x() - lo.x());
-    else
-      q.y() = lo.y() + 0.3 * (hi.y() - lo.y());
-    const Vec3 x = g.point(q);
-    const Vec3 r = x - circle->point;
-    const double off_plane = std::abs(r.dot(circle->axis));
-    const double off_circle =
-        std::abs((r - r.dot(circle->axis) * circle->axis).norm() - circle->radius);
-    if (off_plane + off_circle > 1e-6 * std::max(1.0, circle->radius)) return std::nullopt;
-    return circle;
-  };
-  if (auto c = along(true)) return c;
-  return along(false);
+  // Whichever of u and v runs round the axis.
+  if (auto c = circle_along(*surface.geometry, true)) return c;
+  return circle_along(*surface.geometry, false);
+}
+
+std::optional<Cylinder> torus_axis_of(const geom::Surface& surface) {
+  if (!surface.geometry || surface.geometry->type() != geom::SurfaceType::Torus)
+    return std::nullopt;
+  // The kernel's u runs round the torus's axis (v round the tube).
+  return circle_along(*surface.geometry, true);
 }
 
 double signed_distance(const Plane& plane, const Vec3& p) {

@@ -32,6 +32,11 @@ std::optional<Plane> plane_of(const geom::Surface& surface);
 /// circle (whichever of u and v runs round the axis).
 std::optional<Cylinder> cylinder_of(const geom::Surface& surface);
 
+/// A torus's axis: `point` and `axis` of the circle its u lines run round
+/// (through the middle of the face), `radius` that circle's; nullopt for
+/// other surfaces or a face too short round the axis to fit one.
+std::optional<Cylinder> torus_axis_of(const geom::Surface& surface);
+
 /// Circle through three points: centre, unit normal of their plane, radius;
 /// nullopt when they are (nearly) collinear.
 std::optional<Cylinder> circle_through(const Vec3& a, const Vec3& b, const Vec3& c);

@@ -327,8 +327,8 @@ TEST(DecomposeBuiltin, AVolumeWithoutPlanesOrCylindersHasNoCutToTry) {
   } catch (const MeshingError& e) {
     EXPECT_EQ(e.code(), ErrorCode::NotApplicable);
     const std::string what = e.what();
-    EXPECT_NE(what.find("tried 0 cuts; none of its faces is a plane or a cylinder to cut along "
-                        "(1 sphere)"),
+    EXPECT_NE(what.find("tried 0 cuts; none of its faces is a plane, a cylinder or a torus to cut "
+                        "along (1 sphere)"),
               std::string::npos)
         << what;
     EXPECT_EQ(what.find("element layer"), std::string::npos) << what;

@@ -73,6 +73,21 @@ TEST(DecomposeMeshes, AnLBracketWithHolesInBothLegs) {
   expect_good(m, "bracket_holes.xml", 40.0 - 2.0 * M_PI * 0.36);
 }
 
+// A tilted ring torus: cut along a meridian plane through its own axis
+// (fitted to the face, surface_fit.h), the halves sweep round it.
+TEST(DecomposeMeshes, ARingTorusIsCutThroughItsAxis) {
+  const Meshed m = mesh_job(test_journal("decompose/ring_torus.xml"));
+  expect_good(m, "ring_torus.xml", 2 * M_PI * M_PI * 3.0);
+  ASSERT_EQ(m.run.decomposition.volumes.size(), 1u);
+  const auto& cuts = m.run.decomposition.volumes[0].cuts;
+  ASSERT_EQ(cuts.size(), 1u);
+  EXPECT_EQ(cuts[0].through, "plane through the axis of surface 1");
+  // The plane holds the torus's axis: its centre and its direction.
+  const geom::Vec3 centre(1, -2, 0.5), axis = geom::Vec3(0.2, 0.4, 1).normalized();
+  EXPECT_NEAR(cuts[0].surface.direction.dot(axis), 0.0, 1e-9);
+  EXPECT_NEAR(cuts[0].surface.direction.dot(centre - cuts[0].surface.origin), 0.0, 1e-9);
+}
+
 // Known limit (issue 17 report): every arm of the T sweeps from its boss
 // towards the rest of the part, so each arm's many-to-one target is the cut
 // face it shares with the next piece. Cooper now meshes such a shared target
