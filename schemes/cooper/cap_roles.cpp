@@ -100,10 +100,10 @@ bool inside(const Footprint& f, const P2& p) {
   return in;
 }
 
-// The distance from p to the footprint's curves, not to their chords:
-// each segment's distance less its sagitta (a lower bound).
-double distance(const Footprint& f, const P2& p) {
-  double best = std::numeric_limits<double>::infinity();
+// Whether p lies farther than `allowed` from the footprint's curves, not
+// from their chords: each segment's distance less its sagitta (a lower
+// bound) must exceed it; the first that does not decides.
+bool farther_than(const Footprint& f, const P2& p, double allowed) {
   for (size_t l = 0; l < f.loops.size(); ++l) {
     const auto& poly = f.loops[l];
     for (size_t i = 0; i < poly.size(); ++i) {
@@ -112,10 +112,10 @@ double distance(const Footprint& f, const P2& p) {
       const P2 ab = b - a;
       const double t =
           ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-      best = std::min(best, (a + t * ab - p).norm() - f.sagittas[l][i]);
+      if (!((a + t * ab - p).norm() - f.sagittas[l][i] > allowed)) return false;
     }
   }
-  return best;
+  return true;
 }
 
 // Whether the segment ab runs inside the footprint deeper than `tol`: its
@@ -153,7 +153,7 @@ bool reaches_inside(const Footprint& f, const P2& a, const P2& b, double tol, do
   std::sort(ts.begin(), ts.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
   auto deep = [&](double t, double allowed) {
     const P2 x = a + t * ab;
-    return inside(f, x) && distance(f, x) > allowed;
+    return inside(f, x) && farther_than(f, x, allowed);
   };
   if (deep(0.0, tol + slack)) return true;
   // Steeper than two samplings of one curve can cross (chord_sagittas()'s 25
