@@ -3,6 +3,7 @@
 #include "framework/scheme/vertex_angles.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -92,16 +93,26 @@ std::optional<SideTyping> type_side_corners(const std::vector<double>& angles,
   if (free.size() > kMaxAmbiguous) free.clear();  // the angles' own types only
   std::optional<SideTyping> best;
   double best_cost = std::numeric_limits<double>::infinity();
-  std::vector<int> turn(n), d;
+  std::vector<int> turn(n), choice(n, 0), d;
   for (size_t k = 0; k < n; ++k) turn[k] = options[k].turn[0];
+  // Each corner's departure for each of its types, taken once: a typing's
+  // cost sums them in corner order, as before (a side of many corners tries
+  // thousands of typings).
+  std::vector<std::array<double, 2>> dep(n);
+  for (size_t k = 0; k < n; ++k)
+    for (int o = 0; o < options[k].count; ++o)
+      dep[k][static_cast<size_t>(o)] = departure(angles[k], options[k].turn[o]);
   // Binary count over the free corners, the angles' own types first.
   for (unsigned long pick = 0; pick < (1UL << free.size()); ++pick) {
-    for (size_t f = 0; f < free.size(); ++f) turn[free[f]] = options[free[f]].turn[(pick >> f) & 1];
+    for (size_t f = 0; f < free.size(); ++f) {
+      choice[free[f]] = static_cast<int>((pick >> f) & 1);
+      turn[free[f]] = options[free[f]].turn[choice[free[f]]];
+    }
     int sum = 0;
     double cost = 0;
     for (size_t k = 0; k < n; ++k) {
       sum += turn[k];
-      cost += departure(angles[k], turn[k]);
+      cost += dep[k][static_cast<size_t>(choice[k])];
     }
     if (sum != 4 || cost >= best_cost) continue;
     directions_of(turn, d);
