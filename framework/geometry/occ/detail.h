@@ -141,8 +141,8 @@ struct FaceFacts {
 };
 FaceFacts face_facts(const TopoDS_Face& face);
 /// A face's tight bounding box, no tolerance added (face_box.cpp): on
-/// planes, cylinders, cones, spheres and tori from its edges and the
-/// surface's own extreme points; else BRepBndLib::AddOptimal's.
+/// planes, cylinders, cones, spheres, tori and B-splines from its edges and
+/// the surface's own extreme points; else BRepBndLib::AddOptimal's.
 geom::BoundingBox tight_face_box(const TopoDS_Face& face);
 /// Remembers facts computed elsewhere (the import child's) for this thread's
 /// later face_facts calls: the parent then does not bound every face again.

@@ -1,7 +1,7 @@
 // The area, area centroid and tight bounding box of a face, remembered per face (same
 // TShape and location) for the thread's later model builds: the
 // decomposition search builds a model for every candidate cut, and a cut
-// leaves most faces as they were. The tight box (face_box.cpp; on a B-spline
+// leaves most faces as they were. The tight box (face_box.cpp; before it
 // BRepBndLib::AddOptimal, a particle swarm over the surface) was a fifth of
 // a refused screw's search, and a quarter of a B-spline part's run in 2D,
 // computed once in the import child and once again in the parent until the

@@ -20,6 +20,7 @@ namespace cooperage::occ {
 namespace {
 
 using geom::BoundingBox;
+using geom::Vec2;
 
 void expect_box(const BoundingBox& got, const Vec3& lo, const Vec3& hi, double tol,
                 const std::string& what) {
@@ -128,6 +129,69 @@ TEST(FaceBox, PiecesOfATiltedTorusTogetherHaveItsBox) {
     EXPECT_GE(tori, 2);
     expect_box(together, c - reach, c + reach, 1e-6, "the torus pieces together");
   }
+}
+
+// The highest point of a B-spline face over its whole parameter box, by
+// dense sampling refined by a shrinking pattern search (shares no code
+// with face_box.cpp).
+double highest(const geom::SurfaceGeometry& g) {
+  const auto [u, v] = g.uv_bounds();
+  const int n = 200;
+  double best = -1e300;
+  Vec2 at(u.x(), v.x());
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const Vec2 q(u.x() + (u.y() - u.x()) * i / n, v.x() + (v.y() - v.x()) * j / n);
+      const double z = g.point(q).z();
+      if (z > best) best = z, at = q;
+    }
+  Vec2 step((u.y() - u.x()) / n, (v.y() - v.x()) / n);
+  for (int it = 0; it < 60; ++it, step *= 0.5) {
+    for (const Vec2& d : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)}) {
+      Vec2 q = at + Vec2(d.x() * step.x(), d.y() * step.y());
+      q.x() = std::clamp(q.x(), u.x(), u.y());
+      q.y() = std::clamp(q.y(), v.x(), v.y());
+      const double z = g.point(q).z();
+      if (z > best) best = z, at = q;
+    }
+  }
+  return best;
+}
+
+// A B-spline slab with a bump inside its top face: the face's top is the
+// bump's peak, off every edge. Cut through the bump, the two top pieces
+// together reach it too (one of them holds the peak inside or on the cut).
+TEST(FaceBox, ABSplineBumpIsInsideItsFacesBox) {
+  std::vector<std::vector<Vec3>> grid;
+  for (int i = 0; i <= 4; ++i) {
+    grid.emplace_back();
+    for (int j = 0; j <= 4; ++j)
+      grid.back().push_back({1.0 * i, 1.0 * j, (i == 2 && j == 1) ? 1.5 : 0.1 * i});
+  }
+  Workbench bench;
+  bench.bspline_patch("slab", grid, -0.5);
+  const SolidPieces whole = SolidPieces::of(bench);
+  const geom::Model m = whole.build_model(false);
+  const geom::Surface* top = nullptr;
+  for (const auto& s : m.surfaces())
+    if (s.geometry->type() == geom::SurfaceType::BSpline &&
+        (!top || s.box.max.z() > top->box.max.z()))
+      top = &s;
+  ASSERT_NE(top, nullptr);
+  const double peak = highest(*top->geometry);
+  EXPECT_GT(peak, 1.4);
+  // The kernel's edge boxes carry its confusion distance (1e-7) as a gap.
+  EXPECT_NEAR(top->box.max.z(), peak, 1e-6);
+  // Across the bump's ridge, through its peak's x.
+  const SolidPieces cut =
+      whole.split(0, {CutSurface::Kind::Plane, {2.0, 0.8, 0.0}, {0.3, 1.0, 0.0}, 0});
+  ASSERT_EQ(cut.size(), 2);
+  const geom::Model pieces = cut.build_model(false);
+  double highest_piece = -1e300;
+  for (const auto& s : pieces.surfaces())
+    if (s.geometry->type() == geom::SurfaceType::BSpline)
+      highest_piece = std::max(highest_piece, s.box.max.z());
+  EXPECT_NEAR(highest_piece, peak, 1e-6);
 }
 
 // A quarter turn about axis `k` maps a box exactly onto another box.
