@@ -67,7 +67,7 @@ void write_text(const selector::Selection& sel, const decompose::Report& cuts,
   };
   const std::vector<std::string> cut_lines = decompose::report_lines(cuts);
   if (!cut_lines.empty()) {
-    out << "decomposition (" << cuts.tried << " cuts tried)\n";
+    out << "decomposition (" << cuts.tried << (cuts.tried == 1 ? " cut" : " cuts") << " tried)\n";
     for (const auto& line : cut_lines) out << "  " << line << "\n";
   }
   if (!decomposition_failed.empty())
