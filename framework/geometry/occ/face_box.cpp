@@ -127,12 +127,14 @@ void spline_points(const BRepAdaptor_Surface& s, double u0, double u1, double v0
             converged =
                 std::abs(step_u) <= 1e-12 * (u1 - u0) && std::abs(step_v) <= 1e-12 * (v1 - v0);
           }
-          const gp_Pnt2d sample(u0 + i * du, v0 + j * dv);
-          const gp_Pnt refined = converged ? s.Value(u, v) : at(i, j);
-          if (converged && f(refined) >= here)
-            out.push_back({refined, gp_Pnt2d(u, v)});
-          else
-            out.push_back({at(i, j), sample});
+          if (converged) {
+            const gp_Pnt refined = s.Value(u, v);
+            if (f(refined) >= here) {
+              out.push_back({refined, gp_Pnt2d(u, v)});
+              continue;
+            }
+          }
+          out.push_back({at(i, j), gp_Pnt2d(u0 + i * du, v0 + j * dv)});
         }
       }
     }
