@@ -48,6 +48,11 @@ void solve(const CbcProblem& p, CbcAnswer& answer) {
     solver.setColName(static_cast<int>(j), "x" + std::to_string(j));  // for the MIP start
     if (p.integer[j]) solver.setInteger(static_cast<int>(j));
   }
+  // The rows named too: with named columns, Clp's presolve reads the row
+  // names and crashed on an empty list (coin-or/Cbc issue 515; it did on
+  // gmsh_1385_Laufrad's program once its costs were increments).
+  for (size_t i = 0; i < p.row_lo.size(); ++i)
+    solver.setRowName(static_cast<int>(i), "r" + std::to_string(i));
 
   CbcModel model(solver);  // clones the solver
   model.setLogLevel(0);
@@ -68,6 +73,10 @@ void solve(const CbcProblem& p, CbcAnswer& answer) {
   CbcMain0(model, data);
   const std::string seed = std::to_string(p.random_seed);
   const std::string seconds = std::to_string(p.max_seconds);
+  const std::string ratio_gap = std::to_string(p.ratio_gap);
+  // No probing cuts: on the cost increments probing took a third of
+  // gmsh_1385_Laufrad's --dim 2 run and found little (bench/RESULTS.md,
+  // session 50).
   std::vector<const char*> argv = {"cooperage",
                                    "-log",
                                    "0",
@@ -82,11 +91,13 @@ void solve(const CbcProblem& p, CbcAnswer& answer) {
                                    "-seconds",
                                    seconds.c_str(),
                                    "-ratioGap",
-                                   "0.02",
+                                   ratio_gap.c_str(),
                                    "-allowableGap",
                                    "1e-9",
                                    "-increment",
-                                   "1e-7"};
+                                   "1e-7",
+                                   "-probingCuts",
+                                   "off"};
   if (!p.mip_start.empty()) {
     // From a start (the selector's trial solves start from the answer
     // before), "-passCuts -20" (CBC: at most 20 rounds of cuts at the root,

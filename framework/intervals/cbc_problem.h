@@ -13,7 +13,7 @@
 namespace cooperage::intervals::detail {
 
 /// Raised when this header changes the layout of what crosses the module.
-constexpr int kCbcModuleAbi = 1;
+constexpr int kCbcModuleAbi = 2;
 
 struct CbcProblem {
   /// Columns: bounds (+-std::numeric_limits<double>::max() for none, which
@@ -27,6 +27,8 @@ struct CbcProblem {
   std::vector<std::pair<std::string, double>> mip_start;
   int random_seed = 0;
   double max_seconds = 60.0;
+  /// CBC stops once its answer is proven this close to the optimum (relative).
+  double ratio_gap = 0.02;
 };
 
 enum class CbcStatus { Optimal = 0, Feasible = 1, Infeasible = 2, NoSolution = 3 };

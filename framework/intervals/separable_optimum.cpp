@@ -11,7 +11,8 @@ namespace cooperage::intervals::detail {
 namespace {
 
 /// One column's cost as CBC sees it: per cost term, its weight and the
-/// secant lines whose maximum is the term (solve_ilp's epigraph rows).
+/// secant lines whose maximum is the term (the function solve_ilp's
+/// increments add up to).
 struct ColumnCost {
   std::vector<std::pair<double, std::vector<std::pair<double, double>>>> terms;
 

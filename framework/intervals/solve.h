@@ -6,19 +6,24 @@
 // 2013):
 //
 //   variables   x_c integer, min_c <= x_c <= max_c   (Hard: x_c = fixed_c)
-//               t_c >= 0 continuous, the cost of curve c (non-hard curves)
+//               u_ck, d_ck continuous in [0, width of segment k], the
+//               increments of x_c above and below its cost's centre p_c
 //               m_e integer, free, one per Even constraint
-//   minimise    sum_c  w_c * t_c    w = 1 (Default), soft_weight (Soft)
+//   minimise    sum_c w_c (sum_k s_k u_ck - sum_k s_k d_ck)
+//               w = 1 (Default), soft_weight (Soft)
 //   subject to  sum a_i x_i  <=|=|>=  b            (Linear: map, submap, ...)
 //               sum x_i - 2 m_e = 0                 (Even: pave loops)
-//               t_c >= s_k x_c + q_k  for every segment k of the cost
+//               x_c - sum_k u_ck + sum_k d_ck = p_c (non-hard curves)
 //
 // The cost of curve c is h(x) = f + f^3 with Mitchell's relative deviation
 // f(x) = (x - g)/g above the goal g and (g - x)/x below it (deviation.h).
-// h is convex, so the maximum of its secants between consecutive integer
-// breakpoints (every integer within 4 of g, then 6, 8, 12, 16, ... away) is a
-// convex piecewise-linear function equal to h at the breakpoints; at the
-// optimum t_c equals it, so near the goal the integer optimum minimises
+// h is convex, so its secants between consecutive integer breakpoints
+// (every integer within 4 of g, then 6, 8, 12, 16, ... away; p_c is the one
+// nearest g) form a convex piecewise-linear function equal to h at the
+// breakpoints, the last secant extended. Their slopes s_k increase away from
+// p_c, so the cheaper increments fill first and at the optimum the objective
+// is that function less the constant h(p_c); near the goal the integer
+// optimum minimises
 // sum w h exactly. The cubic term makes large deviations cost more than
 // several small ones (Mitchell's min sum f^3, close to lexicographic max-min).
 // A non-hard curve with a `fixed` count aims at that count instead of g.
@@ -40,7 +45,8 @@
 // of the optimum's cost (CBC's ratio gap): on the 290-column component of a
 // 137-face cylinder head, proving 1 % took twice as long (4.7 s of CPU
 // against 2.5) for a solution 0.27 % cheaper, a difference of one interval
-// on a few curves. When it hits max_seconds with a solution, that
+// on a few curves. A component of fewer than 50 columns is solved to its
+// proven optimum instead (ilp.cpp says why). When it hits max_seconds with a solution, that
 // solution is used and a warning logged; without one, solve() throws
 // Infeasible saying the limit was reached.
 //
