@@ -110,11 +110,11 @@ IlpResult solve_ilp(const std::vector<Column>& columns, const std::vector<Row>& 
       case Sense::GreaterEqual: b.add_row(std::move(terms), rhs, inf); break;
     }
   }
-  // The piecewise-linear cost by increments from the breakpoint nearest the
-  // goal: x = c + sum up_k - sum down_k, each increment bounded by its
+  // The piecewise-linear cost by increments from the breakpoint p nearest
+  // the goal: x = p + sum up_k - sum down_k, each increment bounded by its
   // segment and costing the secant's slope (negated going down). The cost is
   // convex, so a cheaper increment always fills first and at integer x the
-  // cost is the secants' value there (up to the constant h(c), left out).
+  // cost is the secants' value there (up to the constant h(p), left out).
   // One row per cost instead of one per secant (~15): CBC's LPs and cuts
   // work on a tenth of the rows (bench/RESULTS.md, session 50).
   for (size_t j = 0; j < columns.size(); ++j) {

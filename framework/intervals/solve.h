@@ -21,10 +21,9 @@
 // (every integer within 4 of g, then 6, 8, 12, 16, ... away; p_c is the one
 // nearest g) form a convex piecewise-linear function equal to h at the
 // breakpoints, the last secant extended. Their slopes s_k increase away from
-// p_c, so the cheaper increments fill first and at the optimum the objective
-// is that function less the constant h(p_c); near the goal the integer
-// optimum minimises
-// sum w h exactly. The cubic term makes large deviations cost more than
+// p_c (the cost of a down increment is -s_k), so the cheaper increments fill
+// first and at the optimum the objective is that function less the constant
+// h(p_c); near the goal the integer optimum minimises sum w h exactly. The cubic term makes large deviations cost more than
 // several small ones (Mitchell's min sum f^3, close to lexicographic max-min).
 // A non-hard curve with a `fixed` count aims at that count instead of g.
 //
@@ -46,9 +45,9 @@
 // 137-face cylinder head, proving 1 % took twice as long (4.7 s of CPU
 // against 2.5) for a solution 0.27 % cheaper, a difference of one interval
 // on a few curves. A component of fewer than 50 columns is solved to its
-// proven optimum instead (ilp.cpp says why). When it hits max_seconds with a solution, that
-// solution is used and a warning logged; without one, solve() throws
-// Infeasible saying the limit was reached.
+// proven optimum instead (ilp.cpp says why). When CBC hits max_seconds with
+// a solution, that solution is used and a warning logged; without one,
+// solve() throws Infeasible saying the limit was reached.
 //
 // Determinism: constraints are put into a canonical form (terms merged and
 // sorted by curve id, first coefficient positive) and sorted before the model
