@@ -14,6 +14,14 @@
 namespace cooperage::intervals {
 namespace {
 
+/// True when a constraint holds for the sum of its terms.
+bool sum_holds(const Constraint& c, long sum) {
+  if (c.kind == Constraint::Kind::Even) return sum % 2 == 0;
+  if (c.sense == Sense::Equal) return sum == c.rhs;
+  if (c.sense == Sense::LessEqual) return sum <= c.rhs;
+  return sum >= c.rhs;
+}
+
 /// True when every constraint of the problem holds for the solution.
 ::testing::AssertionResult satisfies(const IntervalProblem& problem, const IntervalSolution& s) {
   for (const auto& [id, curve] : problem.curves()) {
@@ -29,16 +37,7 @@ namespace {
     long sum = 0;
     for (const LinearTerm& t : c.terms)
       sum += static_cast<long>(t.coeff) * s.intervals.at(t.curve_id);
-    bool ok = true;
-    if (c.kind == Constraint::Kind::Even)
-      ok = sum % 2 == 0;
-    else if (c.sense == Sense::Equal)
-      ok = sum == c.rhs;
-    else if (c.sense == Sense::LessEqual)
-      ok = sum <= c.rhs;
-    else
-      ok = sum >= c.rhs;
-    if (!ok)
+    if (!sum_holds(c, sum))
       return ::testing::AssertionFailure() << "violated: " << c.label << " (sum " << sum << ")";
   }
   return ::testing::AssertionSuccess();
@@ -478,13 +477,9 @@ TEST(IntervalSolve, ASmallComponentGetsTheOptimumOfItsCosts) {
     p.add_at_least(loop, 6, "pave min");
     const auto holds = [&](const std::vector<int>& x) {
       for (const Constraint& c : p.constraints()) {
-        int sum = 0;
+        long sum = 0;
         for (const LinearTerm& t : c.terms) sum += t.coeff * x[t.curve_id];
-        const bool ok = c.kind == Constraint::Kind::Even ? sum % 2 == 0
-                        : c.sense == Sense::Equal        ? sum == c.rhs
-                        : c.sense == Sense::LessEqual    ? sum <= c.rhs
-                                                         : sum >= c.rhs;
-        if (!ok) return false;
+        if (!sum_holds(c, sum)) return false;
       }
       return true;
     };
