@@ -161,9 +161,14 @@ void take_surface_mesh(SweepState& s, Piece& p) {
 // then its new nodes are smoothed (sec. 6.1: "a smooth ... to optimize
 // element quality"), kept only if its worst corner improves. Returns the
 // worst corner sine of the projected subcap as it is left (<= 0: folded).
+// The faces are counter-clockwise about the barrel's direction d where
+// they come from and about `d_to` on `to`: the direction the barrel's map
+// carries d to. A barrel that turns round an axis ends facing the other
+// way (a torus half: its map is a half turn), and judged against d its
+// exact image looked folded everywhere and was "untangled" out of shape.
 double untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
                 const std::vector<mesh::Tri>& tris, const std::map<int, int>& index,
-                const std::map<int, int>& image, const Piece& to) {
+                const std::map<int, int>& image, const Piece& to, const Vec3& d_to) {
   const BarrelState& st = s.barrels[b];
   std::vector<int> node(index.size());
   for (const auto& [n, i] : index) node[static_cast<size_t>(i)] = n;
@@ -201,7 +206,7 @@ double untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
   const double q_before =
       std::min(min_quad_corner_quality(before, q, st.d), min_tri_corner_quality(before, t, st.d));
   const double q_after =
-      std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
+      std::min(min_quad_corner_quality(after, q, d_to), min_tri_corner_quality(after, t, d_to));
   // Within rounding of the source's worst corner is as good: an affine
   // projection gives the same corners, a hair worse or better by rounding,
   // and a moved part was untangled where it was not (campaign seed 7 case 50).
@@ -210,12 +215,12 @@ double untangle(SweepState& s, size_t b, const std::vector<mesh::Quad>& quads,
   auto onto = [&](const Vec3& x) { return g ? g->project(x).point : x; };
   // A fold that guarded smoothing cannot open (each single move makes a
   // corner worse first) is untangled against the source's corners first.
-  const bool untangled = q_after <= 0 && untangle_cap(after, before, q, t, movable, st.d, onto);
-  if (!smart_smooth_cap(after, q, t, movable, st.d, onto, 60) && !untangled) return q_after;
+  const bool untangled = q_after <= 0 && untangle_cap(after, before, q, t, movable, d_to, onto);
+  if (!smart_smooth_cap(after, q, t, movable, d_to, onto, 60) && !untangled) return q_after;
   for (size_t i = 0; i < node.size(); ++i) {
     if (movable[i]) s.out.coords[static_cast<size_t>(image.at(node[i]))] = after[i];
   }
-  return std::min(min_quad_corner_quality(after, q, st.d), min_tri_corner_quality(after, t, st.d));
+  return std::min(min_quad_corner_quality(after, q, d_to), min_tri_corner_quality(after, t, d_to));
 }
 
 // Projects piece `from` through barrel b onto its match `to` (sec. 6.1);
@@ -307,7 +312,13 @@ double project(SweepState& s, size_t b, const Piece& from, Piece& to, bool down)
   for (const auto& t : from.tris)
     to.tris.push_back({image_of(t[0]), image_of(t[1]), image_of(t[2])});
   to.meshed = true;
-  return untangle(s, b, quads, tris, index, image, to);
+  // A face's normal goes with the cofactor of the map's matrix.
+  Vec3 d_to = st.d;
+  if (const double det = map.A.determinant(); det > 0) {
+    const Vec3 n = det * map.A.inverse().transpose() * st.d;
+    if (n.allFinite() && n.norm() > 0) d_to = n.normalized();
+  }
+  return untangle(s, b, quads, tris, index, image, to, d_to);
 }
 
 // The faces of `to`, meshed beforehand, in the order and corner order of
