@@ -158,6 +158,10 @@ SolidPieces SolidPieces::split(int index, const CutSurface& cut) const {
     splitter.SetArguments(args);
     splitter.SetTools(tools);
     splitter.SetRunParallel(Standard_False);
+    // The solid is a closed, outward one (imported or cut from one): the
+    // kernel's check for an inverted solid (a point at infinity classified
+    // against it, 5 % of gmsh_Kurbelwelle's refusal) cannot find one.
+    splitter.SetCheckInverted(Standard_False);
     if (cut.fuzzy > 0.0) splitter.SetFuzzyValue(cut.fuzzy);
     splitter.Build();
     if (!splitter.IsDone() || splitter.HasErrors())
