@@ -141,25 +141,35 @@ TEST(CooperRing, FourQuartersEachSweptRoundTheAxisCloseTheRing) {
   EXPECT_EQ(r.plan.ring_closers.size(), 1u);
 }
 
-// A torus (the journal's <torus>) cut along a meridian plane: each half's
-// only planar faces are its two round cut faces, so with no hint it sweeps
-// round the axis. Exact volume 2 pi^2 R r^2.
+// A torus (the journal's <torus>, R 3, r 1) cut along the meridian plane
+// x = 0, meshed at `size` with no retry.
+struct TorusHalves {
+  geom::Model model;
+  pipeline::MeshResult mesh;
+};
+TorusHalves mesh_torus_halves(double size) {
+  occ::Workbench wb;
+  wb.torus("ring", {0, 0, 0}, {0, 0, 1}, 3.0, 1.0);
+  wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
+  TorusHalves out{wb.build_model(), {}};
+  io::MeshSettings settings;
+  settings.size = size;
+  settings.finer_retries = 0;
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  out.mesh = pipeline::mesh_model(out.model, settings, registry, selector::mesh_options());
+  return out;
+}
+
+// Each half's only planar faces are its two round cut faces, so with no
+// hint it sweeps round the axis. Exact volume 2 pi^2 R r^2.
 TEST(CooperRing, HalvesOfATorusSweepRoundItsAxis) {
   for (const double size : {0.5, 0.25}) {
-    occ::Workbench wb;
-    wb.torus("ring", {0, 0, 0}, {0, 0, 1}, 3.0, 1.0);
-    wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
-    const geom::Model model = wb.build_model();
-    ASSERT_EQ(model.volumes().size(), 2u);
-    io::MeshSettings settings;
-    settings.size = size;
-    settings.finer_retries = 0;
-    scheme::Registry registry;
-    register_builtin_schemes(registry);
-    const pipeline::MeshResult r =
-        pipeline::mesh_model(model, settings, registry, selector::mesh_options());
-    for (const auto& [id, v] : r.plan.volumes) EXPECT_EQ(v.scheme, "cooper") << "volume " << id;
-    const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
+    const TorusHalves t = mesh_torus_halves(size);
+    ASSERT_EQ(t.model.volumes().size(), 2u);
+    for (const auto& [id, v] : t.mesh.plan.volumes)
+      EXPECT_EQ(v.scheme, "cooper") << "volume " << id;
+    const testing::HexMeshSummary s = testing::check_hex_mesh(t.model, t.mesh.mesh);
     const double exact = 2 * M_PI * M_PI * 3.0;
     // Chords of the tube's circle (r 1) take a little of it: at most what a
     // polygon with sides of the element size leaves of a circle's area,
@@ -179,24 +189,15 @@ TEST(CooperRing, HalvesOfATorusSweepRoundItsAxis) {
 // node, at every size.
 TEST(CooperRing, TheHalfTurnsTargetIsItsSourceTurned) {
   for (const double size : {0.3, 0.45, 0.5, 0.6, 0.7}) {
-    occ::Workbench wb;
-    wb.torus("ring", {0, 0, 0}, {0, 0, 1}, 3.0, 1.0);
-    wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
-    const geom::Model model = wb.build_model();
-    io::MeshSettings settings;
-    settings.size = size;
-    settings.finer_retries = 0;
-    scheme::Registry registry;
-    register_builtin_schemes(registry);
-    const pipeline::MeshResult r =
-        pipeline::mesh_model(model, settings, registry, selector::mesh_options());
-    const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
+    const TorusHalves t = mesh_torus_halves(size);
+    const mesh::MeshDB& db = t.mesh.mesh;
+    const testing::HexMeshSummary s = testing::check_hex_mesh(t.model, db);
     EXPECT_GT(s.min_sj, 0.7) << "size " << size;
     // The cut faces lie in x = 0 round (0, +-3, 0); the half turn about z
     // takes (0, y, z) to (0, -y, z).
     std::vector<geom::Vec3> plus, minus;
-    for (size_t i = 0; i < r.mesh.node_count(); ++i) {
-      const geom::Vec3& p = r.mesh.node(static_cast<int>(i));
+    for (size_t i = 0; i < db.node_count(); ++i) {
+      const geom::Vec3& p = db.node(static_cast<int>(i));
       if (std::abs(p.x()) > 1e-9) continue;
       (p.y() > 0 ? plus : minus).push_back(p);
     }
