@@ -139,6 +139,7 @@ class Selector {
         imposed_.clear();
         volume_types_.clear();
         waits_for_.clear();
+        sweep_source_.clear();
         selection_.volumes.clear();
         selection_.refused.clear();
         selection_.ring_closers.clear();
@@ -271,6 +272,20 @@ class Selector {
     return out;
   }
 
+  // The surface whose mesh `surface` gets: itself when a surface scheme
+  // meshes it, else the origin of the surface the sweep that meshes it
+  // starts from; 0 when unknown (a sweep that is not one-to-one).
+  int origin(int surface) const {
+    for (size_t hop = 0; hop <= roles_.size(); ++hop) {
+      const auto it = roles_.find(surface);
+      if (it == roles_.end() || it->second.scheme != scheme::kMeshedByVolume) return surface;
+      const auto from = sweep_source_.find(it->second.volume);
+      if (from == sweep_source_.end() || from->second == 0) return 0;
+      surface = from->second;
+    }
+    return 0;  // a cycle of sweeps, each meshing the next one's source
+  }
+
   // The neighbour chosen earlier may plan around the surface (a sweep the
   // other way round): it is asked once, and the volumes are chosen again.
   void request(const Request& ask) {
@@ -380,7 +395,8 @@ class Selector {
     }
     std::string conflicts;
     std::vector<Request> asks;  // from the conflicts of the candidates passed over
-    std::set<int> closing;      // surfaces whose meshing here closed a cycle of waits
+    std::set<int> closing;      // surfaces whose meshing here closed a cycle of waits, or another
+                                // sweep of the same origin ends on too
     for (const Candidate* c : order) {
       const scheme::VolumeScheme* vs = registry_.volume_scheme(c->scheme);
       // The scheme's own plan from its applicable(), handed back.
@@ -401,6 +417,18 @@ class Selector {
       if (!conflict.empty()) {
         conflicts += (conflicts.empty() ? "" : "; ") + conflict;
         asks.push_back(ask);
+        // Two sweeps ending on one surface: this one may end on the mesh
+        // the other leaves there, as a ring's last piece does, when both
+        // meshes come from one surface's mesh (torus quarters: two sweep
+        // away from one cut face, two into the opposite one).
+        const auto mine = roles.find(ask.surface);
+        const auto theirs = roles_.find(ask.surface);
+        if (ask.volume && mine != roles.end() && mine->second == scheme::kMeshedByVolume &&
+            theirs != roles_.end() && theirs->second.scheme == scheme::kMeshedByVolume) {
+          const int from = vs->sweep_source(planned);
+          if (from && origin(from) && origin(from) == origin(ask.surface))
+            closing.insert(ask.surface);
+        }
         continue;
       }
       waits_for_ = std::move(waits);
@@ -428,6 +456,7 @@ class Selector {
         for (const Request& a : asks) request(a);
       }
       volume_types_[id] = vs->vertex_types(planned);
+      sweep_source_[id] = vs->sweep_source(planned);
       choice.scheme = c->scheme;
       choice.reason = choice.pinned
                           ? "pinned at " + place(pin->where)
@@ -600,7 +629,8 @@ class Selector {
   std::set<int> imposed_;
   std::map<int, std::set<int>> waits_for_;        // volume -> volumes meshed before it
   std::map<int, scheme::NeighbourMeshes> yield_;  // requests made of a volume
-  bool restart_ = false;                          // a request was added this round
+  std::map<int, int> sweep_source_;  // chosen volume -> the surface it sweeps from (0: none)
+  bool restart_ = false;             // a request was added this round
   std::map<std::tuple<int, std::set<int>, std::set<int>, std::set<int>, std::map<int, std::string>>,
            std::vector<Candidate>>
       evaluated_;

@@ -166,6 +166,11 @@ class VolumeScheme {
   /// meshed first, and this volume reads its mesh (docs/design.md, "Volumes
   /// that wait for a neighbour").
   virtual std::vector<int> takes_existing_mesh(const VolumeView& /*view*/) const { return {}; }
+  /// The one surface a one-to-one sweep starts from, whose image its other
+  /// end's mesh is (0: not such a sweep). The selector closes a ring of
+  /// sweeps onto an existing mesh only when both ends' meshes come from one
+  /// surface's mesh (NeighbourMeshes::closing).
+  virtual int sweep_source(const VolumeView& /*view*/) const { return 0; }
   /// Vertex types of its surfaces the plan relies on where a surface scheme
   /// alone might classify otherwise (a side's corner between two types,
   /// typed to agree with its neighbours); the selector hands them to the

@@ -75,6 +75,7 @@ class CooperScheme final : public scheme::VolumeScheme {
   /// scheme::kMeshedByVolume. Empty when not applicable.
   scheme::SurfaceRoles roles(const scheme::VolumeView& view) const override;
   std::vector<int> takes_existing_mesh(const scheme::VolumeView& view) const override;
+  int sweep_source(const scheme::VolumeView& view) const override;
   /// The side corners the lattice typed to agree with their neighbours.
   std::vector<io::VertexTypeSetting> vertex_types(const scheme::VolumeView& view) const override;
   void space_curves(const scheme::VolumeView& view, const std::map<int, int>& counts,

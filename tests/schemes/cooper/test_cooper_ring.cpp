@@ -213,5 +213,34 @@ TEST(CooperRing, TheHalfTurnsTargetIsItsSourceTurned) {
   }
 }
 
+// The torus cut in four (two meridian planes): two quarters sweep away from
+// one cut face, so the opposite cut face is where two sweeps end. The
+// second to reach it ends on the mesh the first left there, as a ring's
+// last piece does: both are images of the first cut face's mesh. Refused
+// before ("surface 7 would be meshed by both volume 3 and volume 4").
+TEST(CooperRing, QuartersOfATorusEndTwoSweepsOnOneCutFace) {
+  for (const double size : {0.3, 0.5}) {
+    occ::Workbench wb;
+    wb.torus("ring", {0, 0, 0}, {0, 0, 1}, 3.0, 1.0);
+    wb.webcut("ring", {0, 0, 0}, {1, 0, 0});
+    wb.webcut("ring", {0, 0, 0}, {0, 1, 0});
+    const geom::Model model = wb.build_model();
+    ASSERT_EQ(model.volumes().size(), 4u);
+    io::MeshSettings settings;
+    settings.size = size;
+    settings.finer_retries = 0;
+    scheme::Registry registry;
+    register_builtin_schemes(registry);
+    const pipeline::MeshResult r =
+        pipeline::mesh_model(model, settings, registry, selector::mesh_options());
+    for (const auto& [id, v] : r.plan.volumes) EXPECT_EQ(v.scheme, "cooper") << "volume " << id;
+    const testing::HexMeshSummary s = testing::check_hex_mesh(model, r.mesh);
+    const double exact = 2 * M_PI * M_PI * 3.0;
+    EXPECT_LT(s.volume, exact * (1 + 1e-3)) << "size " << size;
+    EXPECT_GT(s.volume, exact * (1 - size * size / 6)) << "size " << size;
+    EXPECT_GT(s.min_sj, 0.7) << "size " << size;
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
