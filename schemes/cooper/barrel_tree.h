@@ -13,6 +13,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cooperage::cooper {
@@ -53,6 +54,16 @@ struct BarrelTree {
   /// cap -> (barrel, true when in its upper cap)
   std::map<int, std::pair<int, bool>> cap_end;
 };
+
+/// A one-to-one sweep's caps (upper, lower): one barrel from one real cap
+/// to one real cap; (0, 0) for any other tree.
+inline std::pair<int, int> one_to_one_caps(const BarrelTree& tree) {
+  if (tree.barrels.size() != 1) return {0, 0};
+  const BarrelNode& barrel = tree.barrels.front();
+  if (barrel.upper.size() != 1 || barrel.lower.size() != 1) return {0, 0};
+  const int upper = barrel.upper.front().cap, lower = barrel.lower.front().cap;
+  return upper && lower ? std::make_pair(upper, lower) : std::make_pair(0, 0);
+}
 
 BarrelTree form_barrel_tree(const VolumeFacts& facts, const SideLattice& lattice,
                             const SweepOrder& order, const SlabRegions& slabs);

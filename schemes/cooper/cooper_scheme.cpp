@@ -186,11 +186,7 @@ std::vector<int> CooperScheme::takes_existing_mesh(const scheme::VolumeView& vie
 // A one-barrel sweep from one cap to one cap (a ring's piece): its upper cap.
 int CooperScheme::sweep_source(const scheme::VolumeView& view) const {
   const auto held = plan(view);
-  const VolumePlan& p = held->plan;
-  if (!p.ok || p.tree.barrels.size() != 1) return 0;
-  const BarrelNode& barrel = p.tree.barrels.front();
-  if (barrel.upper.size() != 1 || barrel.lower.size() != 1) return 0;
-  return barrel.lower.front().cap ? barrel.upper.front().cap : 0;
+  return held->plan.ok ? one_to_one_caps(held->plan.tree).first : 0;
 }
 
 // cite: Blacker 1996, sec. 4 (a barrel's rings of ribs on its caps'

@@ -223,11 +223,8 @@ std::string seamed_target_from_far_source(const geom::Model& model, const Volume
 // match: the target's mesh is one piece, the image of the one source.
 void end_on_existing_mesh(const BarrelTree& tree, const std::set<int>& closing,
                           const CapSchemeOf& scheme_of, CapRoles& roles) {
-  if (tree.barrels.size() != 1) return;
-  const BarrelNode& barrel = tree.barrels.front();
-  if (barrel.upper.size() != 1 || barrel.lower.size() != 1) return;
-  const int upper = barrel.upper.front().cap, lower = barrel.lower.front().cap;
-  if (!upper || !lower || !closing.count(lower) || !roles.scheme.count(upper)) return;
+  const auto [upper, lower] = one_to_one_caps(tree);
+  if (!upper || !closing.count(lower) || !roles.scheme.count(upper)) return;
   std::string why;
   const std::string s = scheme_of(lower, why);
   if (s.empty()) return;
