@@ -22,7 +22,8 @@ struct Edge {
   int curve = 0;
   int axis = 0;            // 0: runs along i, 1: along j
   double a0 = 0, a1 = 0;   // extent along its axis (geometric, a0 < a1)
-  double b = 0;            // geometric coordinate across its axis
+  double b = 0;            // geometric coordinate across its axis (its chord's middle)
+  bool aligned = true;     // its chord within 20 degrees of its axis
   std::array<Expr, 2> at;  // lattice (i, j) of its start, in curve counts
 };
 
@@ -42,6 +43,14 @@ bool inside(const std::vector<std::array<double, 2>>& poly, double x, double y) 
 struct Picture {
   std::vector<std::array<double, 2>> start, end;
   double scale = 0;  ///< the largest extent: tolerances are relative to it
+  /// Per use: its chord runs within 20 degrees of its axis. A planar face
+  /// with slanted curves (a lug's conical underside cut by a wall: lines at
+  /// 36 degrees) is drawn all the same, but only its aligned curves are
+  /// paired, and as preferences.
+  std::vector<char> aligned;
+  bool all_aligned() const {
+    return std::all_of(aligned.begin(), aligned.end(), [](char a) { return a != 0; });
+  }
 };
 
 // A planar face of straight curves: the chords along the lattice's axes.
@@ -77,13 +86,12 @@ std::optional<Picture> planar_picture(const geom::Model& model, const LoopPlan& 
   }
   // Every curve within 20 degrees of its axis: the picture is a plain
   // rectilinear polygon, whose facing curves the lattice must keep apart.
+  Picture out;
   for (size_t k = 0; k < n; ++k) {
     const Vec3 chord = end[k] - start[k];
-    if (std::abs(chord.dot(axis[static_cast<size_t>(loop.directions[k] % 2)])) <
-        aligned * chord.norm())
-      return std::nullopt;
+    out.aligned.push_back(std::abs(chord.dot(axis[static_cast<size_t>(loop.directions[k] % 2)])) >=
+                          aligned * chord.norm());
   }
-  Picture out;
   out.scale = scale;
   for (size_t k = 0; k < n; ++k) {
     out.start.push_back({start[k].dot(axis[0]), start[k].dot(axis[1])});
@@ -159,6 +167,7 @@ std::optional<Picture> parametric_picture(const geom::Model& model, int surface_
     out.start.push_back(draw(samples[k].front()));
     out.end.push_back(draw(samples[k].back()));
   }
+  out.aligned.assign(n, 1);
   return out;
 }
 
@@ -185,6 +194,7 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
     Edge e;
     e.curve = loop.uses[k].curve;
     e.axis = along;
+    e.aligned = picture->aligned[k] != 0;
     const double s = picture->start[k][static_cast<size_t>(along)];
     const double t = picture->end[k][static_cast<size_t>(along)];
     e.a0 = std::min(s, t);
@@ -203,6 +213,8 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
       const Edge& ep = edges[p];
       const Edge& eq = edges[q];
       if (ep.axis != eq.axis || std::abs(ep.b - eq.b) <= tol) continue;
+      // A slanted curve's place across its axis is not one number.
+      if (!ep.aligned || !eq.aligned) continue;
       const double lo = std::max(ep.a0, eq.a0), hi = std::min(ep.a1, eq.a1);
       const Edge& near = ep.b < eq.b ? ep : eq;
       const Edge& far = ep.b < eq.b ? eq : ep;
@@ -244,7 +256,8 @@ void add_facing_edge_constraints(const geom::Model& model, int surface_id, const
       const std::string label = "surface " + std::to_string(surface_id) + " (submap) curves " +
                                 std::to_string(near.curve) + " and " + std::to_string(far.curve) +
                                 " keep a row of cells between them";
-      // The planar rows are needs (session 33). The others are preferences:
+      // The rows of a rectilinear planar face are needs (session 33). The
+      // others (off a plane, or beside slanted curves) are preferences:
       // answers that keep them stay as they are (a row CBC does not need can
       // move its answer within its gap: 7/46 at size 3.0 lost a step of its
       // imprinting), and where no answer keeps them the face fails at mesh

@@ -86,6 +86,65 @@ TEST(FacingEdges, ValidCountsAreUnchanged) {
   EXPECT_EQ(a.intervals, b.intervals);
 }
 
+// A wall whose notch from the top ends in a V (a lug's conical underside
+// cut by the wall: campaign seed 21 case 33): the V's sides run at 34
+// degrees to the lattice axis they are drawn along, so the picture is not
+// rectilinear; its aligned curves still face each other. The notch's
+// floor must stay a row above the wall's bottom: a notch as deep in the
+// lattice as the wall is high put two boundary nodes on one lattice point
+// at mesh time, after the plan had accepted the counts.
+TEST(FacingEdges, ANotchEndingInAVKeepsItsFloorAboveTheBottom) {
+  occ::Workbench wb;
+  wb.prism("wall",
+           {{0, 0, 0},
+            {50, 0, 0},
+            {50, 0, 16},
+            {32, 0, 16},
+            {32, 0, 7},
+            {29, 0, 5},
+            {23, 0, 5},
+            {20, 0, 7},
+            {20, 0, 16},
+            {0, 0, 16}},
+           {}, {0, 1, 0});
+  const geom::Model model = wb.build_model();
+  int surface = 0;
+  for (const auto& s : model.surfaces()) {
+    if (std::abs(s.box.max.y()) < 1e-9 && std::abs(s.box.min.y()) < 1e-9) surface = s.id;
+  }
+  ASSERT_GT(surface, 0);
+  const SubmapPlan plan = plan_submap(model, surface, {});
+  ASSERT_TRUE(plan.ok) << plan.why;
+  // Hard counts on the wall's two outer edges (`wall`) and on the notch's
+  // right side (`notch`); the goals at size 2 elsewhere.
+  const auto counts = [&](int wall, int notch, bool facing) {
+    intervals::IntervalProblem p;
+    for (const auto& u : plan.loops.front().uses) {
+      const geom::Curve& c = model.curve(u.curve);
+      const geom::Vec3 a = model.vertex(c.start_vertex).point;
+      const geom::Vec3 b = model.vertex(c.end_vertex).point;
+      const bool vertical = std::abs(a.x() - b.x()) < 1e-9;
+      const bool outer = vertical && (a.x() < 1e-9 || a.x() > 50 - 1e-9);
+      const bool notch_side = vertical && std::abs(a.x() - 32) < 1e-9;
+      if (outer) {
+        p.add_curve(c.id, c.length / 2, intervals::Firmness::Hard, wall);
+      } else if (notch_side) {
+        p.add_curve(c.id, c.length / 2, intervals::Firmness::Hard, notch);
+      } else {
+        p.add_curve(c.id, c.length / 2);
+      }
+    }
+    add_submap_constraints(surface, plan, p);
+    if (facing) add_facing_edge_constraints(model, surface, plan.loops.front(), p);
+    return p;
+  };
+  EXPECT_TRUE(feasible(counts(3, 3, false)));  // the balance alone lets the floor sink
+  EXPECT_FALSE(feasible(counts(3, 3, true)));
+  EXPECT_FALSE(feasible(counts(3, 4, true)));
+  EXPECT_TRUE(feasible(counts(4, 3, true)));
+  EXPECT_TRUE(feasible(counts(8, 4, true)));
+}
+
 // A face that is two strips meeting along a short piece of one level: the
 // lower strip's right edge comes down from that level where the upper
 // strip's left edge goes up from it, 0.5 (or 6 degrees) further left. The
