@@ -588,12 +588,7 @@ class Selector {
         return;
       } catch (const intervals::IntervalConflict& e) {
         Choice* c = round < options_.max_relaxations ? relaxable(e.curves()) : nullptr;
-        if (!c) {
-          throw MeshingError(ErrorCode::Infeasible, e.entity(),
-                             e.message() +
-                                 "; no automatic scheme choice is left to relax (the conflict "
-                                 "involves pinned counts or schemes)");
-        }
+        if (!c) throw_conflict(e);
         const auto order = ranked(c->candidates);
         auto it = std::find_if(order.begin(), order.end(),
                                [&](const Candidate* k) { return k->scheme == c->scheme; });
@@ -604,6 +599,67 @@ class Selector {
         c->scheme = next;
       }
     }
+  }
+
+  // Whether `choice`'s surface (or one of its volume's) uses one of `curves`.
+  bool touches(const Choice& choice, const std::set<int>& curves) const {
+    std::vector<int> surfaces;
+    if (choice.dim == 2) {
+      surfaces.push_back(choice.id);
+    } else {
+      for (const auto& shell : model_.volume(choice.id).shells)
+        for (const auto& use : shell) surfaces.push_back(use.surface);
+    }
+    for (int sid : surfaces)
+      for (const auto& loop : model_.surface(sid).loops)
+        for (const auto& use : loop.uses)
+          if (curves.count(use.curve)) return true;
+    return false;
+  }
+
+  // An interval conflict nothing automatic can relax, as an error a person
+  // can act on (issue 16 item 5): the first volume it involves, the
+  // conflicting constraints as details (the command line puts them on a line
+  // of their own), and what to change: the pins it involves, if any; else
+  // the counts follow from the schemes' own structure (a sweep's layers and
+  // its sides' lattices), which a cut or another sweep direction changes.
+  [[noreturn]] void throw_conflict(const intervals::IntervalConflict& e) const {
+    const std::set<int>& curves = e.curves();
+    std::vector<std::string> pins;
+    for (const io::CurveSetting& c : settings_.curves) {
+      const bool hard = c.sizing.intervals || c.sizing.firmness == io::Firmness::Hard;
+      if (hard && curves.count(c.id))
+        pins.push_back("curve " + std::to_string(c.id) + " (" + place(c.where) + ")");
+    }
+    int volume = 0;
+    for (const Choice& c : selection_.volumes) {
+      if (!touches(c, curves)) continue;
+      if (volume == 0) volume = c.id;
+      if (c.pinned) pins.push_back("volume " + std::to_string(c.id) + " (" + c.reason + ")");
+    }
+    for (const Choice& c : selection_.surfaces) {
+      if (c.pinned && touches(c, curves))
+        pins.push_back("surface " + std::to_string(c.id) + " (" + c.reason + ")");
+    }
+    std::string list;
+    for (size_t k = 0; k < pins.size() && k < 4; ++k) list += (k ? ", " : "") + pins[k];
+    if (pins.size() > 4) list += " and " + std::to_string(pins.size() - 4) + " more";
+    const std::string hint =
+        pins.empty()
+            ? "the counts follow from the schemes' structure (a sweep's layers, its sides' "
+              "lattices); a <webcut> between the features these curves bound, or a sweep "
+              "direction hint, changes them"
+            : "change or drop one of the pins it involves: " + list;
+    // The solver's message ends with "(curves ...)"; the constraints go to
+    // the details.
+    std::string what = e.message();
+    const std::string prefix = "interval constraints cannot all hold: ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    throw MeshingError(ErrorCode::Infeasible, volume > 0 ? EntityRef::volume(volume) : e.entity(),
+                       "no interval counts satisfy all of its constraints, and no automatic "
+                       "scheme choice is left to relax (" +
+                           what + ")",
+                       hint);
   }
 
   // Relaxations change a few surfaces' constraints: only the components

@@ -325,6 +325,10 @@ TEST(Selector, PinnedHardCountsThatConflictAreReportedNotRelaxed) {
     EXPECT_EQ(e.code(), ErrorCode::Infeasible);
     EXPECT_NE(std::string(e.what()).find("no automatic scheme choice is left"), std::string::npos)
         << e.what();
+    // The volume, and the two pins to change.
+    EXPECT_EQ(std::string(e.what()).rfind("volume 1: ", 0), 0u) << e.what();
+    EXPECT_NE(e.hint().find("curve 1"), std::string::npos) << e.hint();
+    EXPECT_NE(e.hint().find("curve 3"), std::string::npos) << e.hint();
   }
 }
 

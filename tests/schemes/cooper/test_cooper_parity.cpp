@@ -175,5 +175,44 @@ TEST(CooperParity, LugsWithAFortyFiveDegreeConeUnderneath) {
   }
 }
 
+// Two overlapping lugs with cones underneath on one wall, a foot below
+// (campaign seed 21 case 33). The plan swept the lugs' cones and the block's
+// bottom up into one barrel; the wall's lattice then put the V-shaped floor
+// of the lugs' notch below the wall's bottom row, at every size: the plan
+// accepted it and submap failed at mesh time. The V's sides are slanted
+// (36 degrees), which kept the wall's facing rows out until the aligned
+// curves were paired anyway. When the plan refuses, it says what to change:
+// nothing in the job is pinned, so not a pin.
+TEST(CooperParity, TwoOverlappingLugsWithConesUnderneath) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {39.76, 53.8, 15.52});
+  wb.cylinder("foot", {22.92, 43.82, -5.61}, {0, 0, 1}, 5.69, 5.61);
+  wb.cylinder("lug1", {39.76, 17.23, 7.88}, {0, 0, 1}, 3.99, 7.64);
+  wb.cone("under1", {39.76, 17.23, 5.77}, {0, 0, 1}, 1.13, 3.99, 2.11);
+  wb.cylinder("lug2", {39.76, 24.85, 6.17}, {0, 0, 1}, 5.21, 9.35);
+  wb.cone("under2", {39.76, 24.85, 5.16}, {0, 0, 1}, 1.05, 5.21, 1.01);
+  wb.fuse("part", {"block", "foot", "lug1", "under1", "lug2", "under2"});
+  const geom::Model model = wb.build_model();
+  for (double size : {3.444, 1.722}) {
+    io::MeshSettings settings;
+    settings.size = size;
+    settings.decompose = io::Decompose::Off;
+    settings.finer_retries = 0;
+    if (expect_parity(model, settings, "lugs at size " + std::to_string(size))) continue;
+    scheme::Registry registry;
+    register_builtin_schemes(registry);
+    selector::SelectOptions options;
+    options.check_intervals = true;
+    try {
+      selector::select_schemes(model, registry, settings, options);
+    } catch (const MeshingError& e) {
+      if (e.code() != ErrorCode::Infeasible) continue;  // refused by a scheme
+      EXPECT_EQ(std::string(e.what()).rfind("volume 1: ", 0), 0u) << e.what();
+      EXPECT_EQ(e.hint().find("pin"), std::string::npos) << e.hint();
+      EXPECT_NE(e.hint().find("<webcut>"), std::string::npos) << e.hint();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
