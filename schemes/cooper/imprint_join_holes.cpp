@@ -1,14 +1,17 @@
-// Subtraction between two holes (Blacker 1996, sec. 5.2): a subcap a whose
-// loop runs along two holes A and B of one opposing subcap t, with a gap
-// from A to B and another back from B to A. Either gap alone joins two
-// holes and splits nothing, so both are projected together: t loses the
-// piece between them (a's image) and A and B become one hole. This is the
-// top of a plate under a block, with nuts straddling the block's edge below:
-// the block's footprint reaches the plate's underside only as paths between
-// the nuts' outlines.
+// Subtraction between holes (Blacker 1996, sec. 5.2): a subcap a whose loop
+// runs along holes A, B, ... of one opposing subcap t, with a gap from A to
+// B, another from B to the next, and the last back to A. Each gap alone
+// joins two holes and splits nothing, so all are projected together: t
+// loses the piece between them (a's image) and the holes become one. Two
+// holes: the top of a plate under a block, with nuts straddling the block's
+// edge below (the block's footprint reaches the plate's underside only as
+// paths between the nuts' outlines). Three: a blind hole's floor under two
+// bosses and beside a through hole, its rim running from one to the next
+// (campaign seed 19 case 9).
 #include "schemes/cooper/imprinter.h"
 
 #include <algorithm>
+#include <array>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -21,12 +24,6 @@ Loop arc(const Loop& hole, size_t i, size_t j, bool forward) {
   for (size_t k = forward ? (i + 1) % n : (i + n - 1) % n; k != j;
        k = forward ? (k + 1) % n : (k + n - 1) % n)
     out.push_back(hole[k]);
-  return out;
-}
-
-Loop chain(std::initializer_list<const Loop*> parts) {
-  Loop out;
-  for (const Loop* p : parts) out.insert(out.end(), p->begin(), p->end());
   return out;
 }
 
@@ -46,67 +43,122 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
   };
   const size_t ha = hole_of(x1), hb = hole_of(y1);
   if (ha == 0 || hb == 0 || ha == hb) return false;
-  // a's loop after r1: nodes ribbed onto B, a gap, nodes ribbed onto A up to r0.
   auto on = [&](int v, size_t h) {
     const auto p = partner(e, v);
     return p && index_in(caps(o)[bi].loops[h], *p) >= 0;
   };
-  size_t k = (static_cast<size_t>(index_in(la, r1)) + 1) % n;
+  // a's loop after r1, round to r0: a run of nodes ribbed onto one hole, a
+  // gap (perhaps empty: the partners of its ends are not adjacent), a run on
+  // the next hole, ... and last a run on A up to r0. Each hole once; every
+  // run at least two nodes (a run of one touches its hole at a node).
+  std::vector<size_t> holes{hb};
+  std::vector<int> into{y1}, out_of;  // per hole: where the piece's loop arrives and leaves
+  std::vector<Loop> gaps;
   const size_t k0 = static_cast<size_t>(index_in(la, r0));
-  while (k != k0 && on(la[k], hb)) k = (k + 1) % n;
-  const int r2 = la[(k + n - 1) % n];
-  Loop gap2;
-  while (k != k0 && !partner(e, la[k])) {
-    gap2.push_back(la[k]);
-    k = (k + 1) % n;
+  size_t k = (static_cast<size_t>(index_in(la, r1)) + 1) % n;
+  int entry = r1;
+  for (;;) {
+    const size_t h = holes.back();
+    while (k != k0 && on(la[k], h)) k = (k + 1) % n;
+    const int exit = la[(k + n - 1) % n];
+    if (exit == entry) return false;
+    out_of.push_back(*partner(e, exit));
+    Loop gap;
+    while (k != k0 && !partner(e, la[k])) {
+      gap.push_back(la[k]);
+      k = (k + 1) % n;
+    }
+    gaps.push_back(std::move(gap));
+    entry = la[k];
+    const size_t next = hole_of(*partner(e, entry));
+    if (next == ha) break;
+    if (next == 0 || k == k0 || std::count(holes.begin(), holes.end(), next) > 0) return false;
+    holes.push_back(next);
+    into.push_back(*partner(e, entry));
   }
-  const int r3 = la[k];
+  // The last run, on A, up to r0.
+  if (entry == r0) return false;
   for (size_t m = k; m != k0; m = (m + 1) % n) {
-    if (!on(la[m], ha)) return false;  // a reaches a third hole or cap
+    if (!on(la[m], ha)) return false;  // a reaches a hole twice or another cap
   }
-  if (r2 == r1 || r3 == r0 || !on(r3, ha)) return false;  // touching at one node
-  Loop path2;
-  for (int v : gap2) path2.push_back(project(e, v, la));
-  const int x2 = *partner(e, r2), y2 = *partner(e, r3);
+  holes.push_back(ha);
+  into.push_back(*partner(e, entry));
+  out_of.push_back(x1);
+  const size_t count = holes.size();
+  if (count > 8) return false;  // 2^count arc choices below
   Subcap& t = caps(o)[bi];
-  const Loop A = t.loops[ha], B = t.loops[hb];
-  const size_t ix1 = static_cast<size_t>(index_in(A, x1)),
-               iy2 = static_cast<size_t>(index_in(A, y2));
-  const size_t iy1 = static_cast<size_t>(index_in(B, y1)),
-               ix2 = static_cast<size_t>(index_in(B, x2));
-  if (ix1 == iy2 || iy1 == ix2) return false;
-  // The piece takes the arc of each hole facing the other hole: it encloses
-  // neither of the arcs it leaves to the joined hole.
-  const Loop a_arcs[2] = {arc(A, iy2, ix1, true), arc(A, iy2, ix1, false)};
-  const Loop b_arcs[2] = {arc(B, iy1, ix2, true), arc(B, iy1, ix2, false)};
-  const Loop head{x1}, mid{y1}, tail{x2}, end{y2};
-  auto loop_of = [&](int ia, int ib) {
-    return chain({&head, &path1, &mid, &b_arcs[ib], &tail, &path2, &end, &a_arcs[ia]});
+  // Per hole j: its two arcs between where the piece arrives and leaves.
+  std::vector<std::array<Loop, 2>> arcs(count);
+  for (size_t j = 0; j < count; ++j) {
+    const Loop& hole = t.loops[holes[j]];
+    const size_t i_in = static_cast<size_t>(index_in(hole, into[j]));
+    const size_t i_out = static_cast<size_t>(index_in(hole, out_of[j]));
+    if (i_in == i_out) return false;
+    arcs[j] = {arc(hole, i_in, i_out, true), arc(hole, i_in, i_out, false)};
+  }
+  // The gaps after the first, projected (path1 is).
+  const int first_new = next_node_;
+  std::vector<Loop> paths{path1};
+  for (size_t j = 0; j + 1 < count; ++j) {
+    Loop path;
+    for (int v : gaps[j]) path.push_back(project(e, v, la));
+    paths.push_back(std::move(path));
+  }
+  // x1 -> path1 -> (B: arrive, arc, leave) -> path2 -> ... -> (A: arrive, arc) -> x1.
+  auto loop_of = [&](unsigned choice, bool flip) {
+    Loop out{x1};
+    out.insert(out.end(), paths[0].begin(), paths[0].end());
+    for (size_t j = 0; j < count; ++j) {
+      const bool which = ((choice >> j) & 1u) != 0;
+      const Loop& arc_j = arcs[j][(which != flip) ? 1 : 0];
+      out.push_back(into[j]);
+      out.insert(out.end(), arc_j.begin(), arc_j.end());
+      if (j + 1 < count) {
+        out.push_back(out_of[j]);
+        out.insert(out.end(), paths[j + 1].begin(), paths[j + 1].end());
+      }
+    }
+    return out;
   };
   auto encloses = [&](const Loop& c, const Loop& other) {
     return !other.empty() && point_in_loop(xy().at(other[other.size() / 2]), c, xy());
   };
-  for (int ia = 0; ia < 2; ++ia) {
-    for (int ib = 0; ib < 2; ++ib) {
-      Loop piece = loop_of(ia, ib);
-      if (encloses(piece, a_arcs[1 - ia]) || encloses(piece, b_arcs[1 - ib])) continue;
-      Loop joined = loop_of(1 - ia, 1 - ib);
-      if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
-      if (signed_area(joined, xy()) > 0) std::reverse(joined.begin(), joined.end());
-      // t's other holes inside the piece (a nut wholly under the block) go with it.
-      std::vector<Loop> kept{t.loops.front(), joined}, inner{piece};
-      for (size_t h = 1; h < t.loops.size(); ++h) {
-        if (h == ha || h == hb) continue;
-        const Loop& hole = t.loops[h];
-        bool in = true;
-        for (int v : hole)
-          in = in && (index_in(piece, v) >= 0 || point_in_loop(xy().at(v), piece, xy()));
-        (in ? inner : kept).push_back(hole);
-      }
-      t.loops = std::move(kept);
-      new_cap(o, std::move(inner), t.id);
-      r_.steps.push_back(ImprintStep::Subtract);
-      return true;
+  // The piece takes the arc of each hole facing the others: it encloses
+  // none of the arcs it leaves to the joined hole.
+  for (unsigned choice = 0; choice < (1u << count); ++choice) {
+    Loop piece = loop_of(choice, false);
+    bool clear = true;
+    for (size_t j = 0; j < count && clear; ++j) {
+      const bool which = ((choice >> j) & 1u) != 0;
+      clear = !encloses(piece, arcs[j][which ? 0 : 1]);
+    }
+    if (!clear) continue;
+    Loop joined = loop_of(choice, true);
+    if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
+    if (signed_area(joined, xy()) > 0) std::reverse(joined.begin(), joined.end());
+    // t's other holes inside the piece (a nut wholly under the block) go with it.
+    std::vector<Loop> kept{t.loops.front(), joined}, inner{piece};
+    for (size_t h = 1; h < t.loops.size(); ++h) {
+      if (std::count(holes.begin(), holes.end(), h) > 0) continue;
+      const Loop& hole = t.loops[h];
+      bool in = true;
+      for (int v : hole)
+        in = in && (index_in(piece, v) >= 0 || point_in_loop(xy().at(v), piece, xy()));
+      (in ? inner : kept).push_back(hole);
+    }
+    t.loops = std::move(kept);
+    new_cap(o, std::move(inner), t.id);
+    r_.steps.push_back(ImprintStep::Subtract);
+    return true;
+  }
+  // No piece: the later gaps' ribs go (path1's are the caller's to undo).
+  for (size_t j = 0; j + 1 < count; ++j) {
+    for (int v : gaps[j]) {
+      const auto p = partner(e, v);
+      if (!p) continue;
+      partner_[e].erase(v);
+      partner_[o].erase(*p);
+      if (*p >= first_new) r_.ends.xy.erase(*p);
     }
   }
   return false;

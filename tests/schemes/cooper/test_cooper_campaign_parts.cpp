@@ -721,6 +721,29 @@ TEST(CooperBarrelFormation, PocketWallsMeetingAtNineDegreesMesh) {
                 122);
 }
 
+// A blind hole from the bottom whose floor lies under the corners of two
+// bosses on the top and overlaps a blind hole from the top (plan => mesh
+// campaign seed 19 case 9). The floor's rim, seen from the top, runs from
+// one boss's footprint to the other's, to the hole from the top and back:
+// three gaps, each joining two holes of the top's remainder and splitting
+// nothing alone. Imprinting found no step at every size from 1.19 to 6;
+// the gaps are now projected together and the piece they enclose leaves
+// the top's remainder.
+void floor_between_two_bosses_and_a_hole(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {25.86, 22.53, 35.55});
+  wb.cylinder("from_bottom", {11.54, 11.41, -35.55}, {0, 0, 1}, 4.85, 59.08);
+  wb.brick("boss1", {12.73, 2.87, 35.55}, {7.7, 7.38, 7.83});
+  wb.brick("boss2", {15.74, 11.08, 35.55}, {9.4, 2.86, 14.87});
+  wb.cylinder("from_top", {7.84, 15.33, 7.5}, {0, 0, 1}, 3.4, 63.6);
+  wb.fuse("body", {"block", "boss1", "boss2"});
+  wb.cut("part", {"body", "from_bottom", "from_top"});
+}
+
+TEST(CooperImprintSlivers, AFloorsRimFromHoleToHoleToHoleSplitsTheTopOnce) {
+  expect_meshes("floor_between_two_bosses_and_a_hole", floor_between_two_bosses_and_a_hole,
+                {4.762, 2.381}, 177);
+}
+
 // A pocket whose corner pokes out of a blind hole from below, under a
 // square boss (campaign seed 8 case 168): imprinting stops at every size
 // tried (2.29 down to 0.3), the pocket's corner beside the hole's rim. The
