@@ -722,7 +722,9 @@ bool Imprinter::gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1
     const Subcap& b = caps(1 - e)[bi];
     const bool clear = keep_clear(
         chain, false, std::vector<Loop>(b.loops.begin() + 1, b.loops.end()), undo.next_node);
-    if (!clear && gap_through_hole(e, a.loops.front(), gap, path, seamed, x, y, bi, fresh, undo))
+    if (!clear &&
+        (gap_through_hole(e, a.loops.front(), gap, path, seamed, x, y, bi, fresh, undo) ||
+         gap_through_own_hole(e, a.loops.front(), gap, path, seamed, x, y, bi, fresh, undo)))
       return true;
   }
   // Seamed onto b's boundary throughout: no split, the ribs are the progress.

@@ -125,6 +125,14 @@ class Imprinter {
   struct Undo;
   bool gap_through_hole(int e, const Loop& around, const Loop& gap, const Loop& path, bool seamed,
                         int x, int y, size_t bi, const Loop& fresh, const Undo& undo);
+  // sec. 5.2-5.3: x and y lie on one hole H of subcap bi and the image
+  // x -> path -> y leaves bi into H and comes back: the two crossings are
+  // seamed onto nodes of H, the parts of the path outside H cut pieces off
+  // bi that join H, and the gap's middle, inside H, stays a gap
+  // (imprint_gap_through_own_hole.cpp). False, nothing changed, otherwise.
+  bool gap_through_own_hole(int e, const Loop& around, const Loop& gap, const Loop& path,
+                            bool seamed, int x, int y, size_t bi, const Loop& fresh,
+                            const Undo& undo);
   // The ribs a gap's projection made (from the nodes in `fresh`, unribbed
   // before it), taken back when it split nothing.
   struct Undo {

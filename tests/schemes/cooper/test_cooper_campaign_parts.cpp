@@ -744,6 +744,27 @@ TEST(CooperImprintSlivers, AFloorsRimFromHoleToHoleToHoleSplitsTheTopOnce) {
                 {4.762, 2.381}, 177);
 }
 
+// Blind holes from both ends 1.84 off one axis, both cut by a through hole
+// (plan => mesh campaign seed 27 case 81). The top floor's rim, projected
+// onto the bottom, runs from the through hole's rim into the part's
+// remainder, across the bottom floor's rim and out again back to the
+// through hole: it leaves the remainder through the very hole (the through
+// hole and the bottom floor together) it starts and ends on. Split along
+// the whole path, the piece overlapped the bottom floor, and imprinting
+// found no step at every size from 0.96 to 3.85.
+void blind_holes_off_axis_across_a_through_hole(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {29.48, 40.04, 16.47});
+  wb.cylinder("from_top", {20.73, 11.59, 9.09}, {0, 0, 1}, 5.89, 23.85);
+  wb.cylinder("from_bottom", {20.81, 9.75, -16.47}, {0, 0, 1}, 5.75, 21.64);
+  wb.cylinder("through", {22.14, 19.57, -16.47}, {0, 0, 1}, 6.1, 49.41);
+  wb.cut("part", {"block", "from_top", "from_bottom", "through"});
+}
+
+TEST(CooperImprintSlivers, AFloorsRimLeavingThroughTheHoleItEndsOnIsSplitAroundIt) {
+  expect_meshes("blind_holes_off_axis_across_a_through_hole",
+                blind_holes_off_axis_across_a_through_hole, {3.845, 0.9613}, 178);
+}
+
 // A pocket whose corner pokes out of a blind hole from below, under a
 // square boss (campaign seed 8 case 168): imprinting stops at every size
 // tried (2.29 down to 0.3), the pocket's corner beside the hole's rim. The
