@@ -354,9 +354,17 @@ bool Imprinter::intersect(int e, const Subcap& a, int r0, const Loop& gap, int r
     if (ja < 0) return false;
     const size_t ai = index_of_cap(e, a.id);
     const Loop aouter = caps(e)[ai].loops.front();
+    const Loop bouter = caps(o)[index_of_cap(o, b.id)].loops.front();
+    // The crossing's walk can end on a hole of a, not its outer loop (seed
+    // 30 case 83): there is no split of the outer loop then, and the state
+    // so far (ribs, the node on the edge) is no base for another step.
+    if (index_in(aouter, ja) < 0 || index_in(aouter, p_up) < 0 || index_in(bouter, p) < 0 ||
+        index_in(bouter, y) < 0) {
+      abandoned_ = "two subcaps' loops cross where neither outer loop can be split";
+      return true;
+    }
     auto [a_left, a_right] = split_loop(aouter, ja, up_path, p_up);
-    auto [b_left, b_right] =
-        split_loop(caps(o)[index_of_cap(o, b.id)].loops.front(), p, low_path, y);
+    auto [b_left, b_right] = split_loop(bouter, p, low_path, y);
     const auto a_ids = replace(e, ai, {a_left, a_right});
     const auto b_ids = replace(o, index_of_cap(o, b.id), {b_left, b_right});
     if (!a_ids.empty() && !b_ids.empty()) {

@@ -238,6 +238,8 @@ Vec2 hole_owner_probe(const Loop& hole, const std::map<int, Vec2>& xy,
 // loop from x forward to y (sec. 5.2: b^ and b').
 std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y) {
   const size_t n = loop.size();
+  // A node not on the loop: the walks below would never meet it.
+  if (index_in(loop, x) < 0 || index_in(loop, y) < 0) return {};
   const size_t ix = static_cast<size_t>(index_in(loop, x));
   const size_t iy = static_cast<size_t>(index_in(loop, y));
   Loop left{x};

@@ -76,7 +76,7 @@ bool adjacent(const Loop& loop, int a, int b);
 /// Splits a counter-clockwise loop by a path x -> interior -> y (x, y on the
 /// loop): first = path + loop from y forward to x (the left side of the
 /// path); second = reversed path + loop from x forward to y (sec. 5.2: the
-/// caps b^ and b').
+/// caps b^ and b'). Both empty when x or y is not on the loop.
 std::pair<Loop, Loop> split_loop(const Loop& loop, int x, const Loop& interior, int y);
 /// A four-node loop with a corner whose sine is below 0.2 (nearly straight
 /// or folded): meshed as one quad, it sweeps to a flat hex.

@@ -58,6 +58,12 @@ ImprintResult Imprinter::run() {
       r_.trace.emplace_back(std::move(now),
                             r_.steps.empty() ? std::string("start") : to_string(r_.steps.back()));
     }
+    if (!abandoned_.empty()) {
+      r_.why = abandoned_ + "; unmatched subcaps" + unmatched_list();
+      r_.summary = abandoned_;
+      export_ribs();
+      return r_;
+    }
     // A loop beside a combined crossing (sec. 5.3) may now walk to it and
     // back: a pocket's edge over a round hole's lens, both ends of it.
     for (int e = 0; e < 2; ++e) {

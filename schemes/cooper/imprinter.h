@@ -168,6 +168,10 @@ class Imprinter {
   int next_node_ = 0;
   int first_new_node_ = 0;  // nodes below it were given (other barrels may share them)
   int next_cap_ = 0;
+  /// Set by a step that finds the ends in a state it cannot split (a node
+  /// it needs on a loop is not there): imprinting stops with this reason
+  /// rather than walking a loop for a node it never meets.
+  std::string abandoned_;
   long version_ = 0;  // bumped by every new rib and subcap: progress
 };
 

@@ -765,6 +765,31 @@ TEST(CooperImprintSlivers, AFloorsRimLeavingThroughTheHoleItEndsOnIsSplitAroundI
                 blind_holes_off_axis_across_a_through_hole, {3.845, 0.9613}, 178);
 }
 
+// A boss and a square boss over a foot, a through hole beside them (plan =>
+// mesh campaign seed 30 case 83). At half its size (1.788) a crossing of
+// two subcaps' loops walked to a node on a hole, not on the outer loop it
+// split, and the split's walk round that loop never met it: 16.8 GB and a
+// minute later the run ran out of memory. Imprinting now stops there and
+// says so.
+TEST(CooperImprintSlivers, ACrossingThatCannotSplitStopsImprinting) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {56.2, 42.63, 13.99});
+  wb.cylinder("boss", {35.15, 25.9, 13.99}, {0, 0, 1}, 6.75, 11.13);
+  wb.cylinder("foot", {30.09, 23.99, -4.43}, {0, 0, 1}, 8.18, 4.43);
+  wb.cylinder("hole", {22.31, 21.15, -13.99}, {0, 0, 1}, 3.42, 41.97);
+  wb.brick("square", {28.3, 23.48, 13.99}, {16.7, 6.48, 6.39});
+  wb.fuse("body", {"block", "boss", "foot", "square"});
+  wb.cut("part", {"body", "hole"});
+  try {
+    mesh_at(wb.build_model(), 1.788);
+    SUCCEED() << "it meshed";
+  } catch (const MeshingError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("subcap imprinting failed"), std::string::npos) << what;
+    EXPECT_EQ(what.find("memory"), std::string::npos) << what;
+  }
+}
+
 // A pocket whose corner pokes out of a blind hole from below, under a
 // square boss (campaign seed 8 case 168): imprinting stops at every size
 // tried (2.29 down to 0.3), the pocket's corner beside the hole's rim. The

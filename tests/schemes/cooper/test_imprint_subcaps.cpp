@@ -691,6 +691,18 @@ TEST(ImprintPolygons, SplitAtRepeatTakesTheFirstRepeatedNode) {
   EXPECT_FALSE(detail::split_at_repeat({1, 2, 3, 4}, a, b));
 }
 
+TEST(ImprintPolygons, SplitLoopSplitsAtItsNodesAndNowhereElse) {
+  // 1-2-3-4 split by 1 -> 9 -> 3: the two sides of the path.
+  const auto [left, right] = detail::split_loop({1, 2, 3, 4}, 1, {9}, 3);
+  EXPECT_EQ(left, (std::vector<int>{1, 9, 3, 4}));
+  EXPECT_EQ(right, (std::vector<int>{3, 9, 1, 2}));
+  // A node that is not on the loop (a crossing's walk that ended on a hole,
+  // seed 30 case 83): no split. The walk for it ran until memory ran out.
+  const auto [l2, r2] = detail::split_loop({1, 2, 3, 4}, 1, {9}, 7);
+  EXPECT_TRUE(l2.empty());
+  EXPECT_TRUE(r2.empty());
+}
+
 TEST(ImprintPolygons, RemoveSpikesDropsEdgesWalkedThereAndBack) {
   // The loop of seed 3 case 118 in small: ... 904, 704, 706 and back to
   // 704, where it started; the spike wraps round the loop's end.
