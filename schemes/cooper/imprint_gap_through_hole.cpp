@@ -45,33 +45,18 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
   chain.insert(chain.end(), path.begin(), path.end());
   chain.push_back(y);
   // The crossings of the chain with b's holes: exactly two, on one hole.
-  struct Crossing {
-    size_t s;  // chain segment chain[s] - chain[s + 1]
-    size_t k;  // hole segment hole[k] - hole[k + 1]
-    double t;
-  };
-  std::vector<Crossing> found;
+  std::vector<ChainCrossing> found;
   size_t hole = 0;
   for (size_t h = 1; h < b.loops.size(); ++h) {
     if (h == ends) continue;
-    const Loop& l = b.loops[h];
-    for (size_t s = 0; s + 1 < chain.size(); ++s) {
-      for (size_t k = 0; k < l.size(); ++k) {
-        const int q0 = l[k], q1 = l[(k + 1) % l.size()];
-        if (chain[s] == q0 || chain[s] == q1 || chain[s + 1] == q0 || chain[s + 1] == q1) continue;
-        const auto t =
-            segment_hit(xy().at(chain[s]), xy().at(chain[s + 1]), xy().at(q0), xy().at(q1));
-        if (!t) continue;
-        if (hole != 0 && hole != h) return false;
-        hole = h;
-        found.push_back({s, k, *t});
-      }
-    }
+    const std::vector<ChainCrossing> c = chain_crossings(chain, b.loops[h], xy());
+    if (c.empty()) continue;
+    if (hole != 0) return false;
+    hole = h;
+    found = c;
   }
   if (found.size() != 2) return false;
-  std::sort(found.begin(), found.end(), [](const Crossing& p, const Crossing& q) {
-    return p.s != q.s ? p.s < q.s : p.t < q.t;
-  });
+  sort_along_chain(found);
   const Loop H = b.loops[hole];
   const Loop& outer = b.loops[ends];
   // Outer ends: the two pieces' areas add up to b's (H runs clockwise).
@@ -87,28 +72,9 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
         std::find_if(other.begin(), other.end(), [&](int v) { return index_in(piece, v) < 0; });
     return free_node != other.end() && point_in_loop(xy().at(*free_node), piece, xy());
   };
-  // Candidates: a gap node at either end of each crossed chain segment (the
-  // chain's node s + 1 is gap node s), a free hole node at either end of
-  // each crossed hole segment; the closest pairs whose pieces are all even.
-  struct Choice {
-    size_t j1, j2;
-    int h1, h2;
-    double cost;
-  };
-  std::vector<Choice> choices;
-  for (int mask = 0; mask < 16; ++mask) {
-    const long j1 = static_cast<long>(found[0].s) - 1 + (mask & 1);
-    const long j2 = static_cast<long>(found[1].s) - 1 + ((mask >> 1) & 1);
-    const int h1 = H[(found[0].k + ((mask >> 2) & 1)) % H.size()];
-    const int h2 = H[(found[1].k + ((mask >> 3) & 1)) % H.size()];
-    if (j1 < 0 || j2 >= static_cast<long>(m) || j1 >= j2 || h1 == h2) continue;
-    if (!free_b(h1) || !free_b(h2)) continue;
-    const double cost = (xy().at(gap[static_cast<size_t>(j1)]) - xy().at(h1)).norm() +
-                        (xy().at(gap[static_cast<size_t>(j2)]) - xy().at(h2)).norm();
-    choices.push_back({static_cast<size_t>(j1), static_cast<size_t>(j2), h1, h2, cost});
-  }
-  std::stable_sort(choices.begin(), choices.end(),
-                   [](const Choice& p, const Choice& q) { return p.cost < q.cost; });
+  // The closest seams first; of those, the first whose pieces are all even.
+  using Choice = SeamChoice;
+  const std::vector<Choice> choices = seam_choices(found[0], found[1], H, gap, 1, free_b, xy());
   // The two pieces of b for a choice, with the path's nodes `p` (gap node
   // j's image at p[j]): path to h1, one arc of H, h2, path on; the pair whose
   // areas add up to b's. Empty when none does.
@@ -182,22 +148,7 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
   // Project again: the ends to the chosen hole nodes, the middle left as a gap.
   const Choice c = *chosen;
   roll_back(e, fresh, undo);
-  Loop p(m, -1);
-  auto seam = [&](int v, int h) {
-    link(e, v, h);
-    r_.seams.push_back({v, h});
-    r_.steps.push_back(ImprintStep::Seam);
-    return h;
-  };
-  for (size_t j = 0; j < m; ++j) {
-    if (j == c.j1) {
-      p[j] = seam(gap[j], c.h1);
-    } else if (j == c.j2) {
-      p[j] = seam(gap[j], c.h2);
-    } else if (j < c.j1 || j > c.j2) {
-      p[j] = project(e, gap[j], around, seamed);
-    }
-  }
+  const Loop p = project_with_seams(e, gap, around, seamed, c);
   const auto [left, right] = pieces(c, p);
   if (left.empty()) {
     // Seamed otherwise this time: the path as it was, and no step.
@@ -227,6 +178,23 @@ bool Imprinter::gap_through_hole(int e, const Loop& around, const Loop& gap, con
   r_.steps.push_back(ImprintStep::Intersect);
   r_.steps.push_back(ImprintStep::Subtract);
   return true;
+}
+
+Loop Imprinter::project_with_seams(int e, const Loop& gap, const Loop& around, bool seamed,
+                                   const SeamChoice& c) {
+  Loop p(gap.size(), -1);
+  for (size_t j = 0; j < gap.size(); ++j) {
+    if (j == c.j1 || j == c.j2) {
+      const int h = j == c.j1 ? c.h1 : c.h2;
+      link(e, gap[j], h);
+      r_.seams.push_back({gap[j], h});
+      r_.steps.push_back(ImprintStep::Seam);
+      p[j] = h;
+    } else if (j < c.j1 || j > c.j2) {
+      p[j] = project(e, gap[j], around, seamed);
+    }
+  }
+  return p;
 }
 
 }  // namespace cooperage::cooper::detail

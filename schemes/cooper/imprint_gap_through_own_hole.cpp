@@ -51,50 +51,15 @@ bool Imprinter::gap_through_own_hole(int e, const Loop& around, const Loop& gap,
   Loop chain{x};
   chain.insert(chain.end(), path.begin(), path.end());
   chain.push_back(y);
-  // The chain's crossings of H away from its nodes: exactly two.
-  struct Crossing {
-    size_t s;  // chain segment chain[s] - chain[s + 1]
-    size_t k;  // hole segment H[k] - H[k + 1]
-    double t;
-  };
-  std::vector<Crossing> found;
-  for (size_t s = 0; s + 1 < chain.size(); ++s) {
-    for (size_t k = 0; k < n; ++k) {
-      const int q0 = H[k], q1 = H[(k + 1) % n];
-      if (chain[s] == q0 || chain[s] == q1 || chain[s + 1] == q0 || chain[s + 1] == q1) continue;
-      const auto t =
-          segment_hit(xy().at(chain[s]), xy().at(chain[s + 1]), xy().at(q0), xy().at(q1));
-      if (t) found.push_back({s, k, *t});
-    }
-  }
+  // The chain's crossings of H away from its nodes: exactly two, on two
+  // segments of the chain; the closest seams first.
+  std::vector<ChainCrossing> found = chain_crossings(chain, H, xy());
   if (found.size() != 2) return false;
-  std::sort(found.begin(), found.end(), [](const Crossing& p, const Crossing& q) {
-    return p.s != q.s ? p.s < q.s : p.t < q.t;
-  });
+  sort_along_chain(found);
   if (found[0].s == found[1].s) return false;
   const auto free_b = [&](int v) { return !partner(1 - e, v) && !exterior_.count(v); };
-  // Candidates: a gap node at either end of each crossed chain segment (the
-  // chain's node s + 1 is gap node s), a free node of H at either end of
-  // each crossed segment of H; the closest first.
-  struct Choice {
-    size_t j1, j2;
-    int h1, h2;
-    double cost;
-  };
-  std::vector<Choice> choices;
-  for (int mask = 0; mask < 16; ++mask) {
-    const long j1 = static_cast<long>(found[0].s) - 1 + (mask & 1);
-    const long j2 = static_cast<long>(found[1].s) - 1 + ((mask >> 1) & 1);
-    const int h1 = H[(found[0].k + ((mask >> 2) & 1)) % n];
-    const int h2 = H[(found[1].k + ((mask >> 3) & 1)) % n];
-    if (j1 < 0 || j2 >= static_cast<long>(m) || j1 + 1 >= j2 || h1 == h2) continue;
-    if (!free_b(h1) || !free_b(h2)) continue;
-    const double cost = (xy().at(gap[static_cast<size_t>(j1)]) - xy().at(h1)).norm() +
-                        (xy().at(gap[static_cast<size_t>(j2)]) - xy().at(h2)).norm();
-    choices.push_back({static_cast<size_t>(j1), static_cast<size_t>(j2), h1, h2, cost});
-  }
-  std::stable_sort(choices.begin(), choices.end(),
-                   [](const Choice& p, const Choice& q) { return p.cost < q.cost; });
+  using Choice = SeamChoice;
+  const std::vector<Choice> choices = seam_choices(found[0], found[1], H, gap, 2, free_b, xy());
   const size_t ix = static_cast<size_t>(index_in(H, x));
   const size_t iy = static_cast<size_t>(index_in(H, y));
   // For a choice and the path's nodes p: the piece cut off before the hole
@@ -173,18 +138,7 @@ bool Imprinter::gap_through_own_hole(int e, const Loop& around, const Loop& gap,
   // Project again: the ends to the chosen hole nodes, the middle left as a gap.
   const Choice c = *chosen;
   roll_back(e, fresh, undo);
-  Loop p(m, -1);
-  for (size_t j = 0; j < m; ++j) {
-    if (j == c.j1 || j == c.j2) {
-      const int h = j == c.j1 ? c.h1 : c.h2;
-      link(e, gap[j], h);
-      r_.seams.push_back({gap[j], h});
-      r_.steps.push_back(ImprintStep::Seam);
-      p[j] = h;
-    } else if (j < c.j1 || j > c.j2) {
-      p[j] = project(e, gap[j], around, seamed);
-    }
-  }
+  const Loop p = project_with_seams(e, gap, around, seamed, c);
   const auto s = split(c, p);
   if (!s) {
     // Seamed otherwise this time: the path as it was, and no step.

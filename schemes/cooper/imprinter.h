@@ -5,6 +5,7 @@
 #pragma once
 
 #include "schemes/cooper/imprint_polygons.h"
+#include "schemes/cooper/imprint_seam_choices.h"
 #include "schemes/cooper/imprint_subcaps.h"
 
 #include <map>
@@ -133,6 +134,11 @@ class Imprinter {
   bool gap_through_own_hole(int e, const Loop& around, const Loop& gap, const Loop& path,
                             bool seamed, int x, int y, size_t bi, const Loop& fresh,
                             const Undo& undo);
+  // The gap's images for a seam choice: gap nodes j1 and j2 seamed onto
+  // hole nodes h1 and h2, those before j1 and after j2 projected, those
+  // between left without an image (-1): they stay a gap.
+  Loop project_with_seams(int e, const Loop& gap, const Loop& around, bool seamed,
+                          const SeamChoice& c);
   // The ribs a gap's projection made (from the nodes in `fresh`, unribbed
   // before it), taken back when it split nothing.
   struct Undo {
