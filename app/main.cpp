@@ -13,6 +13,7 @@
 #include "framework/core/log.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/workbench.h"
+#include "framework/io/element_size.h"
 #include "framework/io/journal_reader.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
@@ -112,6 +113,10 @@ int finish_run(const io::Job& job, int dim, const RunLimits& limits) {
   try {
     const pipeline::RunResult result = pipeline::run_job(job, registry, options);
     progress.finish();
+    if (job.mesh && job.mesh->size_divisor && result.size) {
+      std::cout << "size D/" << number_text(*job.mesh->size_divisor) << " = "
+                << number_text(*result.size) << '\n';
+    }
     app::write_run_report(result, std::cout);
     return result.failed() ? kExitQualityFailed : 0;
   } catch (const pipeline::IncompleteMesh& e) {
@@ -144,12 +149,22 @@ io::Decompose decompose_mode(const std::string& name) {
 
 // `cooperage mesh MODEL --size S -o OUT [--elements hex|wedge|mixed]
 // [--report R]`: a journal built on the fly; wedge and mixed apply to every volume.
-int run_mesh(const std::string& model, double size, int dim, const std::string& output,
-             const std::string& report, bool binary, bool no_imprint, io::ElementKind elements,
-             const RunLimits& limits, io::Decompose decompose, int finer_retries,
-             std::optional<double> min_scaled_jacobian) {
-  if (!(size > 0) || !std::isfinite(size))
-    throw MeshingError(ErrorCode::InvalidInput, "--size must be a positive number");
+// --size: a length, or D/N (the model's bounding-box diagonal over N).
+io::ElementSize element_size(const std::string& text) {
+  const std::optional<io::ElementSize> size = io::parse_element_size(text);
+  if (!size) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       "--size must be a positive length or D/N (the model's bounding-box "
+                       "diagonal over N, e.g. D/40), got \"" +
+                           clip(text, 40) + "\"");
+  }
+  return *size;
+}
+
+int run_mesh(const std::string& model, const io::ElementSize& size, int dim,
+             const std::string& output, const std::string& report, bool binary, bool no_imprint,
+             io::ElementKind elements, const RunLimits& limits, io::Decompose decompose,
+             int finer_retries, std::optional<double> min_scaled_jacobian) {
   pipeline::ModelJobOptions options;
   options.decompose = decompose;
   options.finer_retries = finer_retries;
@@ -237,14 +252,17 @@ int main(int argc, char** argv) {
   add_limits(run);
 
   std::string mesh_file, mesh_output;
-  double mesh_size = 0;
+  std::string mesh_size;
   int mesh_dim = 3;
   bool mesh_no_imprint = false;
   bool mesh_binary = false;
   std::string mesh_elements = "hex";
   CLI::App* mesh = app.add_subcommand("mesh", "Mesh a CAD file with automatic schemes, no journal");
   mesh->add_option("MODEL", mesh_file, "A CAD file (.step .stp .iges .igs .brep)")->required();
-  mesh->add_option("--size", mesh_size, "Element size, in the model's length unit")->required();
+  mesh->add_option("--size", mesh_size,
+                   "Element size: a length in the model's unit, or D/N (the bounding-box "
+                   "diagonal over N, e.g. D/40)")
+      ->required();
   mesh->add_option("--dim", mesh_dim, "3: volume mesh (default); 2: surface mesh only")
       ->check(CLI::IsMember({2, 3}));
   mesh->add_option(
@@ -280,13 +298,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(-1.0, 1.0));
 
   std::string plan_file;
-  double plan_size = 0;
+  std::optional<std::string> plan_size;
   bool plan_json = false;
   CLI::App* plan = app.add_subcommand(
       "plan", "Show the scheme chosen for every volume and surface, and why, without meshing");
   plan->add_option("FILE", plan_file, "A journal (.xml) or a CAD file")->required();
-  plan->add_option("--size", plan_size, "Element size (overrides the journal's)")
-      ->check(CLI::PositiveNumber);
+  plan->add_option("--size", plan_size,
+                   "Element size, a length or D/N as for mesh (overrides the journal's)");
   plan->add_flag("--json", plan_json, "Print one JSON object instead of text");
   int plan_dim = 3;
   plan->add_option("--dim", plan_dim,
@@ -353,13 +371,13 @@ int main(int argc, char** argv) {
       if (plan_no_imprint) overrides.imprint_merge = false;
       if (plan_elements) overrides.elements = element_kind(*plan_elements);
       if (plan_decompose) overrides.decompose = decompose_mode(*plan_decompose);
-      return app::run_plan(plan_file,
-                           plan_size > 0 ? std::optional<double>(plan_size) : std::nullopt,
-                           plan_json, plugins, std::cout, plan_dim, overrides);
+      std::optional<io::ElementSize> size;
+      if (plan_size) size = element_size(*plan_size);
+      return app::run_plan(plan_file, size, plan_json, plugins, std::cout, plan_dim, overrides);
     }
     if (*mesh) {
-      return run_mesh(mesh_file, mesh_size, mesh_dim, mesh_output, report_file, mesh_binary,
-                      mesh_no_imprint, element_kind(mesh_elements), limits,
+      return run_mesh(mesh_file, element_size(mesh_size), mesh_dim, mesh_output, report_file,
+                      mesh_binary, mesh_no_imprint, element_kind(mesh_elements), limits,
                       decompose_mode(mesh_decompose), mesh_finer_retries, mesh_min_sj);
     }
   } catch (const MeshingError& e) {

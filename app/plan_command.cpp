@@ -286,7 +286,7 @@ void write_json(const selector::Selection& sel, const decompose::Report& cuts,
 
 }  // namespace
 
-int run_plan(const std::string& file, std::optional<double> size, bool json,
+int run_plan(const std::string& file, std::optional<io::ElementSize> size, bool json,
              const std::vector<std::string>& plugins, std::ostream& out, int dim,
              const pipeline::PlanOverrides& overrides) {
   // The decomposition's registry: the command line's plug-ins take part in

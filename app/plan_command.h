@@ -22,7 +22,7 @@ namespace cooperage::app {
 /// `overrides` are the options of `mesh` that change the plan. Returns
 /// the exit code: 2 when a volume is refused (listed with every scheme's
 /// reason, and named on stderr), else 0.
-int run_plan(const std::string& file, std::optional<double> size, bool json,
+int run_plan(const std::string& file, std::optional<io::ElementSize> size, bool json,
              const std::vector<std::string>& plugins, std::ostream& out, int dim = 3,
              const pipeline::PlanOverrides& overrides = {});
 

@@ -191,6 +191,10 @@ enum class Decompose { Auto, Off };
 
 struct MeshSettings {
   std::optional<double> size;  ///< global element size
+  /// "D/N" (io/element_size.h): the size is the model's bounding-box
+  /// diagonal over this; pipeline::resolve_relative_size turns it into
+  /// `size` once the model is built.
+  std::optional<double> size_divisor;
   int threads = 0;             ///< 0: all cores (capped at the hardware's)
   /// Refuse a mesh estimated above this many elements (default 200 M).
   std::optional<double> max_elements;

@@ -1,6 +1,9 @@
 // The <mesh> section of a journal: global size and per-entity settings.
 #include "framework/io/journal_xml.h"
 
+#include "framework/core/text.h"
+#include "framework/io/element_size.h"
+
 #include <algorithm>
 #include <cctype>
 #include <optional>
@@ -149,7 +152,19 @@ MeshSettings read_mesh(const Element& mesh) {
   mesh.allow_attributes({"size", "threads", "max_elements", "volume_tolerance", "decompose",
                          "finer_retries", "elements"});
   MeshSettings m;
-  m.size = mesh.number("size", NumberKind::Positive);
+  // "D/40": the model's bounding-box diagonal over 40 (element_size.h).
+  const std::optional<std::string> size_text = mesh.text("size");
+  if (size_text && size_text->find('/') != std::string::npos) {
+    const std::optional<ElementSize> size = parse_element_size(*size_text);
+    if (!size || !size->of_diagonal)
+      mesh.fail_at("size",
+                   "attribute \"size\" must be a positive number or D/N (the model's "
+                   "bounding-box diagonal over N), got \"" +
+                       clip(*size_text, 40) + "\"");
+    set_element_size(m, *size);
+  } else {
+    m.size = mesh.number("size", NumberKind::Positive);
+  }
   m.threads = mesh.integer("threads", 0).value_or(0);
   if (const auto n = mesh.integer("max_elements", 1)) m.max_elements = static_cast<double>(*n);
   if (const auto t = mesh.number("volume_tolerance", NumberKind::Positive)) {

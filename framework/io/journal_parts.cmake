@@ -6,4 +6,5 @@ cooperage_framework_part(io_journal
     ${CMAKE_CURRENT_LIST_DIR}/journal_mesh.cpp
     ${CMAKE_CURRENT_LIST_DIR}/journal_groups.cpp
     ${CMAKE_CURRENT_LIST_DIR}/journal_xml.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/element_size.cpp
   PRIVATE_DEPS tinyxml2::tinyxml2)

@@ -5,6 +5,7 @@
 #include "framework/geometry/occ/workbench.h"
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/mesher.h"
+#include "framework/pipeline/relative_size.h"
 
 #include <algorithm>
 #include <chrono>
@@ -102,8 +103,11 @@ DecomposedGeometry build_decomposed_geometry(const io::Job& job, const scheme::R
   if (dim == 3) require_a_volume(out.model, job);
   out.decomposition.origin.clear();
   for (const geom::Volume& v : out.model.volumes()) out.decomposition.origin.push_back(v.id);
-  if (dim != 3 || !job.mesh || job.mesh->decompose == io::Decompose::Off) return out;
-  const io::MeshSettings& settings = *job.mesh;
+  if (!job.mesh) return out;
+  io::MeshSettings settings = *job.mesh;
+  resolve_relative_size(settings, out.model);
+  out.size = settings.size;
+  if (dim != 3 || settings.decompose == io::Decompose::Off) return out;
 
   const scheme::Settings job_settings = scheme::Settings::of(settings);
   const std::vector<decompose::RefusedVolume> refused =

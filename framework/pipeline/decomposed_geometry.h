@@ -16,9 +16,13 @@ struct DecomposedGeometry {
   geom::Model model;
   decompose::Report decomposition;  ///< empty when nothing was cut
   double geometry_seconds = 0.0;    ///< the journal's operations and the first model
+  /// The job's global size with "D/N" resolved against the model built
+  /// (before any cut); the job's own size otherwise.
+  std::optional<double> size;
 };
 
-/// build_geometry(job), then the decomposition when `dim` is 3 and
+/// build_geometry(job), the global size resolved (resolve_relative_size),
+/// then the decomposition when `dim` is 3 and
 /// job.mesh->decompose is Auto. A cut piece is checked with `planner` (its
 /// shared faces' schemes agree, its intervals are feasible).
 /// Entity ids in the journal's settings (and its blocks, side sets and node

@@ -682,11 +682,15 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   }
   auto stage_start = Clock::now();
   RunResult result;
+  io::MeshSettings settings = *job.mesh;  // with "D/N" resolved below
   {
     DecomposedGeometry g =
         build_decomposed_geometry(job, registry, options.planner, options.dim, options.threads);
     result.model = std::move(g.model);
     result.decomposition = std::move(g.decomposition);
+    settings.size = g.size;
+    settings.size_divisor.reset();
+    result.size = g.size;
     check_groups(result.model, job.groups);
     result.stages.push_back({"geometry", g.geometry_seconds});
     if (!result.decomposition.volumes.empty())
@@ -694,7 +698,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   }
   if (options.after_geometry) options.after_geometry();
   MeshOptions opts = options;
-  if (opts.threads == 0) opts.threads = job.mesh->threads;
+  if (opts.threads == 0) opts.threads = settings.threads;
   // The exports are written (staged, not yet renamed) beside the mesher's
   // checks, and renamed below only when the run passes them.
   auto stage_exports = [&](io::ExportBatch& batch, const mesh::MeshDB& db) {
@@ -754,7 +758,7 @@ RunResult run_job(const io::Job& job, const scheme::Registry& registry,
   // the scaled Jacobians the schemes computed (one evaluation per metric).
   opts.quality_checks = job.quality;
   try {
-    result.mesh = mesh_model(result.model, *job.mesh, registry, opts);
+    result.mesh = mesh_model(result.model, settings, registry, opts);
   } catch (IncompleteMesh& e) {
     // The verdicts name volumes after the cuts: say which input volume each was.
     if (!result.decomposition.volumes.empty()) e.set_origin(result.decomposition.origin);

@@ -158,6 +158,7 @@ struct RunResult {
   std::vector<std::string> written;  ///< export files written
   bool exports_skipped = false;      ///< a failing check stopped them
   std::vector<StageTime> stages;     ///< geometry, the mesher's stages, checks, exports
+  std::optional<double> size;        ///< the global size used, "D/N" resolved
 
   /// A quality check or the volume check failed, or (allow_partial) some
   /// volumes were left out: the command exits 1.

@@ -10,14 +10,16 @@
 #include "framework/pipeline/build_geometry.h"
 #include "framework/pipeline/check_settings.h"
 #include "framework/pipeline/decomposed_geometry.h"
+#include "framework/pipeline/relative_size.h"
 
 namespace cooperage::pipeline {
 
 io::Job model_job(const std::string& model, const ModelJobOptions& options) {
-  if (!(options.size > 0) || !std::isfinite(options.size)) {
-    throw MeshingError(ErrorCode::InvalidInput, options.origin +
-                                                    ": the element size must be positive, got " +
-                                                    std::to_string(options.size));
+  if (!(options.size.value > 0) || !std::isfinite(options.size.value)) {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       options.origin + ": the element size must be positive, got " +
+                           std::string(options.size.of_diagonal ? "D/" : "") +
+                           std::to_string(options.size.value));
   }
   io::Job job;
   job.file = model;
@@ -30,7 +32,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   job.geometry.push_back({import, {model, 0, "import"}});
   job.imprint_merge = options.imprint_merge;
   job.mesh = io::MeshSettings{};
-  job.mesh->size = options.size;
+  io::set_element_size(*job.mesh, options.size);
   job.mesh->decompose = options.decompose;
   job.mesh->finer_retries = options.finer_retries;
   job.mesh->elements = options.elements;
@@ -65,7 +67,7 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
   return job;
 }
 
-PlanInput plan_input(const std::string& file, std::optional<double> size,
+PlanInput plan_input(const std::string& file, std::optional<io::ElementSize> size,
                      const scheme::Registry* registry, const Planner& planner,
                      const PlanOverrides& overrides) {
   std::string ext = std::filesystem::path(file).extension().string();
@@ -85,10 +87,12 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
     if (overrides.decompose) in.settings.decompose = *overrides.decompose;
     if (overrides.elements) in.settings.elements = *overrides.elements;
     in.plugins = job.plugins;
+    if (size) io::set_element_size(in.settings, *size);
     if (registry) {
-      if (size) in.settings.size = size;
       job.mesh = in.settings;
       DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
+      in.settings.size = g.size;
+      in.settings.size_divisor.reset();
       in.model = std::move(g.model);
       in.decomposition = std::move(g.decomposition);
     } else {
@@ -96,23 +100,25 @@ PlanInput plan_input(const std::string& file, std::optional<double> size,
     }
   } else {
     ModelJobOptions options;
-    options.size = size.value_or(1.0);
+    options.size = size.value_or(io::ElementSize{1.0, false});
     options.origin = overrides.origin;
     options.imprint_merge = overrides.imprint_merge.value_or(true);
     options.elements = overrides.elements.value_or(io::ElementKind::Hex);
     options.decompose = overrides.decompose.value_or(io::Decompose::Auto);
     io::Job job = model_job(file, options);
-    if (!size) job.mesh->size.reset();
+    if (!size) job.mesh->size.reset();  // a plan without a size skips the interval check
     in.settings = *job.mesh;
     if (registry) {
       DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
+      in.settings.size = g.size;
+      in.settings.size_divisor.reset();
       in.model = std::move(g.model);
       in.decomposition = std::move(g.decomposition);
     } else {
       in.model = load_any(file, options.imprint_merge);
     }
   }
-  if (size) in.settings.size = size;
+  resolve_relative_size(in.settings, in.model);
   check_settings(in.model, in.settings);
   return in;
 }

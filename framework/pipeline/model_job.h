@@ -9,6 +9,7 @@
 
 #include "framework/decompose/decompose.h"
 #include "framework/geometry/model.h"
+#include "framework/io/element_size.h"
 #include "framework/io/job.h"
 #include "framework/pipeline/planner.h"
 #include "framework/scheme/registry.h"
@@ -16,7 +17,7 @@
 namespace cooperage::pipeline {
 
 struct ModelJobOptions {
-  double size = 0.0;                                ///< element size (> 0), model units
+  io::ElementSize size;                             ///< a length (> 0) or D/N
   bool imprint_merge = true;                        ///< fragment touching solids
   io::ElementKind elements = io::ElementKind::Hex;  ///< for every volume
   std::vector<std::string> exports;                 ///< mesh files to write
@@ -69,16 +70,15 @@ struct PlanOverrides {
 };
 
 /// Reads `file`, builds its model, applies `size` and `overrides` (over the
-/// journal's settings) and checks the settings against the model
-/// (check_settings). With a registry and a planner, volumes no volume
-/// scheme applies to are decomposed as `cooperage mesh` and `run` do
-/// (build_decomposed_geometry); a CAD file is planned with
-/// decompose="auto" unless overridden.
+/// journal's settings), resolves a size "D/N" against the model and checks the settings against the
+/// model (check_settings). With a registry and a planner, volumes no volume scheme applies to are
+/// decomposed as `cooperage mesh` and `run` do (build_decomposed_geometry); a CAD file is planned
+/// with decompose="auto" unless overridden.
 /// @throws MeshingError(InvalidInput) for --no-imprint given with a journal
 ///         (it sets that itself); as read_journal(),
 ///         build_geometry(), load_any(), build_decomposed_geometry() and
 ///         check_settings() do.
-PlanInput plan_input(const std::string& file, std::optional<double> size,
+PlanInput plan_input(const std::string& file, std::optional<io::ElementSize> size,
                      const scheme::Registry* registry = nullptr, const Planner& planner = {},
                      const PlanOverrides& overrides = {});
 

@@ -13,4 +13,5 @@ cooperage_framework_part(pipeline SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/finer_retry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesher.cpp
   ${CMAKE_CURRENT_LIST_DIR}/model_job.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/relative_size.cpp
   PRIVATE_DEPS TBB::tbb)

@@ -42,7 +42,8 @@ std::shared_ptr<MeshObject> run_job(const std::function<io::Job()>& make_job, in
   return result;
 }
 
-std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size, int dim,
+std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model,
+                                 const std::variant<double, std::string>& size, int dim,
                                  const std::string& elements, int threads, bool imprint,
                                  int finer_retries, const std::string& decompose,
                                  std::optional<double> min_scaled_jacobian) {
@@ -71,7 +72,7 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model, double size
         "cooperage.mesh(): decompose must be \"auto\" or \"off\", got \"" + decompose + "\"");
   }
   pipeline::ModelJobOptions options;
-  options.size = size;
+  options.size = element_size(size, "cooperage.mesh()");
   options.finer_retries = finer_retries;
   options.decompose = decompose_mode(decompose, "cooperage.mesh()");
   options.imprint_merge = imprint;
@@ -107,7 +108,7 @@ PYBIND11_MODULE(_core, m) {
         R"doc(Meshes a CAD file with automatic schemes, as `cooperage mesh` does.
 
 model: a .step/.stp/.iges/.igs/.brep path; size: element size in the model's
-units; dim: 3 volume mesh, 2 surface mesh only; elements: "hex", "wedge"
+units, or "D/N" for the bounding-box diagonal over N (e.g. "D/40"); dim: 3 volume mesh, 2 surface mesh only; elements: "hex", "wedge"
 (triangle caps swept into wedges) or "mixed"; threads: 0 for all cores (the
 mesh does not depend on it); imprint: merge touching solids so they share
 nodes; finer_retries: a volume its scheme fails on after planning is meshed
@@ -127,7 +128,8 @@ and `exports_skipped`). Raises InputError or MeshingError.)doc");
         py::arg("dim") = 3, py::arg("elements") = py::none(), py::arg("imprint") = py::none(),
         py::arg("decompose") = py::none(),
         R"doc(The scheme the selector picks for every volume and surface, and why, without
-meshing (as `cooperage plan --json`). size overrides the journal's; without
+meshing (as `cooperage plan --json`). size (a length or "D/N", as for mesh())
+overrides the journal's; without
 any size the interval feasibility check is skipped. dim=2 plans the surfaces
 alone, as mesh(..., dim=2) does. elements, imprint and decompose plan a CAD
 file as mesh() with them would mesh it (a journal sets imprint itself;

@@ -1,5 +1,7 @@
 #include "option_values.h"
 
+#include <cmath>
+
 #include "framework/core/error.h"
 
 namespace cooperage::python {
@@ -12,6 +14,23 @@ io::ElementKind element_kind(const std::string& name, const std::string& functio
                                                   ": elements must be \"hex\", \"wedge\" or "
                                                   "\"mixed\", got \"" +
                                                   name + "\"");
+}
+
+io::ElementSize element_size(const std::variant<double, std::string>& size,
+                             const std::string& function) {
+  if (const double* length = std::get_if<double>(&size)) {
+    if (*length > 0 && std::isfinite(*length)) return {*length, false};
+    throw MeshingError(
+        ErrorCode::InvalidInput,
+        function + ": the element size must be positive, got " + std::to_string(*length));
+  }
+  const std::string& text = std::get<std::string>(size);
+  if (const auto parsed = io::parse_element_size(text)) return *parsed;
+  throw MeshingError(ErrorCode::InvalidInput,
+                     function +
+                         ": size must be a positive number or \"D/N\" (the model's "
+                         "bounding-box diagonal over N), got \"" +
+                         text.substr(0, 40) + "\"");
 }
 
 io::Decompose decompose_mode(const std::string& name, const std::string& function) {

@@ -45,7 +45,8 @@ py::dict choice_dict(const selector::Choice& c) {
 
 }  // namespace
 
-py::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim,
+py::list plan_file(const std::filesystem::path& file,
+                   const std::optional<std::variant<double, std::string>>& size_value, int dim,
                    const std::optional<std::string>& elements, std::optional<bool> imprint,
                    const std::optional<std::string>& decompose) {
   pipeline::PlanOverrides overrides;
@@ -54,11 +55,8 @@ py::list plan_file(const std::filesystem::path& file, std::optional<double> size
   if (elements) overrides.elements = element_kind(*elements, overrides.origin);
   if (imprint) overrides.imprint_merge = *imprint;
   if (decompose) overrides.decompose = decompose_mode(*decompose, overrides.origin);
-  if (size && !(*size > 0)) {
-    throw MeshingError(
-        ErrorCode::InvalidInput,
-        "cooperage.plan(): the element size must be positive, got " + std::to_string(*size));
-  }
+  std::optional<io::ElementSize> size;
+  if (size_value) size = element_size(*size_value, overrides.origin);
   if (dim != 2 && dim != 3) {
     throw MeshingError(ErrorCode::InvalidInput,
                        "cooperage.plan(): dim must be 2 or 3, got " + std::to_string(dim));

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "framework/pipeline/scheme_plan.h"
 
@@ -18,7 +19,8 @@ namespace cooperage::python {
 /// None when a volume meshes the surface), reason, pinned, candidates (dicts:
 /// scheme, ok, score, why). `elements`, `imprint` and `decompose`, when
 /// given, as cooperage.mesh() takes them (pipeline::PlanOverrides).
-pybind11::list plan_file(const std::filesystem::path& file, std::optional<double> size, int dim,
+pybind11::list plan_file(const std::filesystem::path& file,
+                         const std::optional<std::variant<double, std::string>>& size, int dim,
                          const std::optional<std::string>& elements = std::nullopt,
                          std::optional<bool> imprint = std::nullopt,
                          const std::optional<std::string>& decompose = std::nullopt);

@@ -67,6 +67,10 @@ def test_bad_arguments_are_input_errors(source_dir, journal):
         cooperage.run(journal('<geometry><brick name="b" size="1 1 1"/></geometry>\n'))
     with pytest.raises(cooperage.InputError, match="size must be positive"):
         cooperage.plan(part, size=-1)
+    with pytest.raises(cooperage.InputError, match='size must be a positive number or "D/N"'):
+        cooperage.mesh(part, size="D/0")
+    with pytest.raises(cooperage.InputError, match='size must be a positive number or "D/N"'):
+        cooperage.plan(part, size="2mm")
     with pytest.raises(TypeError):
         cooperage.mesh(part)  # size is required
 

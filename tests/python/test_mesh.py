@@ -66,6 +66,22 @@ def test_mesh_of_a_cad_file_equals_the_cli_mesh(cli, source_dir, tmp_path):
     assert (mesh.quality()["hexahedron"] > 0).all()
 
 
+def test_size_as_the_diagonal_over_n(cli, source_dir):
+    """size="D/N" is the bounding-box diagonal (from `cooperage info`) over N."""
+    part = os.path.join(source_dir, "examples", "part.step")
+    info = json.loads(cli("info", part, "--json").stdout)
+    lo = numpy.min([v["box_min"] for v in info["volumes"]], axis=0)
+    hi = numpy.max([v["box_max"] for v in info["volumes"]], axis=0)
+    diagonal = float(numpy.linalg.norm(hi - lo))
+    relative = cooperage.mesh(part, "D/20")
+    absolute = cooperage.mesh(part, size=diagonal / 20)
+    assert relative.points.shape == absolute.points.shape
+    assert numpy.allclose(relative.points, absolute.points, rtol=0, atol=1e-9 * diagonal)
+    assert numpy.array_equal(relative.cells["hexahedron"], absolute.cells["hexahedron"])
+    plan = cooperage.plan(part, size="D/20")
+    assert plan[0]["entity"] == "volume 1" and plan[0]["scheme"] != "none"
+
+
 def test_arrays_survive_the_mesh_and_points_are_a_read_only_view(journal):
     mesh = cooperage.run(journal(BRICK))
     points, hexes = mesh.points, mesh.cells["hexahedron"]
