@@ -53,7 +53,11 @@ void write_model_text(const geom::Model& model, const std::string& source, std::
       << " (R = " << inner_loop_count(model) << " inner loops)\n";
   out << "  length unit: " << number_text(model.unit_in_metres()) << " m\n";
   const geom::BoundingBox box = model.box();
-  if (!box.empty()) out << "  box " << point(box.min) << " - " << point(box.max) << "\n";
+  if (!box.empty()) {
+    out << "  box " << point(box.min) << " - " << point(box.max) << ", diagonal D "
+        << number_text(box.diagonal()) << " (--size D/40 = " << number_text(box.diagonal() / 40)
+        << ")\n";
+  }
 
   out << "\nvolumes\n";
   for (const auto& v : model.volumes()) {

@@ -45,6 +45,12 @@ TEST_F(RelativeSizeOption, TheDiagonalOverNIsTheSizeOfTheWholeModel) {
   EXPECT_EQ(plan.out.find("interval feasibility not checked"), std::string::npos) << plan.out;
 }
 
+TEST_F(RelativeSizeOption, InfoGivesTheDiagonal) {
+  const auto r = run_command(kCli + " info " + brick_step());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(", diagonal D 13 (--size D/40 = 0.325)\n"), std::string::npos) << r.out;
+}
+
 TEST_F(RelativeSizeOption, ABadSizeNamesTheFormAndWritesNothing) {
   const std::string step = brick_step();
   for (const char* size : {"D/0", "D/", "3mm", "E/40"}) {
