@@ -63,7 +63,7 @@ struct VolumePlan {
   BarrelTree tree;
   CapRoles roles;
   std::vector<IntervalRow> rows;                 ///< for constrain()
-  std::vector<std::pair<int, int>> along_pairs;  ///< for constrain(): side_along_pairs()
+  std::vector<AlongPair> along_pairs;            ///< for constrain(): side_along_pairs()
   /// Refused: the step that refused (1 lattice, 2 order, 3 slabs, 4 tree,
   /// 5 cap roles, 6 hints); the furthest candidate is reported.
   int stage = 0;

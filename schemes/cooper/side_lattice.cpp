@@ -388,17 +388,39 @@ SideLattice side_lattice(const VolumeFacts& facts, const std::set<int>& caps) {
   return out;
 }
 
-std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
-                                                  const SideLattice& lattice) {
-  std::vector<std::pair<int, int>> out;
+std::vector<AlongPair> side_along_pairs(const VolumeFacts& facts, const SideLattice& lattice) {
+  std::vector<AlongPair> out;
   for (int s : lattice.sides) {
-    std::vector<int> along;
-    for (const auto& loop : facts.face(s)->loops) {
-      for (const UseFact& u : loop) {
-        if (lattice.along.count(u.curve)) along.push_back(u.curve);
+    std::vector<std::pair<size_t, UseFact>> along;  // (loop, use)
+    const auto& loops = facts.face(s)->loops;
+    for (size_t l = 0; l < loops.size(); ++l) {
+      for (const UseFact& u : loops[l]) {
+        if (lattice.along.count(u.curve)) along.emplace_back(l, u);
       }
     }
-    if (along.size() == 2 && along[0] != along[1]) out.emplace_back(along[0], along[1]);
+    if (along.size() != 2 || along[0].second.curve == along[1].second.curve) continue;
+    AlongPair pair{along[0].second.curve, along[1].second.curve, 0};
+    const auto open = [&](int c) {
+      const auto it = facts.curves.find(c);
+      return it != facts.curves.end() && it->second.start != it->second.end;
+    };
+    if (along[0].first == along[1].first && open(pair.a) && open(pair.b))
+      pair.orientation = along[0].second.forward != along[1].second.forward ? 1 : -1;
+    for (int c : {pair.a, pair.b}) {
+      for (int f : facts.faces_of_curve(c)) {
+        const FaceFact* face = facts.face(f);
+        if (f == s || face->loops.size() != 1 || face->angles.size() != face->loops[0].size())
+          continue;
+        const auto& uses = face->loops[0];
+        for (size_t k = 0; k < uses.size(); ++k) {
+          if (uses[k].curve != c) continue;
+          const double before = face->angles[k];
+          const double after = face->angles[(k + 1) % uses.size()];
+          if (std::min(before, after) < kSliverRingCorner) pair.sliver_end = true;
+        }
+      }
+    }
+    out.push_back(pair);
   }
   return out;
 }

@@ -102,8 +102,20 @@ inline constexpr double kReentrantMin = 185.0;
 /// size function graded by a feature near one of them only (a thin strip of
 /// one cap, curve_sizing.h) shears the ribs by elements
 /// (pyocc_face_recognition: 18 mm over a 40 mm barrel at size 12).
-std::vector<std::pair<int, int>> side_along_pairs(const VolumeFacts& facts,
-                                                  const SideLattice& lattice);
+struct AlongPair {
+  int a = 0, b = 0;
+  /// +1: a and b run the same way (the face's loop walks them in opposite
+  /// senses), so fraction s of a faces fraction s of b; -1: s faces 1 - s;
+  /// 0: not known (closed rings, rings on two loops).
+  int orientation = 0;
+  /// A ring ends in a corner under kSliverRingCorner on another face of its
+  /// own (its cap): uniform spacing there lets the first chord cross the
+  /// corner's other curve.
+  bool sliver_end = false;
+};
+/// A corner this sharp [degrees] at a ring's end keeps its grading.
+inline constexpr double kSliverRingCorner = 10.0;
+std::vector<AlongPair> side_along_pairs(const VolumeFacts& facts, const SideLattice& lattice);
 
 /// Two side faces meeting along the sweep within this angle [degrees] of
 /// folding flat (dihedral below it, or above 360 minus it: faces tangent at

@@ -87,5 +87,60 @@ TEST(CooperSideCurvesAlong, StripOverOverhangMeshesAtEverySize) {
   }
 }
 
+// Campaign seed 20 case 85: a lug (radius 4.92) on a block's side, 0.04
+// proud of the block's next side. Its bottom face meets that side at a
+// 7.3-degree corner, so its arc is graded from there; the lug's top arc is
+// not (the top face is the block's), and the pair was made uniform. The
+// bottom arc's first chord then crossed the face's own edge ("pave: the
+// boundary is not a valid region ... touches or crosses itself") at every
+// size. Both arcs now take the bottom's grading, facing node for node.
+TEST(CooperSideCurvesAlong, ARingGradedToASliverCornerLendsItsPartnerItsProfile) {
+  occ::Workbench wb;
+  wb.brick("block", {0, 0, 0}, {62.99, 25.52, 32.12});
+  wb.cylinder("lug", {62.99, 20.64, 10.03}, {0, 0, 1}, 4.92, 22.09);
+  wb.fuse("part", {"block", "lug"});
+  const geom::Model model = wb.build_model();
+  ASSERT_EQ(model.volumes().size(), 1u);
+  const double exact = model.volumes().front().volume;
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  for (double size : {8.535, 6.0, 4.0, 3.0}) {
+    io::MeshSettings settings;
+    settings.size = size;
+    settings.decompose = io::Decompose::Off;
+    settings.finer_retries = 0;
+    pipeline::MeshOptions options = selector::mesh_options();
+    options.threads = 1;
+    pipeline::MeshResult res;
+    try {
+      res = pipeline::mesh_model(model, settings, registry, options);
+    } catch (const MeshingError& e) {
+      ADD_FAILURE() << "size " << size << ": " << e.what();
+      continue;
+    }
+    const testing::HexMeshSummary s = testing::check_hex_mesh(model, res.mesh);
+    EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;
+    EXPECT_GT(s.min_sj, 0.0) << size;
+    // The nodes on the lug's round face at its bottom and top, by angle.
+    auto ring = [&](double z0) {
+      std::vector<double> angles;
+      for (size_t i = 0; i < res.mesh.node_count(); ++i) {
+        const geom::Vec3& p = res.mesh.node(static_cast<int>(i));
+        const double r = std::hypot(p.x() - 62.99, p.y() - 20.64);
+        if (std::abs(p.z() - z0) < 1e-6 && std::abs(r - 4.92) < 1e-6 && p.x() > 62.99 + 1e-6)
+          angles.push_back(std::atan2(p.y() - 20.64, p.x() - 62.99));
+      }
+      std::sort(angles.begin(), angles.end());
+      return angles;
+    };
+    const std::vector<double> bottom = ring(10.03), top = ring(32.12);
+    ASSERT_EQ(bottom.size(), top.size()) << size;
+    ASSERT_GE(bottom.size(), 2u) << size;
+    for (size_t k = 0; k < top.size(); ++k) EXPECT_NEAR(top[k], bottom[k], 1e-6) << size;
+    std::printf("[cooper sides] lug 0.04 proud, size %g: %zu hexes, min SJ %.4f\n", size, s.hexes,
+                s.min_sj);
+  }
+}
+
 }  // namespace
 }  // namespace cooperage::cooper
