@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
 
 #include "framework/core/error.h"
 #include "framework/mesh/loop_nodes.h"
 #include "schemes/cooper/column_spacing.h"
 #include "schemes/cooper/level_spacing.h"
+#include "schemes/cooper/ring_spacing.h"
 #include "schemes/cooper/sweep_volume.h"
 #include "schemes/cooper/tangent_grading.h"
 
@@ -66,131 +65,6 @@ scheme::Applicability CooperScheme::applicable(const scheme::VolumeView& view) c
 
 namespace {
 
-// A size function's size at arc-length fraction s (linear between samples).
-double size_at(const mesh::SizeFunction& f, double s) {
-  size_t k = 1;
-  while (k + 1 < f.at.size() && f.at[k] < s) ++k;
-  const double w = (s - f.at[k - 1]) / std::max(1e-12, f.at[k] - f.at[k - 1]);
-  return f.size[k - 1] + std::clamp(w, 0.0, 1.0) * (f.size[k] - f.size[k - 1]);
-}
-
-// A size function's sizes relative to their mean at arc-length fraction s
-// (1 without one: uniform).
-double relative_size(const mesh::SizeFunction* f, double s) {
-  if (!f || f->empty()) return 1.0;
-  double mean = 0;
-  for (size_t k = 1; k < f->at.size(); ++k)
-    mean += 0.5 * (f->size[k] + f->size[k - 1]) * (f->at[k] - f->at[k - 1]);
-  return mean > 0 ? size_at(*f, s) / mean : 1.0;
-}
-
-// The finer of two profiles, sampled at kProfileSamples + 1
-// fractions: both rings spaced by it keep node k facing node k and are as
-// fine as either asks where it asks (a ring graded to a sliver corner on
-// one cap only: campaign seed 20 case 85, a lug 0.04 proud of its block).
-constexpr int kProfileSamples = 48;
-
-// Sizes over their largest (1 without a function: uniform), so that a
-// uniform ring leaves a graded one's profile as it is.
-mesh::SizeFunction profile_of(const mesh::SizeFunction* f, bool reversed) {
-  mesh::SizeFunction out;
-  double largest = 0;
-  if (f && !f->empty()) largest = *std::max_element(f->size.begin(), f->size.end());
-  for (int i = 0; i <= kProfileSamples; ++i) {
-    const double s = static_cast<double>(i) / kProfileSamples;
-    out.at.push_back(s);
-    out.size.push_back(largest > 0 ? size_at(*f, reversed ? 1.0 - s : s) / largest : 1.0);
-  }
-  return out;
-}
-
-// The two rings of a side are spaced alike (side_along_pairs). Profiles
-// within 10 % of each other (either way round) are kept. Otherwise both
-// become uniform, unless one ends in a sliver corner of its cap
-// (AlongPair::sliver_end): then every ring linked to it through such sides
-// takes the finer of their profiles, each facing its own way. A link of unknown orientation (closed
-// rings), a chain whose orientations disagree or one that meets a uniform pair makes its rings
-// uniform too.
-void space_alike(const std::vector<AlongPair>& pairs, intervals::IntervalProblem& problem) {
-  const auto& sizes = problem.size_functions();
-  auto of = [&](int c) -> const mesh::SizeFunction* {
-    const auto it = sizes.find(c);
-    return it == sizes.end() ? nullptr : &it->second;
-  };
-  // Rings linked by unlike pairs, each with its orientation to the first.
-  std::map<int, std::vector<std::pair<int, int>>> links;
-  std::set<int> uniform;
-  for (const AlongPair& p : pairs) {
-    const mesh::SizeFunction* fa = of(p.a);
-    const mesh::SizeFunction* fb = of(p.b);
-    if (!fa && !fb) continue;
-    double same = 0, reversed = 0;
-    for (int i = 0; i <= 20; ++i) {
-      const double s = i / 20.0;
-      same = std::max(same, std::abs(relative_size(fa, s) - relative_size(fb, s)));
-      reversed = std::max(reversed, std::abs(relative_size(fa, s) - relative_size(fb, 1 - s)));
-    }
-    if (std::min(same, reversed) <= 0.1) continue;
-    if (!p.sliver_end) {  // dropped at once: the next pairs compare with uniform
-      uniform.insert(p.a);
-      uniform.insert(p.b);
-      problem.drop_size_function(p.a);
-      problem.drop_size_function(p.b);
-      continue;
-    }
-    links[p.a].emplace_back(p.b, p.orientation);
-    links[p.b].emplace_back(p.a, p.orientation);
-  }
-  std::set<int> done;
-  for (const auto& entry : links) {
-    if (done.count(entry.first)) continue;
-    // Walk the component; orientation[c] = +1 / -1 relative to its first ring.
-    std::map<int, int> orientation{{entry.first, 1}};
-    std::vector<int> stack{entry.first};
-    bool known = true;
-    while (!stack.empty()) {
-      const int c = stack.back();
-      stack.pop_back();
-      for (const auto& [d, o] : links.at(c)) {
-        if (o == 0) known = false;
-        const int od = orientation.at(c) * (o == 0 ? 1 : o);
-        const auto [it, fresh] = orientation.emplace(d, od);
-        if (fresh) {
-          stack.push_back(d);
-        } else if (it->second != od) {
-          known = false;
-        }
-      }
-    }
-    for (const auto& ring : orientation) {
-      done.insert(ring.first);
-      if (uniform.count(ring.first)) known = false;
-    }
-    if (!known) {
-      for (const auto& ring : orientation) uniform.insert(ring.first);
-      continue;
-    }
-    mesh::SizeFunction finest;
-    for (const auto& [c, o] : orientation) {
-      const mesh::SizeFunction p = profile_of(of(c), o < 0);
-      if (finest.empty()) {
-        finest = p;
-      } else {
-        for (size_t i = 0; i < p.size.size(); ++i)
-          finest.size[i] = std::min(finest.size[i], p.size[i]);
-      }
-    }
-    for (const auto& [c, o] : orientation) {
-      mesh::SizeFunction mine = finest;
-      if (o < 0) {
-        std::reverse(mine.size.begin(), mine.size.end());
-      }
-      problem.set_size_function(c, std::move(mine));
-    }
-  }
-  for (int c : uniform) problem.drop_size_function(c);
-}
-
 // A sliver cap the sweep meshes itself: a face of one loop of fewer than 4
 // curves, thinner (twice its area over its perimeter) than 5 % of its
 // perimeter -- a lens between an arc and a chord under a boss overhanging
@@ -225,7 +99,7 @@ void CooperScheme::constrain(const scheme::VolumeView& view,
   if (!p->plan.ok) return;
   add_rows(p->plan.rows, problem);
   fewest_sliver_cap_intervals(view.model, p->plan, problem);
-  space_alike(p->plan.along_pairs, problem);
+  space_alike_rings(p->plan.along_pairs, problem);
   grade_tangent_ribs(p->plan.facts, p->plan.lattice, problem);
 }
 
