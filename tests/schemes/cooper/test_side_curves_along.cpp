@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 namespace cooperage::cooper {
@@ -50,6 +51,22 @@ std::vector<double> wall_nodes(const mesh::MeshDB& db, double z0) {
   return x;
 }
 
+// The model meshed with the built-in schemes on one thread; a failure is
+// a test failure naming the size.
+std::optional<pipeline::MeshResult> mesh_at(const geom::Model& model,
+                                            const io::MeshSettings& settings) {
+  scheme::Registry registry;
+  register_builtin_schemes(registry);
+  pipeline::MeshOptions options = selector::mesh_options();
+  options.threads = 1;
+  try {
+    return pipeline::mesh_model(model, settings, registry, options);
+  } catch (const MeshingError& e) {
+    ADD_FAILURE() << "size " << *settings.size << ": " << e.what();
+    return std::nullopt;
+  }
+}
+
 // On main these failed from size 8 up ("subcap imprinting failed", or "hex
 // N of layer 4 is inverted"); every size meshes now, the wall's nodes lie
 // straight above each other, and the hexes fill the volume.
@@ -58,20 +75,12 @@ TEST(CooperSideCurvesAlong, StripOverOverhangMeshesAtEverySize) {
   ASSERT_EQ(model.volumes().size(), 2u);
   const double r = 5;
   const double exact = 153.0 * 5 * 225 + (74.551 * 80 - (r * r - M_PI * r * r / 4)) * 40;
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
   for (double size : {7.0, 8.0, 9.0, 10.0, 12.0, 15.0}) {
     io::MeshSettings settings;
     settings.size = size;
-    pipeline::MeshOptions options = selector::mesh_options();
-    options.threads = 1;
-    pipeline::MeshResult res;
-    try {
-      res = pipeline::mesh_model(model, settings, registry, options);
-    } catch (const MeshingError& e) {
-      ADD_FAILURE() << "size " << size << ": " << e.what();
-      continue;
-    }
+    const std::optional<pipeline::MeshResult> meshed = mesh_at(model, settings);
+    if (!meshed) continue;
+    const pipeline::MeshResult& res = *meshed;
     EXPECT_EQ(res.plan.volumes.at(2).scheme, "cooper") << size;
     const testing::HexMeshSummary s = testing::check_hex_mesh(model, res.mesh);
     EXPECT_NEAR(s.volume, exact, 0.005 * exact) << size;
@@ -102,22 +111,14 @@ TEST(CooperSideCurvesAlong, ARingGradedToASliverCornerLendsItsPartnerItsProfile)
   const geom::Model model = wb.build_model();
   ASSERT_EQ(model.volumes().size(), 1u);
   const double exact = model.volumes().front().volume;
-  scheme::Registry registry;
-  register_builtin_schemes(registry);
   for (double size : {8.535, 6.0, 4.0, 3.0}) {
     io::MeshSettings settings;
     settings.size = size;
     settings.decompose = io::Decompose::Off;
     settings.finer_retries = 0;
-    pipeline::MeshOptions options = selector::mesh_options();
-    options.threads = 1;
-    pipeline::MeshResult res;
-    try {
-      res = pipeline::mesh_model(model, settings, registry, options);
-    } catch (const MeshingError& e) {
-      ADD_FAILURE() << "size " << size << ": " << e.what();
-      continue;
-    }
+    const std::optional<pipeline::MeshResult> meshed = mesh_at(model, settings);
+    if (!meshed) continue;
+    const pipeline::MeshResult& res = *meshed;
     const testing::HexMeshSummary s = testing::check_hex_mesh(model, res.mesh);
     EXPECT_NEAR(s.volume, exact, 0.01 * exact) << size;
     EXPECT_GT(s.min_sj, 0.0) << size;
