@@ -120,6 +120,15 @@ std::map<int, CurveSizing> curve_sizing(const geom::Model& model,
       }
     }
   }
+  // Sharp corners: the end's sample takes the bound; the grading below
+  // spreads it along the curve and to the vertex's other curves.
+  if (options.sharp_corners) {
+    for (const EndSize& e : sharp_corner_sizes(model, size_of, options.corners)) {
+      Sampled& sc = of(e.curve);
+      double& h = e.at_start ? sc.h.front() : sc.h.back();
+      h = std::min(h, e.size);
+    }
+  }
   // Small neighbours and grading: a vertex takes the smallest size of the
   // curve ends there (a short curve's whole length at most), and sizes grow
   // by at most `growth` per unit length; twice, so a vertex made smaller by

@@ -13,6 +13,10 @@
 //    there (a short curve gets one interval of its length), and along a
 //    curve the size grows from a vertex or a gap by at most `growth` per
 //    unit length, so intervals grade from a small feature up to the size.
+//  * sharp corners: where the curves leaving a corner of a few degrees
+//    bend so that their first chords would close it, both start with
+//    intervals short enough to keep three quarters of it
+//    (sharp_corner_sizing.h);
 //  * faceting: the curves around round faces get more intervals where the
 //    volume (or area) their facets cut off would exceed a small fraction of
 //    the volume's (faceting_budget.h).
@@ -23,6 +27,7 @@
 
 #include "framework/geometry/model.h"
 #include "framework/intervals/faceting_budget.h"
+#include "framework/intervals/sharp_corner_sizing.h"
 #include "framework/mesh/curve_spacing.h"
 
 #include <functional>
@@ -37,6 +42,8 @@ struct SizingOptions {
   double growth = 0.5;                  ///< d(size)/ds away from a small feature
   int samples = 24;                     ///< sample intervals per curve
   FacetingOptions faceting;             ///< volume kept around round faces
+  bool sharp_corners = true;            ///< short first intervals at sharp corners
+  SharpCornerOptions corners;           ///< (sharp_corner_sizing.h)
 };
 
 struct CurveSizing {

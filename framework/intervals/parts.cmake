@@ -5,6 +5,7 @@ cooperage_framework_part(intervals SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/separable_optimum.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solve.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curve_sizing.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/sharp_corner_sizing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/faceting_budget.cpp
   PRIVATE_DEPS ${CMAKE_DL_LIBS})
 
