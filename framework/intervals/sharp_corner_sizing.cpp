@@ -11,29 +11,35 @@ namespace {
 using geom::Vec3;
 
 /// A curve seen from one of its ends: the unit tangent leaving the vertex
-/// and the curvature vector there (towards the centre, 1 / radius long),
-/// by the tangent's turn over a short arc.
+/// and, once asked for (`curved`, an arc-length lookup: only at sharp
+/// corners), the curvature vector there (towards the centre, 1 / radius
+/// long) by the tangent's turn over a short arc.
 struct End {
+  const geom::Curve* curve = nullptr;
+  bool at_start = true;
   Vec3 tangent = Vec3::Zero();
   Vec3 curvature = Vec3::Zero();
   bool valid = false;
-};
 
-End end_of(const geom::Curve& curve, bool at_start) {
-  End out;
-  if (!curve.geometry || !(curve.length > 0)) return out;
-  const auto [t0, t1] = curve.geometry->range();
-  const double sign = at_start ? 1.0 : -1.0;
-  const Vec3 d0 = sign * curve.geometry->tangent(at_start ? t0 : t1);
-  const double eps = 1e-3 * curve.length;
-  const double s = at_start ? eps : curve.length - eps;
-  const Vec3 d1 = sign * curve.geometry->tangent(curve.geometry->parameter_at_length(s));
-  if (!(d0.norm() > 0) || !(d1.norm() > 0)) return out;
-  out.tangent = d0.normalized();
-  out.curvature = (d1.normalized() - out.tangent) / eps;
-  out.valid = true;
-  return out;
-}
+  End(const geom::Curve& c, bool start) : curve(&c), at_start(start) {
+    if (!c.geometry || !(c.length > 0)) return;
+    const auto [t0, t1] = c.geometry->range();
+    const Vec3 d0 = (at_start ? 1.0 : -1.0) * c.geometry->tangent(at_start ? t0 : t1);
+    if (!(d0.norm() > 0)) return;
+    tangent = d0.normalized();
+    valid = true;
+  }
+
+  bool curved() {
+    const double eps = 1e-3 * curve->length;
+    const double s = at_start ? eps : curve->length - eps;
+    const Vec3 d1 =
+        (at_start ? 1.0 : -1.0) * curve->geometry->tangent(curve->geometry->parameter_at_length(s));
+    if (!(d1.norm() > 0)) return false;
+    curvature = (d1.normalized() - tangent) / eps;
+    return true;
+  }
+};
 
 /// How fast `mine`'s first chord closes the corner towards `other`: its
 /// chord of length h leaves at h / 2 times the curvature off the tangent,
@@ -64,12 +70,12 @@ std::vector<EndSize> sharp_corner_sizes(const geom::Model& model,
         const bool on_at_start = on.sense == geom::Sense::Forward;
         const geom::Curve& a = model.curve(in.curve);
         const geom::Curve& b = model.curve(on.curve);
-        const End ea = end_of(a, in_at_start);
-        const End eb = end_of(b, on_at_start);
+        End ea(a, in_at_start), eb(b, on_at_start);
         if (!ea.valid || !eb.valid) continue;
         const double angle =
             std::atan2(ea.tangent.cross(eb.tangent).norm(), ea.tangent.dot(eb.tangent));
         if (!(angle <= max_angle) || !(angle >= min_angle)) continue;
+        if (!ea.curved() || !eb.curved()) continue;
         // Both first intervals end up alike (the vertex's size grades both
         // curves), so their turns add: an arc opening the corner makes up
         // for one closing it (a pocket's arc and a hole's bending the same
