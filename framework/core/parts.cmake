@@ -3,6 +3,7 @@ cooperage_framework_part(core SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/log.cpp
   ${CMAKE_CURRENT_LIST_DIR}/text.cpp
   ${CMAKE_CURRENT_LIST_DIR}/isolate.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/readable_file.cpp
   ${CMAKE_CURRENT_LIST_DIR}/lazy_module.cpp)
 # The framework's modules (libcooperage_*.so: occ/parts.cmake,
 # intervals/parts.cmake) are built beside libcooperage_framework, where the

@@ -12,6 +12,7 @@
 // format, which round-trips exactly, with the measures it took of its faces
 // and solids on the way; the parent never runs the readers.
 #include "framework/core/isolate.h"
+#include "framework/core/readable_file.h"
 #include "framework/core/text.h"
 #include "framework/geometry/occ/detail.h"
 #include "framework/geometry/occ/exchange.h"
@@ -262,9 +263,7 @@ IsolationLimits limits_for(const std::string& path) {
 void Workbench::import_file(const std::string& name, const std::string& path, bool heal) {
   silence_kernel_output();
   impl_->check_new_name(name);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || !std::ifstream(path).good())
-    throw MeshingError(ErrorCode::FileNotFound, path + ": no such file");
+  require_readable_file(path);
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });

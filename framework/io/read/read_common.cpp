@@ -1,8 +1,8 @@
 #include "framework/io/read/read_common.h"
 
 #include "framework/core/error.h"
+#include "framework/core/readable_file.h"
 
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,12 +12,7 @@ void parse_error(const std::string& path, const std::string& reason) {
   throw MeshingError(ErrorCode::ParseError, path + ": " + reason);
 }
 
-void require_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw MeshingError(ErrorCode::FileNotFound, path + ": no such file");
-  }
-}
+void require_file(const std::string& path) { require_readable_file(path); }
 
 std::string read_text(const std::string& path) {
   require_file(path);
