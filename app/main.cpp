@@ -315,6 +315,11 @@ int main(int argc, char** argv) {
   bool plan_no_imprint = false;
   plan->add_flag("--no-imprint", plan_no_imprint,
                  "Keep touching solids separate, as `mesh --no-imprint` (a CAD file)");
+  std::optional<double> plan_max_elements;
+  plan->add_option("--max-elements", plan_max_elements,
+                   "Refuse a size whose mesh is estimated above this many elements, as `mesh` "
+                   "does (default 2e8, at most 1e9)")
+      ->check(CLI::Range(1.0, 1e9));
   std::optional<std::string> plan_elements, plan_decompose;
   plan->add_option("--elements", plan_elements,
                    "hex (default), wedge or mixed, as `mesh --elements`; overrides a journal's "
@@ -371,6 +376,7 @@ int main(int argc, char** argv) {
       if (plan_no_imprint) overrides.imprint_merge = false;
       if (plan_elements) overrides.elements = element_kind(*plan_elements);
       if (plan_decompose) overrides.decompose = decompose_mode(*plan_decompose);
+      overrides.max_elements = plan_max_elements;
       std::optional<io::ElementSize> size;
       if (plan_size) size = element_size(*plan_size);
       return app::run_plan(plan_file, size, plan_json, plugins, std::cout, plan_dim, overrides);

@@ -5,6 +5,7 @@
 #include "framework/core/text.h"
 #include "framework/decompose/report_text.h"
 #include "framework/pipeline/check_settings.h"
+#include "framework/pipeline/mesh_size.h"
 #include "framework/pipeline/model_job.h"
 #include "schemes/builtin_schemes.h"
 #include "schemes/cooper/cooper_scheme.h"
@@ -308,6 +309,7 @@ int run_plan(const std::string& file, std::optional<io::ElementSize> size, bool 
   const geom::Model& model = input.model;
   const io::MeshSettings& settings = input.settings;
   pipeline::check_elements_for_dim(settings, dim);
+  pipeline::check_planned_size(model, settings, dim);  // as `mesh` refuses before planning
   scheme::Registry registry;
   register_schemes(registry, run_plugins(plugins, input.plugins));
   const scheme::Settings job = scheme::Settings::of(settings);

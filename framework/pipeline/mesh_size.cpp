@@ -107,4 +107,11 @@ void check_mesh_size(const MeshSizeEstimate& estimate, double limit) {
                          "fewer intervals");
 }
 
+void check_planned_size(const geom::Model& model, const io::MeshSettings& settings, int dim) {
+  if (!settings.size) return;
+  const double limit =
+      std::min(settings.max_elements.value_or(kDefaultMaxElements), kMaxElementsCeiling);
+  check_mesh_size(estimate_mesh_size(model, interval_goals(model, settings), dim), limit);
+}
+
 }  // namespace cooperage::pipeline

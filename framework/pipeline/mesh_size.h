@@ -45,4 +45,10 @@ MeshSizeEstimate estimate_mesh_size(const geom::Model& model,
 /// max_elements>): use a larger element size or fewer intervals".
 void check_mesh_size(const MeshSizeEstimate& estimate, double limit);
 
+/// The same check from the settings alone, for a plan (`cooperage plan`,
+/// cooperage.plan()): the limit is <mesh max_elements> or the default, and
+/// settings without a size are not checked. A size in the wrong unit made
+/// a plan run for seconds and show what `mesh` refuses at once.
+void check_planned_size(const geom::Model& model, const io::MeshSettings& settings, int dim);
+
 }  // namespace cooperage::pipeline

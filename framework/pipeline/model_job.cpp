@@ -86,6 +86,7 @@ PlanInput plan_input(const std::string& file, std::optional<io::ElementSize> siz
     if (job.mesh) in.settings = *job.mesh;
     if (overrides.decompose) in.settings.decompose = *overrides.decompose;
     if (overrides.elements) in.settings.elements = *overrides.elements;
+    if (overrides.max_elements) in.settings.max_elements = *overrides.max_elements;
     in.plugins = job.plugins;
     if (size) io::set_element_size(in.settings, *size);
     if (registry) {
@@ -108,6 +109,7 @@ PlanInput plan_input(const std::string& file, std::optional<io::ElementSize> siz
     io::Job job = model_job(file, options);
     if (!size) job.mesh->size.reset();  // a plan without a size skips the interval check
     in.settings = *job.mesh;
+    if (overrides.max_elements) in.settings.max_elements = *overrides.max_elements;
     if (registry) {
       DecomposedGeometry g = build_decomposed_geometry(job, *registry, planner);
       in.settings.size = g.size;

@@ -65,6 +65,7 @@ struct PlanOverrides {
   std::optional<bool> imprint_merge;        ///< --no-imprint: CAD files only
   std::optional<io::ElementKind> elements;  ///< --elements: over <mesh elements> too
   std::optional<io::Decompose> decompose;   ///< --decompose: over <mesh decompose> too
+  std::optional<double> max_elements;       ///< --max-elements: over <mesh max_elements> too
   std::string origin = "command line";      ///< for errors, with the option's name:
   std::string imprint_option = "--no-imprint";
 };

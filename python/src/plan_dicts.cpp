@@ -8,6 +8,7 @@
 #include "option_values.h"
 #include "framework/scheme/scheme.h"
 #include "schemes/builtin_schemes.h"
+#include "framework/pipeline/mesh_size.h"
 #include "selector/select_schemes.h"
 
 namespace py = pybind11;
@@ -79,6 +80,7 @@ py::list plan_file(const std::filesystem::path& file,
       input = pipeline::plan_input(file.string(), size, nullptr, {}, overrides);
     }
     pipeline::check_elements_for_dim(input.settings, dim);
+    pipeline::check_planned_size(input.model, input.settings, dim);
     scheme::Registry registry;
     register_schemes(registry, input.plugins);
     selector::SelectOptions options;

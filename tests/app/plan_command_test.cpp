@@ -152,5 +152,28 @@ TEST_F(PlanCommand, TakesTheOptionsOfMeshThatChangeThePlan) {
       << journal_apart.err;
 }
 
+// `plan` refuses the sizes `mesh` refuses before planning, with the same
+// message, and takes the same --max-elements: a size in the wrong unit
+// (1e-7 on a 60-long part) had `plan` run for 10 s and show a plan.
+TEST_F(PlanCommand, RefusesTheSizesMeshRefuses) {
+  occ::Workbench bench;
+  bench.brick("b", {0, 0, 0}, {2, 3, 4});
+  const std::string brick = path("brick.step");
+  bench.write(brick);
+  // 0.5: 192 hexes and 208 quads; 0.1: 24,000 hexes and 5,200 quads.
+  for (const char* size : {"0.5", "0.1"}) {
+    const std::string args = brick + " --size " + size + " --max-elements 1e4";
+    const auto plan = run_command(kCli + " plan " + args);
+    const auto mesh = run_command(kCli + " mesh " + args + " -q -o " + path("b.vtu"));
+    EXPECT_EQ(plan.exit_code, mesh.exit_code) << size << ": " << plan.err << mesh.err;
+    EXPECT_EQ(plan.exit_code, std::string(size) == "0.5" ? 0 : 2) << size << ": " << plan.err;
+  }
+  const auto tiny = run_command(kCli + " plan " + brick + " --size 1e-7");
+  EXPECT_EQ(tiny.exit_code, 2);
+  EXPECT_EQ(tiny.out, "");
+  EXPECT_NE(tiny.err.find("the mesh would have about 2.4e+22 elements"), std::string::npos)
+      << tiny.err;
+}
+
 }  // namespace
 }  // namespace cooperage

@@ -188,6 +188,16 @@ def test_plan_dim_two_plans_the_surfaces_as_plan_dim_two(cli, source_dir):
         cooperage.plan(part, size=2, dim=1)
 
 
+def test_plan_refuses_the_sizes_mesh_refuses(cli, source_dir):
+    # A size in the wrong unit: refused before planning, as mesh() refuses it.
+    part = os.path.join(source_dir, "examples", "part.step")
+    with pytest.raises(cooperage.InputError) as e:
+        cooperage.plan(part, size=1e-7)
+    assert "the mesh would have about" in str(e.value)
+    refused = cli("plan", part, "--size", 1e-7)
+    assert refused.returncode == 2 and str(e.value) in refused.stderr
+
+
 def test_plan_matches_plan_json(journal, cli, source_dir):
     part = os.path.join(source_dir, "examples", "part.step")
     # fig3a_auto needs a cut: plan() decomposes as `cooperage plan` does.
