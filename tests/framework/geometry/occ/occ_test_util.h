@@ -12,7 +12,9 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -95,6 +97,14 @@ inline std::string expect_error(ErrorCode code, const std::function<void()>& fn)
   }
   ADD_FAILURE() << "no exception thrown";
   return {};
+}
+
+/// The whole file at `path`, bytes as they are.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline bool near_rel(double a, double b, double rel, double abs_tol = 1e-12) {

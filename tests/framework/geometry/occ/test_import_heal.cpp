@@ -14,13 +14,6 @@
 namespace cooperage::occ::test {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // The lines of a BREP text file.
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;
