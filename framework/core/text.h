@@ -29,4 +29,8 @@ std::string point_text(double x, double y, double z);
 /// (the file name) and loses its beginning: "…/deep/dir/part.step".
 std::string clip_path(std::string_view path, std::size_t limit = kEchoLimit);
 
+/// A file's extension in lower case, with its dot (".step" for
+/// "Part.STEP"); "" without one. File kinds are told apart by it.
+std::string lower_extension(const std::string& path);
+
 }  // namespace cooperage

@@ -14,12 +14,6 @@
 namespace cooperage::pipeline {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 // Applies one operation; the caller adds the journal location to errors.
 void apply(occ::Workbench& bench, const io::GeometryOp& op, const std::string& base_dir) {
   std::visit(

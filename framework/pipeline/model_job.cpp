@@ -1,6 +1,5 @@
 #include "framework/pipeline/model_job.h"
 
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -20,6 +19,11 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
                        options.origin + ": the element size must be positive, got " +
                            std::string(options.size.of_diagonal ? "D/" : "") +
                            std::to_string(options.size.value));
+  }
+  if (lower_extension(model) == ".xml") {
+    throw MeshingError(ErrorCode::InvalidInput,
+                       clip_path(model) + ": a journal, not a CAD file: `cooperage run " +
+                           clip_path(model) + "` runs it (its <mesh> gives the size)");
   }
   io::Job job;
   job.file = model;
@@ -70,10 +74,8 @@ io::Job model_job(const std::string& model, const ModelJobOptions& options) {
 PlanInput plan_input(const std::string& file, std::optional<io::ElementSize> size,
                      const scheme::Registry* registry, const Planner& planner,
                      const PlanOverrides& overrides) {
-  std::string ext = std::filesystem::path(file).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   PlanInput in;
-  if (ext == ".xml") {
+  if (lower_extension(file) == ".xml") {
     // A journal says how its solids are merged (<imprint_merge>): its
     // geometry operations may depend on it.
     if (overrides.imprint_merge) {

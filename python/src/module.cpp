@@ -4,11 +4,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <cctype>
 #include <filesystem>
 #include <functional>
 
 #include "errors.h"
+#include "framework/core/text.h"
 #include "framework/core/error.h"
 #include "framework/geometry/occ/workbench.h"
 #include "framework/io/journal_reader.h"
@@ -52,9 +52,7 @@ std::shared_ptr<MeshObject> mesh(const std::filesystem::path& model,
         ErrorCode::InvalidInput,
         "cooperage.mesh(): dim must be 3 (volumes) or 2 (surfaces), got " + std::to_string(dim));
   }
-  std::string ext = model.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".xml") {
+  if (lower_extension(model.string()) == ".xml") {
     throw MeshingError(ErrorCode::InvalidInput,
                        model.string() +
                            ": cooperage.mesh() takes a CAD file (.step .stp .iges "

@@ -351,5 +351,20 @@ TEST_F(RunCommand, MeshCommandRejectsANonPositiveSize) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
+// `mesh` takes a CAD file; given a journal it says how to run one (it had
+// said "unknown CAD file extension '.xml'"), and a folder is named as one.
+TEST_F(RunCommand, MeshCommandPointsAJournalToRun) {
+  fs::copy_file(kSource + "/examples/brick.xml", path("brick.xml"));
+  const auto r = run_command(kCli + " mesh " + path("brick.xml") + " --size 1 -o " + path("b.vtu"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("a journal, not a CAD file: `cooperage run "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("b.vtu")));
+  fs::create_directory(path("folder.step"));
+  const auto folder =
+      run_command(kCli + " mesh " + path("folder.step") + " --size 1 -o " + path("b.vtu"));
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("is a directory, not a file"), std::string::npos) << folder.err;
+}
+
 }  // namespace
 }  // namespace cooperage

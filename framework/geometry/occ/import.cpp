@@ -264,9 +264,7 @@ void Workbench::import_file(const std::string& name, const std::string& path, bo
   silence_kernel_output();
   impl_->check_new_name(name);
   require_readable_file(path);
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   const bool step = ext == ".step" || ext == ".stp";
   const bool iges = ext == ".iges" || ext == ".igs";
   const bool brep = ext == ".brep" || ext == ".brp";

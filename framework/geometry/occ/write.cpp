@@ -1,13 +1,13 @@
 // Workbench::write: the named shapes to a STEP, IGES or BREP file, written to a
 // temporary name and renamed so a failure never leaves a half file.
 #include "framework/geometry/occ/detail.h"
+#include "framework/core/text.h"
 #include "framework/geometry/occ/exchange.h"
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
 
-#include <algorithm>
 #include <cctype>
 #include <filesystem>
 
@@ -15,9 +15,7 @@ namespace cooperage::occ {
 
 void Workbench::write(const std::string& path, const std::vector<std::string>& shapes) const {
   silence_kernel_output();
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   const bool step = ext == ".step" || ext == ".stp";
   const bool iges = ext == ".iges" || ext == ".igs";
   const bool brep = ext == ".brep" || ext == ".brp";
