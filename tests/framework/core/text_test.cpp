@@ -59,5 +59,12 @@ TEST(ClipPath, KeepsTheFileNameOfALongPath) {
   EXPECT_EQ(clip_path("examples/brick.xml"), "examples/brick.xml");
 }
 
+TEST(LowerExtension, KindsOfFilesAreToldApartWhateverTheirCase) {
+  EXPECT_EQ(lower_extension("Part.STEP"), ".step");
+  EXPECT_EQ(lower_extension("/a/b.v2/job.Xml"), ".xml");
+  EXPECT_EQ(lower_extension("/a/b.v2/README"), "");
+  EXPECT_EQ(lower_extension("mesh.tar.GZ"), ".gz");
+}
+
 }  // namespace
 }  // namespace cooperage
