@@ -107,11 +107,15 @@ void check_mesh_size(const MeshSizeEstimate& estimate, double limit) {
                          "fewer intervals");
 }
 
+double element_limit(const io::MeshSettings& settings, std::optional<double> override) {
+  return std::min(override.value_or(settings.max_elements.value_or(kDefaultMaxElements)),
+                  kMaxElementsCeiling);
+}
+
 void check_planned_size(const geom::Model& model, const io::MeshSettings& settings, int dim) {
   if (!settings.size) return;
-  const double limit =
-      std::min(settings.max_elements.value_or(kDefaultMaxElements), kMaxElementsCeiling);
-  check_mesh_size(estimate_mesh_size(model, interval_goals(model, settings), dim), limit);
+  check_mesh_size(estimate_mesh_size(model, interval_goals(model, settings), dim),
+                  element_limit(settings));
 }
 
 }  // namespace cooperage::pipeline

@@ -9,6 +9,7 @@
 #include "framework/io/job.h"
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace cooperage::pipeline {
@@ -44,6 +45,10 @@ MeshSizeEstimate estimate_mesh_size(const geom::Model& model,
 /// 6.4e+13), about 1.6e+04 GB; the limit is 2e+08 (--max-elements or <mesh
 /// max_elements>): use a larger element size or fewer intervals".
 void check_mesh_size(const MeshSizeEstimate& estimate, double limit);
+
+/// The element limit a run applies: `override` (--max-elements), else
+/// <mesh max_elements>, else the default; at most the ceiling.
+double element_limit(const io::MeshSettings& settings, std::optional<double> override = {});
 
 /// The same check from the settings alone, for a plan (`cooperage plan`,
 /// cooperage.plan()): the limit is <mesh max_elements> or the default, and

@@ -208,9 +208,7 @@ MeshResult mesh_attempt(const geom::Model& model, const io::MeshSettings& job_se
     throw MeshingError(ErrorCode::Internal,
                        "MeshOptions::planner is not set (use selector::planner())");
   }
-  const double max_elements =
-      std::min(options.max_elements.value_or(settings.max_elements.value_or(kDefaultMaxElements)),
-               kMaxElementsCeiling);
+  const double max_elements = element_limit(settings, options.max_elements);
   const double tolerance =
       options.volume_tolerance.value_or(settings.volume_tolerance.value_or(0.01));
   const int dim = options.dim;

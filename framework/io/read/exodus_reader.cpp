@@ -250,7 +250,7 @@ MeshFile deserialise(const std::string& bytes) {
 }  // namespace
 
 MeshFile read_exodus(const std::string& path) {
-  require_file(path);
+  require_readable_file(path);
   if (check_netcdf_file(path) == NetcdfKind::NotNetcdf)
     parse_error(path, "not an Exodus II file (neither netCDF nor HDF5)");
   std::error_code ec;

@@ -211,7 +211,7 @@ NetcdfKind check_netcdf_bytes(const std::string& path, const std::string& bytes,
 }
 
 NetcdfKind check_netcdf_file(const std::string& path) {
-  require_file(path);
+  require_readable_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) parse_error(path, "cannot be read");
   in.seekg(0, std::ios::end);

@@ -12,10 +12,8 @@ void parse_error(const std::string& path, const std::string& reason) {
   throw MeshingError(ErrorCode::ParseError, path + ": " + reason);
 }
 
-void require_file(const std::string& path) { require_readable_file(path); }
-
 std::string read_text(const std::string& path) {
-  require_file(path);
+  require_readable_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MeshingError(ErrorCode::FileNotFound, path + ": cannot be read");
   std::ostringstream s;

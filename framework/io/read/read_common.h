@@ -2,6 +2,7 @@
 // name the file, and a collector that groups elements into blocks.
 #pragma once
 
+#include "framework/core/readable_file.h"  // require_readable_file, for the readers
 #include "framework/io/read/read_mesh_file.h"
 
 #include <map>
@@ -13,10 +14,6 @@ namespace cooperage::io::detail {
 
 /// Throws MeshingError(ParseError, "<path>: <reason>").
 [[noreturn]] void parse_error(const std::string& path, const std::string& reason);
-
-/// Throws MeshingError(FileNotFound, "<path>: no such file") unless `path`
-/// names a regular file.
-void require_file(const std::string& path);
 
 /// The whole file as a string; FileNotFound if it cannot be opened.
 std::string read_text(const std::string& path);
