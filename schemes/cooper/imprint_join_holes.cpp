@@ -1,17 +1,20 @@
 // Subtraction between holes (Blacker 1996, sec. 5.2): a subcap a whose loop
-// runs along holes A, B, ... of one opposing subcap t, with a gap from A to
+// runs along loops A, B, ... of one opposing subcap t, with a gap from A to
 // B, another from B to the next, and the last back to A. Each gap alone
-// joins two holes and splits nothing, so all are projected together: t
-// loses the piece between them (a's image) and the holes become one. Two
+// joins two loops and splits nothing, so all are projected together: t
+// loses the piece between them (a's image) and the loops become one. Two
 // holes: the top of a plate under a block, with nuts straddling the block's
 // edge below (the block's footprint reaches the plate's underside only as
 // paths between the nuts' outlines). Three: a blind hole's floor under two
 // bosses and beside a through hole, its rim running from one to the next
-// (campaign seed 19 case 9).
+// (campaign seed 19 case 9). One of the loops may be t's outer loop, which
+// then runs round the joined holes: a foot's rim from the block's side to
+// a boss's footprint, on to another's and back to the side (seed 37 case 26).
 #include "schemes/cooper/imprinter.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace cooperage::cooper::detail {
 namespace {
@@ -34,23 +37,25 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
   const Loop& la = a.loops.front();
   const size_t n = la.size();
   const int x1 = *partner(e, r0), y1 = *partner(e, r1);
-  auto hole_of = [&](int v) {
+  // The loop of t through v: a hole, else the outer loop (0), else none.
+  constexpr size_t kNone = static_cast<size_t>(-1);
+  auto loop_through = [&](int v) {
     const auto& loops = caps(o)[bi].loops;
     for (size_t h = 1; h < loops.size(); ++h) {
       if (index_in(loops[h], v) >= 0) return h;
     }
-    return size_t{0};
+    return index_in(loops.front(), v) >= 0 ? size_t{0} : kNone;
   };
-  const size_t ha = hole_of(x1), hb = hole_of(y1);
-  if (ha == 0 || hb == 0 || ha == hb) return false;
+  const size_t ha = loop_through(x1), hb = loop_through(y1);
+  if (ha == kNone || hb == kNone || ha == hb) return false;
   auto on = [&](int v, size_t h) {
     const auto p = partner(e, v);
     return p && index_in(caps(o)[bi].loops[h], *p) >= 0;
   };
-  // a's loop after r1, round to r0: a run of nodes ribbed onto one hole, a
+  // a's loop after r1, round to r0: a run of nodes ribbed onto one loop, a
   // gap (perhaps empty: the partners of its ends are not adjacent), a run on
-  // the next hole, ... and last a run on A up to r0. Each hole once; every
-  // run at least two nodes (a run of one touches its hole at a node).
+  // the next loop, ... and last a run on A up to r0. Each loop once; every
+  // run at least two nodes (a run of one touches its loop at a node).
   std::vector<size_t> holes{hb};
   std::vector<int> into{y1}, out_of;  // per hole: where the piece's loop arrives and leaves
   std::vector<Loop> gaps;
@@ -70,9 +75,9 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
     }
     gaps.push_back(std::move(gap));
     entry = la[k];
-    const size_t next = hole_of(*partner(e, entry));
+    const size_t next = loop_through(*partner(e, entry));
     if (next == ha) break;
-    if (next == 0 || k == k0 || std::count(holes.begin(), holes.end(), next) > 0) return false;
+    if (next == kNone || k == k0 || std::count(holes.begin(), holes.end(), next) > 0) return false;
     holes.push_back(next);
     into.push_back(*partner(e, entry));
   }
@@ -87,7 +92,8 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
   const size_t count = holes.size();
   if (count > 8) return false;  // 2^count arc choices below
   Subcap& t = caps(o)[bi];
-  // Per hole j: its two arcs between where the piece arrives and leaves.
+  const bool through_outer = std::count(holes.begin(), holes.end(), size_t{0}) > 0;
+  // Per loop j: its two arcs between where the piece arrives and leaves.
   std::vector<std::array<Loop, 2>> arcs(count);
   for (size_t j = 0; j < count; ++j) {
     const Loop& hole = t.loops[holes[j]];
@@ -123,8 +129,18 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
   auto encloses = [&](const Loop& c, const Loop& other) {
     return !other.empty() && point_in_loop(xy().at(other[other.size() / 2]), c, xy());
   };
-  // The piece takes the arc of each hole facing the others: it encloses
-  // none of the arcs it leaves to the joined hole.
+  // Through the outer loop the two loops split t's area less the joined
+  // holes' (the joined loop is t's new outer loop); a choice whose loops
+  // cross themselves or each other does not add up.
+  auto splits_t = [&](const Loop& piece, const Loop& joined) {
+    double holes_area = 0;
+    for (size_t h : holes) holes_area += h == 0 ? 0.0 : std::abs(signed_area(t.loops[h], xy()));
+    const double whole = std::abs(signed_area(t.loops.front(), xy()));
+    const double parts = std::abs(signed_area(piece, xy())) + std::abs(signed_area(joined, xy()));
+    return std::abs(parts - (whole - holes_area)) <= 1e-9 * whole;
+  };
+  // The piece takes the arc of each loop facing the others: it encloses
+  // none of the arcs it leaves to the joined loop.
   for (unsigned choice = 0; choice < (1u << count); ++choice) {
     Loop piece = loop_of(choice, false);
     bool clear = true;
@@ -134,10 +150,14 @@ bool Imprinter::join_holes(int e, const Subcap& a, int r0, const Loop& path1, in
     }
     if (!clear) continue;
     Loop joined = loop_of(choice, true);
+    if (through_outer && !splits_t(piece, joined)) continue;
     if (signed_area(piece, xy()) < 0) std::reverse(piece.begin(), piece.end());
-    if (signed_area(joined, xy()) > 0) std::reverse(joined.begin(), joined.end());
+    // The joined loop is a hole of t, or its outer loop when the outer took part.
+    if ((signed_area(joined, xy()) > 0) == !through_outer)
+      std::reverse(joined.begin(), joined.end());
     // t's other holes inside the piece (a nut wholly under the block) go with it.
-    std::vector<Loop> kept{t.loops.front(), joined}, inner{piece};
+    std::vector<Loop> kept{through_outer ? joined : t.loops.front()}, inner{piece};
+    if (!through_outer) kept.push_back(joined);
     for (size_t h = 1; h < t.loops.size(); ++h) {
       if (std::count(holes.begin(), holes.end(), h) > 0) continue;
       const Loop& hole = t.loops[h];

@@ -110,10 +110,11 @@ class Imprinter {
   // Splits subcap bi of end e along x -> path -> y from its outer loop to a
   // hole that touches the outer loop at a node; false when there is none.
   bool split_pinched(int e, size_t bi, int x, const Loop& path, int y);
-  // sec. 5.2: a's gap r0 -> path -> r1 runs from one hole of subcap bi of
-  // the opposing end to another, and a's loop goes on along that hole, by
-  // further gaps to further holes and back to the first: all the gaps are
-  // projected, the piece they enclose leaves bi and the holes join.
+  // sec. 5.2: a's gap r0 -> path -> r1 runs from one loop of subcap bi of
+  // the opposing end to another (holes, or a hole and the outer loop), and
+  // a's loop goes on along that loop, by further gaps to further loops and
+  // back to the first: all the gaps are projected, the piece they enclose
+  // leaves bi and the loops join.
   bool join_holes(int e, const Subcap& a, int r0, const Loop& path, int r1, size_t bi);
   bool gap_step(int e, const Subcap& a, int r0, const Loop& gap, int r1);
   // sec. 5.2-5.3: the image x -> path -> y of a gap (path[j] the image of

@@ -790,6 +790,26 @@ TEST(CooperImprintSlivers, ACrossingThatCannotSplitStopsImprinting) {
   }
 }
 
+// A foot under a block's edge (it overhangs the side by 1.1) whose rim runs
+// from the side under a round boss's footprint, on under a square boss's
+// corner and back to the side (campaign seed 37 case 26). On the top's
+// remainder the rim's image joins the outer loop to the two footprints'
+// holes and back; no single gap splits it, and imprinting found no step at
+// any size tried (4.76 down to 1). All the gaps are now projected together.
+void foot_from_the_side_under_two_bosses(occ::Workbench& wb) {
+  wb.brick("block", {0, 0, 0}, {40.38, 36.78, 17.25});
+  wb.cylinder("f0", {31.77, 14.65, 17.25}, {0, 0, 1}, 4.34, 5.41);
+  wb.brick("f1", {19.32, 4.13, 17.25}, {7.1, 5.02, 4.51});
+  wb.cylinder("f2", {33.76, 7.96, -12.58}, {0, 0, 1}, 7.72, 12.58);
+  wb.brick("f3", {7.46, 2.36, 17.25}, {7.24, 9.96, 12.49});
+  wb.fuse("part", {"block", "f0", "f1", "f2", "f3"});
+}
+
+TEST(CooperImprintSlivers, AFootsRimFromTheSideThroughTwoFootprintsIsImprinted) {
+  expect_meshes("foot_from_the_side_under_two_bosses", foot_from_the_side_under_two_bosses,
+                {4.759, 2.38}, 179);
+}
+
 // A pocket whose corner pokes out of a blind hole from below, under a
 // square boss (campaign seed 8 case 168): imprinting stops at every size
 // tried (2.29 down to 0.3), the pocket's corner beside the hole's rim. The

@@ -204,6 +204,43 @@ TEST(ImprintSubcaps, AFootprintBetweenTwoHolesIsSubtractedWithBothGaps) {
   EXPECT_EQ(r.ends.lower.size(), 4u);  // nothing new
 }
 
+// The same block moved to the plate's edge: its loop runs from the outer
+// loop to nut A, from A to B and from B back to the outer loop. No gap
+// alone splits the underside (each joins a hole to the outer loop or to
+// another hole); all three together cut the block's image off it, and the
+// rest's outer loop runs round the nuts (campaign seed 37 case 26: a foot's
+// rim from the block's side to a round boss's footprint, on to a square
+// one's corner and back to the side, "no imprinting step applies").
+TEST(ImprintSubcaps, AFootprintFromTheEdgeThroughTwoHolesIsSubtractedWithAllGaps) {
+  Hand h;
+  h.exterior(rect(0, 0, 8, 6));
+  h.subcap(0, 1, {rect(0, 0, 8, 6), hole(3, 1, 5, 2), hole(3, 4, 5, 5)});  // underside
+  h.subcap(0, 2, {rect(3, 1, 5, 2)});                                      // nut A
+  h.subcap(0, 3, {rect(3, 4, 5, 5)});                                      // nut B
+  h.subcap(1, 4, {rect(3, 1, 5, 2)});
+  h.subcap(1, 5, {rect(3, 4, 5, 5)});
+  // The block [0, 4] x [1, 5] less the nuts, and the top around it all.
+  h.subcap(1, 6, {{{0, 1}, {3, 1}, {3, 2}, {4, 2}, {4, 4}, {3, 4}, {3, 5}, {0, 5}}});
+  h.subcap(1, 7,
+           {{{0, 0},
+             {8, 0},
+             {8, 6},
+             {0, 6},
+             {0, 5},
+             {5, 5},
+             {5, 4},
+             {4, 4},
+             {4, 2},
+             {5, 2},
+             {5, 1},
+             {0, 1}}});
+  const ImprintResult r = imprint_subcaps(h.ends);
+  expect_partition(r, 48);
+  EXPECT_GE(count(r, ImprintStep::Subtract), 1u);
+  EXPECT_EQ(r.ends.upper.size(), 4u);  // the underside split in two, the nuts
+  EXPECT_EQ(r.ends.lower.size(), 4u);  // nothing new
+}
+
 // A blind hole's floor reaching the wall (upper end) across a boss's
 // footprint (lower end: a hole of the top's remainder and a subcap of its
 // own), crossing the footprint's edges between their nodes (campaign seed 6
