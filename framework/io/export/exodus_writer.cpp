@@ -3,6 +3,7 @@
 #include "framework/core/error.h"
 #include "framework/io/export/export_common.h"
 #include "framework/io/export/mesh_groups.h"
+#include "framework/io/export/netcdf_classic_data.h"
 
 #include <exodusII.h>
 #include "framework/io/exodus_lazy.h"  // the library is loaded on first use
@@ -113,7 +114,8 @@ void put_names(const ExodusFile& f, ex_entity_type type, const std::vector<std::
   f.check(ex_put_names(f.id(), type, ptrs.data()), "put_names");
 }
 
-// The bulk data goes straight through netCDF on the file Exodus defined,
+// The bulk data of a netCDF-4 file goes straight through netCDF on the file
+// Exodus defined (a classic file's goes through ClassicDataFile),
 // reopened with large I/O buffers: Exodus creates classic files with
 // netCDF's default buffer, 8 KB on a local disk, and every 8 KB page of data
 // then cost a read, two seeks and a write (`strace` of a 1 M-hex export:
@@ -172,7 +174,8 @@ class NetcdfData {
 
 // Connectivity of the `index`-th block defined (1-based, Exodus's variable
 // "connect<index>"), written 1-based in chunks.
-void put_connectivity(const NetcdfData& f, const Block& b, size_t index) {
+template <class DataFile>
+void put_connectivity(const DataFile& f, const Block& b, size_t index) {
   const int var = f.var("connect" + std::to_string(index));
   const size_t per = static_cast<size_t>(b.nodes_per);
   std::vector<int> buf(std::min(b.count, kChunk) * per);
@@ -189,7 +192,8 @@ void put_connectivity(const NetcdfData& f, const Block& b, size_t index) {
 }
 
 // Coordinates one component at a time, in chunks (no x/y/z copies of the mesh).
-void put_coordinates(const NetcdfData& f, const mesh::MeshDB& db) {
+template <class DataFile>
+void put_coordinates(const DataFile& f, const mesh::MeshDB& db) {
   const size_t n = db.node_count();
   const auto& x = db.coords();
   std::vector<double> buf(std::min(n, kChunk));
@@ -205,7 +209,8 @@ void put_coordinates(const NetcdfData& f, const mesh::MeshDB& db) {
 }
 
 // A set's entries (and sides) into its Exodus variables, 1-based `index`.
-void put_set(const NetcdfData& f, const Set& s, size_t index, bool side_set) {
+template <class DataFile>
+void put_set(const DataFile& f, const Set& s, size_t index, bool side_set) {
   const std::string k = std::to_string(index);
   if (s.entries.empty()) return;
   f.put(f.var((side_set ? "elem_ss" : "node_ns") + k), 0, s.entries.size(), 1, s.entries.data());
@@ -347,12 +352,20 @@ void write_exodus(const std::string& path, const mesh::MeshDB& db, const geom::M
     put_names(f, EX_NODE_SET, names);
 
     f.close();
-    NetcdfData data(tmp);
-    put_coordinates(data, db);
-    for (size_t i = 0; i < blocks.size(); ++i) put_connectivity(data, blocks[i], i + 1);
-    for (size_t i = 0; i < side_sets.size(); ++i) put_set(data, side_sets[i], i + 1, true);
-    for (size_t i = 0; i < node_sets.size(); ++i) put_set(data, node_sets[i], i + 1, false);
-    data.close();
+    auto put_data = [&](auto& data) {
+      put_coordinates(data, db);
+      for (size_t i = 0; i < blocks.size(); ++i) put_connectivity(data, blocks[i], i + 1);
+      for (size_t i = 0; i < side_sets.size(); ++i) put_set(data, side_sets[i], i + 1, true);
+      for (size_t i = 0; i < node_sets.size(); ++i) put_set(data, node_sets[i], i + 1, false);
+      data.close();
+    };
+    if (options.exodus_netcdf4) {
+      NetcdfData data(tmp);
+      put_data(data);
+    } else {
+      detail::ClassicDataFile data(tmp);
+      put_data(data);
+    }
   } catch (...) {
     detail::remove_temp_file(tmp);
     throw;

@@ -5,6 +5,7 @@ cooperage_framework_part(io_export
     ${CMAKE_CURRENT_LIST_DIR}/export_common.cpp
     ${CMAKE_CURRENT_LIST_DIR}/mesh_groups.cpp
     ${CMAKE_CURRENT_LIST_DIR}/exodus_writer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf_classic_data.cpp
     ${CMAKE_CURRENT_LIST_DIR}/msh_writer.cpp
     ${CMAKE_CURRENT_LIST_DIR}/vtu_writer.cpp
     ${CMAKE_CURRENT_LIST_DIR}/inp_writer.cpp
