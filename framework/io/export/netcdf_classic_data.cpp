@@ -1,6 +1,7 @@
 #include "framework/io/export/netcdf_classic_data.h"
 
 #include "framework/core/error.h"
+#include "framework/io/read/netcdf_header.h"
 
 #include <cerrno>
 #include <cstdint>
@@ -13,66 +14,8 @@
 namespace cooperage::io::detail {
 namespace {
 
-// Header tags and the types the writer puts (netCDF's nc_type values).
-constexpr std::uint64_t kDimensionTag = 0x0A, kVariableTag = 0x0B, kAttributeTag = 0x0C;
+// The nc_types the writer puts.
 constexpr int kInt = 4, kFloat = 5, kDouble = 6, kInt64 = 10;
-
-std::size_t type_size(std::uint64_t type) {
-  switch (type) {
-    case 1:
-    case 2:
-    case 7: return 1;  // byte, char, ubyte
-    case 3:
-    case 8: return 2;  // short, ushort
-    case 4:
-    case 5:
-    case 9: return 4;  // int, float, uint
-    case 6:
-    case 10:
-    case 11: return 8;  // double, int64, uint64
-    default: return 0;
-  }
-}
-
-std::uint64_t padded(std::uint64_t n) { return (n + 3) / 4 * 4; }
-
-// A big-endian cursor over the header's bytes; `short_read` once it ran
-// past them (the caller reads more of the file and starts again).
-class Cursor {
- public:
-  Cursor(const std::vector<unsigned char>& bytes, bool wide) : b_(bytes), wide_(wide) {}
-  bool short_read() const { return short_; }
-  std::uint64_t u32() { return take(4); }
-  std::uint64_t u64() { return take(8); }
-  std::uint64_t non_neg() { return wide_ ? u64() : u32(); }
-  std::string name() {
-    const std::uint64_t n = non_neg();
-    if (!need(padded(n))) return {};
-    std::string s(reinterpret_cast<const char*>(b_.data() + at_), static_cast<std::size_t>(n));
-    at_ += static_cast<std::size_t>(padded(n));
-    return s;
-  }
-  void skip(std::uint64_t n) {
-    if (need(n)) at_ += static_cast<std::size_t>(n);
-  }
-
- private:
-  bool need(std::uint64_t n) {
-    if (short_ || n > b_.size() - at_) short_ = true;
-    return !short_;
-  }
-  std::uint64_t take(int n) {
-    if (!need(static_cast<std::uint64_t>(n))) return 0;
-    std::uint64_t v = 0;
-    for (int k = 0; k < n; ++k) v = (v << 8) | b_[at_ + static_cast<std::size_t>(k)];
-    at_ += static_cast<std::size_t>(n);
-    return v;
-  }
-  const std::vector<unsigned char>& b_;
-  bool wide_;
-  std::size_t at_ = 0;
-  bool short_ = false;
-};
 
 [[noreturn]] void not_classic(const std::string& path, const std::string& why) {
   throw MeshingError(ErrorCode::Internal, "Exodus file '" + path + "': " + why);
@@ -113,11 +56,12 @@ ClassicDataFile::ClassicDataFile(const std::string& path) : path_(path) {
   struct stat st {};
   if (::fstat(fd_, &st) != 0) not_classic(path, "cannot stat it");
   const auto file_size = static_cast<std::uint64_t>(st.st_size);
-  // The header is read in growing pieces until it parses: Exodus leaves
-  // room after it, so the first 64 KB usually hold it all.
+  // The header, read in growing pieces until the reader's check of it
+  // passes: Exodus leaves room after it, so the first 64 KB usually hold it.
+  std::vector<NetcdfVariable> variables;
   for (std::uint64_t want = 65536;; want *= 2) {
     const std::size_t n = static_cast<std::size_t>(std::min(want, file_size));
-    std::vector<unsigned char> bytes(n);
+    std::string bytes(n, '\0');
     std::size_t got = 0;
     while (got < n) {
       const ssize_t r = ::pread(fd_, bytes.data() + got, n - got, static_cast<off_t>(got));
@@ -125,61 +69,18 @@ ClassicDataFile::ClassicDataFile(const std::string& path) : path_(path) {
       if (r <= 0) not_classic(path, "cannot read its header");
       got += static_cast<std::size_t>(r);
     }
-    if (n < 4 || std::memcmp(bytes.data(), "CDF", 3) != 0) not_classic(path, "not classic netCDF");
-    const int version = bytes[3];
-    if (version != 1 && version != 2 && version != 5)
-      not_classic(path, "netCDF format version " + std::to_string(version) + " is not classic");
-    Cursor c(bytes, version == 5);
-    c.skip(4);
-    c.non_neg();  // numrecs
-    auto attributes = [&] {
-      const std::uint64_t tag = c.u32(), count = c.non_neg();
-      if (tag != kAttributeTag && !(tag == 0 && count == 0))
-        not_classic(path, "bad attribute list");
-      for (std::uint64_t a = 0; a < count && !c.short_read(); ++a) {
-        c.name();
-        const std::uint64_t type = c.u32(), values = c.non_neg();
-        c.skip(padded(values * type_size(type)));
-      }
-    };
-    std::vector<std::uint64_t> dims;
-    {
-      const std::uint64_t tag = c.u32(), count = c.non_neg();
-      if (tag != kDimensionTag && !(tag == 0 && count == 0))
-        not_classic(path, "bad dimension list");
-      for (std::uint64_t d = 0; d < count && !c.short_read(); ++d) {
-        c.name();
-        dims.push_back(c.non_neg());
-      }
+    variables.clear();
+    try {
+      if (check_netcdf_bytes(path, bytes, file_size, &variables) != NetcdfKind::Classic)
+        not_classic(path, "not a classic netCDF file");
+      break;
+    } catch (const MeshingError&) {
+      if (n == file_size) throw;  // the whole file: damaged, not cut short
     }
-    attributes();
-    vars_.clear();
-    by_name_.clear();
-    const std::uint64_t tag = c.u32(), count = c.non_neg();
-    if (!c.short_read() && tag != kVariableTag && !(tag == 0 && count == 0))
-      not_classic(path, "bad variable list");
-    for (std::uint64_t v = 0; v < count && !c.short_read(); ++v) {
-      const std::string name = c.name();
-      const std::uint64_t rank = c.non_neg();
-      Variable var;
-      var.values = 1;
-      bool record = false;
-      for (std::uint64_t k = 0; k < rank && !c.short_read(); ++k) {
-        const std::uint64_t id = c.non_neg();
-        if (id >= dims.size()) not_classic(path, "variable " + name + " has an unknown dimension");
-        record = record || (k == 0 && dims[id] == 0);  // the unlimited dimension
-        var.values *= dims[id];
-      }
-      attributes();
-      var.type = static_cast<int>(c.u32());
-      c.non_neg();  // vsize
-      var.begin = version == 1 ? c.u32() : c.u64();
-      if (record) var.values = 0;  // record variables are not written here
-      by_name_[name] = static_cast<int>(vars_.size());
-      vars_.push_back(var);
-    }
-    if (!c.short_read()) break;
-    if (n == file_size) not_classic(path, "its header runs past its end");
+  }
+  for (NetcdfVariable& v : variables) {
+    by_name_[v.name] = static_cast<int>(vars_.size());
+    vars_.push_back({v.type, v.begin, v.record ? 0 : v.values});
   }
 }
 

@@ -8,7 +8,8 @@
 // buffer as large as the region: at 0.1 M hexes 6.6 MB read and as much
 // fresh memory zeroed by the kernel, a fifth of the export (issue 20).
 // Every byte of the data section is written here, once; the header stays
-// as Exodus and netCDF wrote it.
+// as Exodus and netCDF wrote it, and is read back (offsets and types) by
+// the mesh reader's header check (read/netcdf_header.h).
 #pragma once
 
 #include <cstddef>
@@ -21,7 +22,8 @@ namespace cooperage::io::detail {
 class ClassicDataFile {
  public:
   /// Opens `path` (a classic netCDF file whose variables are all defined)
-  /// and reads its header. Throws MeshingError when it is not one.
+  /// and reads its header. Throws MeshingError when it is not one, or its
+  /// header does not pass read/netcdf_header.h's check.
   explicit ClassicDataFile(const std::string& path);
   ~ClassicDataFile();
   ClassicDataFile(const ClassicDataFile&) = delete;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace cooperage::io::detail {
@@ -68,10 +69,12 @@ class Header {
       fail(std::string(what) + " count " + std::to_string(n) + " does not fit in the file");
     return n;
   }
-  void name(int count_bytes) {
+  std::string name(int count_bytes) {
     const std::uint64_t n = uint(count_bytes);
     if (n == 0 || n > kMaxName) fail("a name of " + std::to_string(n) + " bytes");
+    const std::uint64_t at = pos_;
     skip(padded(n));
+    return s_.substr(static_cast<std::size_t>(at), static_cast<std::size_t>(n));
   }
 
  private:
@@ -108,8 +111,8 @@ void attributes(Header& h, int nb) {
   }
 }
 
-NetcdfKind check_classic(const std::string& path, const std::string& bytes,
-                         std::uint64_t file_size) {
+NetcdfKind check_classic(const std::string& path, const std::string& bytes, std::uint64_t file_size,
+                         std::vector<NetcdfVariable>* variables) {
   Header h(path, bytes, file_size);
   h.skip(3);
   const auto version = h.uint(1);
@@ -149,7 +152,7 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes,
   std::vector<Var> vars;
   std::uint64_t record_size = 0;
   for (std::uint64_t i = 0; i < n_vars; ++i) {
-    h.name(nb);
+    std::string name = h.name(nb);
     const std::uint64_t rank = h.count(nb, 4, "dimension id");
     std::uint64_t elements = 1;
     bool record = false;
@@ -166,7 +169,8 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes,
       if (!multiply(elements, dims[id], elements)) h.fail("a variable's size overflows");
     }
     attributes(h, nb);
-    const std::uint64_t size = type_size(static_cast<std::uint32_t>(h.uint(4)));
+    const auto type = static_cast<std::uint32_t>(h.uint(4));
+    const std::uint64_t size = type_size(type);
     if (size == 0) h.fail("a variable of unknown type");
     h.uint(nb);  // vsize: redundant, and wrong by design for huge variables
     const std::uint64_t begin = h.uint(offset_bytes);
@@ -179,6 +183,8 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes,
       record_size += padded(var_bytes);
     }
     vars.push_back({begin, var_bytes, record});
+    if (variables)
+      variables->push_back({std::move(name), static_cast<int>(type), begin, elements, record});
   }
   const std::uint64_t header_end = h.pos();
   for (const Var& v : vars) {
@@ -203,11 +209,11 @@ NetcdfKind check_classic(const std::string& path, const std::string& bytes,
 }  // namespace
 
 NetcdfKind check_netcdf_bytes(const std::string& path, const std::string& bytes,
-                              std::uint64_t file_size) {
+                              std::uint64_t file_size, std::vector<NetcdfVariable>* variables) {
   if (bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89HDF\r\n\x1a\n", 8) == 0)
     return NetcdfKind::Hdf5;
   if (bytes.size() < 4 || std::memcmp(bytes.data(), "CDF", 3) != 0) return NetcdfKind::NotNetcdf;
-  return check_classic(path, bytes, std::max<std::uint64_t>(file_size, bytes.size()));
+  return check_classic(path, bytes, std::max<std::uint64_t>(file_size, bytes.size()), variables);
 }
 
 NetcdfKind check_netcdf_file(const std::string& path) {

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace cooperage::io::detail {
 
@@ -16,6 +17,16 @@ enum class NetcdfKind {
   NotNetcdf,  ///< neither a classic netCDF nor an HDF5 (netCDF-4) file
   Classic,    ///< CDF-1, CDF-2 (64-bit offset) or CDF-5; header checked
   Hdf5,       ///< netCDF-4 / HDF5: not checked here (read it isolated)
+};
+
+/// A variable of a classic file as its header declares it (the Exodus
+/// writer puts its data at `begin`, export/netcdf_classic_data.h).
+struct NetcdfVariable {
+  std::string name;
+  int type = 0;              ///< nc_type
+  std::uint64_t begin = 0;   ///< byte offset of its data
+  std::uint64_t values = 0;  ///< values (of one record, for a record variable)
+  bool record = false;       ///< its first dimension is the record dimension
 };
 
 /// Identifies `path` by its first bytes and, for a classic file, checks its
@@ -27,8 +38,10 @@ enum class NetcdfKind {
 NetcdfKind check_netcdf_file(const std::string& path);
 
 /// The same check on the bytes of a file held in memory (for the fuzzer);
-/// `file_size` is the size of the whole file (>= bytes.size()).
+/// `file_size` is the size of the whole file (>= bytes.size()). A classic
+/// file's variables go to `variables` when it is given.
 NetcdfKind check_netcdf_bytes(const std::string& path, const std::string& bytes,
-                              std::uint64_t file_size);
+                              std::uint64_t file_size,
+                              std::vector<NetcdfVariable>* variables = nullptr);
 
 }  // namespace cooperage::io::detail
