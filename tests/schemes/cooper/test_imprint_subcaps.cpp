@@ -180,6 +180,18 @@ TEST(ImprintSubcaps, SubtractionAlongTheBoundarySplitsTheOpposingCap) {
   EXPECT_EQ(count(r, ImprintStep::Subtract), 1u);
 }
 
+// A plate 8 x 6: its underside (upper end, subcap 1) with the outlines of
+// two nuts, A = [3, 5] x [1, 2] and B = [3, 5] x [4, 5], as holes, and the
+// nuts themselves on both ends (subcaps 2, 3 and 4, 5).
+void plate_with_two_nuts(Hand& h) {
+  h.exterior(rect(0, 0, 8, 6));
+  h.subcap(0, 1, {rect(0, 0, 8, 6), hole(3, 1, 5, 2), hole(3, 4, 5, 5)});
+  h.subcap(0, 2, {rect(3, 1, 5, 2)});
+  h.subcap(0, 3, {rect(3, 4, 5, 5)});
+  h.subcap(1, 4, {rect(3, 1, 5, 2)});
+  h.subcap(1, 5, {rect(3, 4, 5, 5)});
+}
+
 // A block's footprint on a plate's top whose loop runs along two nuts'
 // outlines on the underside, A and B (holes of the underside): from A to B
 // and back. Either gap alone joins two holes and splits nothing; both
@@ -187,12 +199,7 @@ TEST(ImprintSubcaps, SubtractionAlongTheBoundarySplitsTheOpposingCap) {
 // one hole (issue 15: gmsh_as1-tu-203's plate, "no imprinting step applies").
 TEST(ImprintSubcaps, AFootprintBetweenTwoHolesIsSubtractedWithBothGaps) {
   Hand h;
-  h.exterior(rect(0, 0, 8, 6));
-  h.subcap(0, 1, {rect(0, 0, 8, 6), hole(3, 1, 5, 2), hole(3, 4, 5, 5)});  // underside
-  h.subcap(0, 2, {rect(3, 1, 5, 2)});                                      // nut A
-  h.subcap(0, 3, {rect(3, 4, 5, 5)});                                      // nut B
-  h.subcap(1, 4, {rect(3, 1, 5, 2)});
-  h.subcap(1, 5, {rect(3, 4, 5, 5)});
+  plate_with_two_nuts(h);
   // The block [1, 4] x [1, 5] less the nuts, and the top around it all.
   h.subcap(1, 6, {{{1, 1}, {3, 1}, {3, 2}, {4, 2}, {4, 4}, {3, 4}, {3, 5}, {1, 5}}});
   h.subcap(1, 7,
@@ -213,12 +220,7 @@ TEST(ImprintSubcaps, AFootprintBetweenTwoHolesIsSubtractedWithBothGaps) {
 // one's corner and back to the side, "no imprinting step applies").
 TEST(ImprintSubcaps, AFootprintFromTheEdgeThroughTwoHolesIsSubtractedWithAllGaps) {
   Hand h;
-  h.exterior(rect(0, 0, 8, 6));
-  h.subcap(0, 1, {rect(0, 0, 8, 6), hole(3, 1, 5, 2), hole(3, 4, 5, 5)});  // underside
-  h.subcap(0, 2, {rect(3, 1, 5, 2)});                                      // nut A
-  h.subcap(0, 3, {rect(3, 4, 5, 5)});                                      // nut B
-  h.subcap(1, 4, {rect(3, 1, 5, 2)});
-  h.subcap(1, 5, {rect(3, 4, 5, 5)});
+  plate_with_two_nuts(h);
   // The block [0, 4] x [1, 5] less the nuts, and the top around it all.
   h.subcap(1, 6, {{{0, 1}, {3, 1}, {3, 2}, {4, 2}, {4, 4}, {3, 4}, {3, 5}, {0, 5}}});
   h.subcap(1, 7,
