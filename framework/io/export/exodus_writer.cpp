@@ -115,13 +115,12 @@ void put_names(const ExodusFile& f, ex_entity_type type, const std::vector<std::
 }
 
 // The bulk data of a netCDF-4 file goes straight through netCDF on the file
-// Exodus defined (a classic file's goes through ClassicDataFile),
-// reopened with large I/O buffers: Exodus creates classic files with
-// netCDF's default buffer, 8 KB on a local disk, and every 8 KB page of data
-// then cost a read, two seeks and a write (`strace` of a 1 M-hex export:
-// ~7,500 of each). nc__open takes a buffer size hint; the file's bytes do
-// not depend on it. Variable names are Exodus II's (large model, which
-// ex_create is asked for).
+// Exodus defined, reopened (a classic file's is written by ClassicDataFile:
+// through netCDF it was read back before it was written). nc__open's buffer
+// size hint is kept for classic files opened here (Exodus's own 8 KB
+// buffer cost a read, two seeks and a write per 8 KB page); the file's
+// bytes do not depend on it. Variable names are Exodus II's (large model,
+// which ex_create is asked for).
 class NetcdfData {
  public:
   explicit NetcdfData(const std::string& path) : path_(path) {

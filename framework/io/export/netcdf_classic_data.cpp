@@ -3,9 +3,12 @@
 #include "framework/core/error.h"
 #include "framework/io/read/netcdf_header.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
