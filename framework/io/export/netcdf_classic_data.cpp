@@ -25,19 +25,13 @@ constexpr int kInt = 4, kFloat = 5, kDouble = 6, kInt64 = 10;
 }
 
 // The format is big-endian.
-std::uint32_t big_endian(std::uint32_t v) {
+template <class Word>
+Word big_endian(Word v) {
 #if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-  return __builtin_bswap32(v);
-#else
-  return v;
+  if constexpr (sizeof(Word) == 4) return __builtin_bswap32(v);
+  if constexpr (sizeof(Word) == 8) return __builtin_bswap64(v);
 #endif
-}
-std::uint64_t big_endian(std::uint64_t v) {
-#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-  return __builtin_bswap64(v);
-#else
   return v;
-#endif
 }
 
 // count values as Word (std::uint32_t or std::uint64_t) into out: plain
@@ -45,7 +39,7 @@ std::uint64_t big_endian(std::uint64_t v) {
 template <class Word, class Value, class Convert>
 void encode(const Value* data, std::size_t count, unsigned char* out, const Convert& convert) {
   for (std::size_t k = 0; k < count; ++k) {
-    const Word w = big_endian(convert(data[k]));
+    const Word w = big_endian<Word>(convert(data[k]));
     std::memcpy(out + k * sizeof(Word), &w, sizeof(Word));
   }
 }
